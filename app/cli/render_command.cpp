@@ -1,0 +1,84 @@
+#include "cli/render_command.h"
+
+#include "cli/frame_report.h"
+#include "cli/settings_from_cli.h"
+#include "context/headless_context.h"
+#include "frame/renderer.h"
+#include "image/depth_visualization.h"
+#include "image/image_io.h"
+#include "scene/scene_source.h"
+#include "settings/settings_fields.h"
+
+#include <iostream>
+
+namespace shadowlab::cli {
+
+namespace {
+
+int fail(const std::string& message) {
+    std::cerr << "error: " << message << "\n";
+    return 1;
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& options) {
+    std::vector<std::string> overrides = options.overrides;
+    if (!options.view.empty()) overrides.push_back("view=" + options.view);
+    std::optional<Settings> settings = settingsFromCli(options.preset, overrides);
+    if (!settings) return 2;
+    if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
+        return fail("--width/--height must be in [1, 16384], got " + std::to_string(options.width) + "x" +
+                    std::to_string(options.height));
+
+    SceneLoadResult loaded = loadScene(options.scene);
+    if (!loaded.scene) return fail(loaded.error);
+    const Scene& scene = *loaded.scene;
+    for (const std::string& w : scene.warnings) std::cerr << "warning: " << scene.name << ": " << w << "\n";
+
+    try {
+        HeadlessContext context;
+        Renderer renderer;
+        RenderTarget target;
+        if (std::string error = target.resize(options.width, options.height); !error.empty()) return fail(error);
+        const Camera camera = cameraFor(settings->camera, scene.bounds);
+        FrameStats stats = renderer.render(scene, *settings, camera, target);
+        if (!stats.ok) return fail(stats.error);
+        renderer.waitForTimings(stats);
+        for (const std::string& w : stats.warnings) std::cerr << "warning: " << w << "\n";
+
+        const std::vector<std::uint8_t> pixels = target.readColor();
+        if (std::string error = writePng(options.out, target.width(), target.height(), 4, pixels.data(), true);
+            !error.empty())
+            return fail(error);
+        printFrameReport(std::cout, scene, renderer.glInfo(), stats);
+        std::cout << "wrote " << options.out << " (" << target.width() << "x" << target.height() << ")\n";
+
+        if (!options.shadowMapExr.empty() || !options.shadowMapPng.empty()) {
+            const ShadowMap& map = renderer.shadowMap();
+            const std::vector<float> depth = map.readDepth();
+            if (!options.shadowMapExr.empty()) {
+                if (std::string error = writeExrDepth(options.shadowMapExr, map.resolution(), map.resolution(),
+                                                      depth.data(), true);
+                    !error.empty())
+                    return fail(error);
+                std::cout << "wrote " << options.shadowMapExr << " (" << map.resolution() << "² float depth)\n";
+            }
+            if (!options.shadowMapPng.empty()) {
+                const DepthRange range = writtenDepthRange(depth);
+                const std::vector<std::uint8_t> gray = depthToGray(depth, range);
+                if (std::string error = writePng(options.shadowMapPng, map.resolution(), map.resolution(), 1,
+                                                 gray.data(), true);
+                    !error.empty())
+                    return fail(error);
+                std::cout << "wrote " << options.shadowMapPng << " (depth " << range.min << " .. " << range.max
+                          << " stretched to black .. light grey; white = no caster)\n";
+            }
+        }
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    return 0;
+}
+
+}  // namespace shadowlab::cli

@@ -1,0 +1,49 @@
+#include "cli/settings_from_cli.h"
+
+#include "settings/preset_io.h"
+#include "settings/settings_fields.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace shadowlab::cli {
+
+std::string resolvePresetPath(const std::string& preset) {
+    namespace fs = std::filesystem;
+    if (fs::exists(preset)) return preset;
+    // Shipped presets: beside the binary's project (build tree) first, then the source tree it was built from.
+    for (const fs::path& dir : {fs::path(SHADOWLAB_PRESET_DIR)}) {
+        fs::path candidate = dir / preset;
+        if (candidate.extension() != ".json") candidate += ".json";
+        if (fs::exists(candidate)) return candidate.string();
+    }
+    return preset;
+}
+
+std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides) {
+    Settings settings;
+    if (!preset.empty()) {
+        PresetLoadResult loaded = loadPresetFile(resolvePresetPath(preset));
+        for (const std::string& w : loaded.warnings) std::cerr << "warning: " << w << "\n";
+        if (!loaded.settings) {
+            for (const std::string& e : loaded.errors) std::cerr << "error: " << e << "\n";
+            return std::nullopt;
+        }
+        settings = *loaded.settings;
+    }
+    bool ok = true;
+    for (const std::string& kv : overrides) {
+        if (std::string error = applySettingOverride(settings, kv); !error.empty()) {
+            std::cerr << "error: --set " << kv << ": " << error << "\n";
+            ok = false;
+        }
+    }
+    if (!ok) return std::nullopt;
+    if (std::vector<std::string> problems = settings.validate(); !problems.empty()) {
+        for (const std::string& p : problems) std::cerr << "error: " << p << "\n";
+        return std::nullopt;
+    }
+    return settings;
+}
+
+}  // namespace shadowlab::cli

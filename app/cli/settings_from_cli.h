@@ -1,0 +1,18 @@
+#pragma once
+// Settings for a CLI command: a preset (a path, or the name of a shipped preset) plus --set key=value overrides,
+// applied in order; every problem is reported with its key.
+#include "settings/settings.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab::cli {
+
+// Resolves "soft" to <presets dir>/soft.json when no such file exists in the working directory.
+std::string resolvePresetPath(const std::string& preset);
+
+// nullopt after printing the errors to stderr; warnings go to stderr too.
+std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides);
+
+}  // namespace shadowlab::cli

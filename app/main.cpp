@@ -1,0 +1,55 @@
+// shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
+#include "cli/info_command.h"
+#include "cli/render_command.h"
+#include "settings/settings_fields.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    using namespace shadowlab;
+    CLI::App app{"ShadowLab: tune shadow maps and see what each setting costs"};
+    app.require_subcommand(0, 1);
+
+    cli::RenderOptions render;
+    CLI::App* renderCmd = app.add_subcommand("render", "Render one frame headless (no display, no GPU needed)");
+    renderCmd->add_option("--scene", render.scene, "a .gltf/.glb path or builtin:NAME (see `shadowlab scenes`)")
+        ->capture_default_str();
+    renderCmd->add_option("--preset", render.preset, "a preset JSON path, or the name of a shipped preset");
+    renderCmd->add_option("--set", render.overrides, "override a setting by its preset key: key=value (repeatable)")
+        ->allow_extra_args(false);
+    renderCmd->add_option("--width", render.width, "view width in pixels")->capture_default_str();
+    renderCmd->add_option("--height", render.height, "view height in pixels")->capture_default_str();
+    renderCmd->add_option("--out", render.out, "the camera view as PNG")->capture_default_str();
+    renderCmd->add_option("--shadow-map", render.shadowMapExr, "the raw shadow map as a 1-channel float EXR");
+    renderCmd->add_option("--shadow-map-png", render.shadowMapPng, "a viewable PNG of the shadow map");
+    renderCmd->add_option("--view", render.view, "lit | shadow | light-depth")
+        ->check(CLI::IsMember({"lit", "shadow", "light-depth"}));
+
+    CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
+    CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
+    CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    if (*renderCmd) return cli::runRender(render);
+    if (*scenesCmd) return cli::runScenes();
+    if (*infoCmd) return cli::runInfo();
+    if (*keysCmd) {
+        for (const SettingsField& field : settingsFields())
+            std::cout << field.key << "  " << field.allowed << "  " << field.description << "\n";
+        return 0;
+    }
+    // No subcommand: until the editor exists, render the built-in default scene and say where it went.
+    cli::RenderOptions defaults;
+    defaults.out = "shadowlab-default.png";
+    defaults.shadowMapPng = "shadowlab-default-shadow-map.png";
+    std::cout << "shadowlab: no command given; rendering the built-in default scene headless "
+                 "(`shadowlab --help` lists the commands)\n";
+    return cli::runRender(defaults);
+}

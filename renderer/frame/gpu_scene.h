@@ -1,0 +1,50 @@
+#pragma once
+// A Scene uploaded to the GPU: one vertex buffer, one index buffer, a draw per instance, and the alpha textures of
+// MASK materials. Model matrices are made relative to a render origin in double precision.
+#include "gl/gl_objects.h"
+#include "scene/scene.h"
+
+#include <glm/ext/vector_double3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace shadowlab {
+
+struct GpuDraw {
+    GLsizei indexCount = 0;
+    std::size_t firstIndexByte = 0;
+    GLint baseVertex = 0;
+    glm::mat4 model{1.0f};           // object -> render-origin-relative world
+    glm::mat3 normalMatrix{1.0f};
+    bool mirrored = false;           // negative determinant: front faces are clockwise
+    int material = -1;
+    glm::vec3 boundsCenter{0.0f};    // render-origin-relative bounding sphere (finite vertices only)
+    float boundsRadius = 0.0f;
+    bool hasFiniteBounds = false;
+};
+
+class GpuScene {
+public:
+    GpuScene(const Scene& scene, const glm::dvec3& origin);
+
+    void bind() const;
+    const std::vector<GpuDraw>& draws() const { return draws_; }
+    // The alpha texture of a material (0 when it has none).
+    GLuint materialTexture(int material) const;
+    const Scene& scene() const { return *scene_; }
+    const glm::dvec3& origin() const { return origin_; }
+    std::size_t uploadedBytes() const { return uploadedBytes_; }
+
+private:
+    const Scene* scene_;
+    glm::dvec3 origin_;
+    gl::VertexArray vao_;
+    gl::Buffer vertices_;
+    gl::Buffer indices_;
+    std::vector<gl::Texture> imageTextures_;  // one per Scene::images entry (empty handle when invalid)
+    std::vector<GpuDraw> draws_;
+    std::size_t uploadedBytes_ = 0;
+};
+
+}  // namespace shadowlab

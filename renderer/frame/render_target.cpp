@@ -1,0 +1,38 @@
+#include "frame/render_target.h"
+
+namespace shadowlab {
+
+std::string RenderTarget::resize(int width, int height) {
+    if (width == width_ && height == height_ && framebuffer_) return {};
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
+    if (width < 1 || height < 1 || width > maxSize || height > maxSize)
+        return "view size " + std::to_string(width) + "x" + std::to_string(height) + " is outside [1, " +
+               std::to_string(maxSize) + "]";
+    gl::Texture color = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(color.id(), 1, GL_RGBA8, width, height);
+    glTextureParameteri(color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl::Renderbuffer depth = gl::createRenderbuffer();
+    glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, width, height);
+    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
+    glNamedFramebufferRenderbuffer(framebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+    if (glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        return "view framebuffer incomplete";
+    color_ = std::move(color);
+    depth_ = std::move(depth);
+    framebuffer_ = std::move(framebuffer);
+    width_ = width;
+    height_ = height;
+    return {};
+}
+
+std::vector<std::uint8_t> RenderTarget::readColor() const {
+    std::vector<std::uint8_t> pixels(std::size_t(width_) * height_ * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
+    return pixels;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,33 @@
+#pragma once
+// Where the main pass draws: an RGBA8 colour texture and a depth buffer of the view's size. The editor shows the
+// colour texture; the CLI reads it back to write a PNG.
+#include "gl/gl_objects.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+class RenderTarget {
+public:
+    // Returns "" or why it could not be made (size outside the GPU's limits).
+    std::string resize(int width, int height);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    GLuint framebuffer() const { return framebuffer_.id(); }
+    GLuint colorTexture() const { return color_.id(); }
+
+    // RGBA8 pixels, row 0 = bottom (GL order).
+    std::vector<std::uint8_t> readColor() const;
+
+private:
+    gl::Texture color_;
+    gl::Renderbuffer depth_;
+    gl::Framebuffer framebuffer_;
+    int width_ = 0;
+    int height_ = 0;
+};
+
+}  // namespace shadowlab

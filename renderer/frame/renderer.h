@@ -1,0 +1,61 @@
+#pragma once
+// The only entry point for a frame. Decides which passes must run (a shadow map whose light, casters and shadow
+// settings did not change is not re-rendered), which shader variants they need, runs them, and reports FrameStats.
+#include "context/gl_info.h"
+#include "frame/camera.h"
+#include "frame/frame_stats.h"
+#include "frame/gpu_scene.h"
+#include "frame/render_target.h"
+#include "shading/main_pass.h"
+#include "shadow/shadow_map.h"
+#include "shadow/shadow_pass.h"
+#include "timing/pass_timer.h"
+
+#include <memory>
+#include <optional>
+
+namespace shadowlab {
+
+class Renderer {
+public:
+    // Needs a current GL 4.5 context. Throws std::runtime_error if the built-in shaders do not build.
+    Renderer();
+
+    // Invalid settings (see Settings::validate) or a light that cannot be built: nothing is drawn and
+    // FrameStats::error says why; the renderer keeps its previous state.
+    FrameStats render(const Scene& scene, const Settings& settings, const Camera& camera, RenderTarget& target);
+
+    // Call after editing a Scene in place (geometry or materials), so the next frame re-uploads it.
+    void sceneChanged() { gpuScene_.reset(); }
+
+    // Waits for the newest GPU timings (benchmarks, one-shot renders); fills the stats' milliseconds.
+    void waitForTimings(FrameStats& stats);
+
+    const ShadowMap& shadowMap() const { return shadowMap_; }
+    const GlInfo& glInfo() const { return info_; }
+
+private:
+    struct ShadowInputs {
+        const void* scene = nullptr;
+        std::size_t sceneFingerprint = 0;
+        glm::dmat4 lightViewProjection{0.0};
+        ShadowMapSettings shadow;
+        bool depthClamp = true;
+        bool operator==(const ShadowInputs&) const = default;
+    };
+    std::string shadowPassReason(const ShadowInputs& now, bool reallocated) const;
+
+    GlInfo info_;
+    ShadowMap shadowMap_;
+    std::unique_ptr<ShadowPass> shadowPass_;
+    MainPass mainPass_;
+    PassTimer timer_;
+    std::unique_ptr<GpuScene> gpuScene_;
+    std::size_t gpuSceneFingerprint_ = 0;
+    std::optional<ShadowInputs> lastShadow_;
+};
+
+// Changes whenever geometry, instances or alpha-relevant material values of the scene change.
+std::size_t sceneFingerprint(const Scene& scene);
+
+}  // namespace shadowlab

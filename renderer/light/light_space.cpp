@@ -1,0 +1,154 @@
+#include "light/light_space.h"
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+// World size of the margin added around fitted volumes so that geometry on the bounding sphere is not clipped.
+double fitMargin(double radius) { return std::max(radius * 0.02, 1e-3); }
+
+glm::dmat4 viewFromBasis(const glm::dmat3& basis, const glm::dvec3& eye) {
+    // Inverse of the rigid transform [basis | eye]: rows are the basis vectors.
+    glm::dmat4 view(1.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        view[0][axis] = basis[axis].x;
+        view[1][axis] = basis[axis].y;
+        view[2][axis] = basis[axis].z;
+        view[3][axis] = -glm::dot(basis[axis], eye);
+    }
+    return view;
+}
+
+}  // namespace
+
+double LightSpace::texelSizeAt(double viewDepth) const {
+    if (!perspective) return texelWorldSize;
+    return 2.0 * tanHalfFov * std::max(viewDepth, nearPlane) / resolution;
+}
+
+glm::dmat3 lightBasis(const glm::dvec3& directionIn) {
+    const glm::dvec3 d = glm::normalize(directionIn);
+    const glm::dvec3 down(0.0, -1.0, 0.0);
+    // Base frame looking straight down: right = +x, up = -z, back = +y.
+    const glm::dvec3 baseRight(1.0, 0.0, 0.0), baseUp(0.0, 0.0, -1.0), baseBack(0.0, 1.0, 0.0);
+    const double c = glm::dot(down, d);
+    if (c < -1.0 + 1e-9) {
+        // Straight up: the minimal rotation is undefined (any half-turn works); pick the half-turn about x.
+        return glm::dmat3(baseRight, -baseUp, -baseBack);
+    }
+    // Rodrigues' rotation taking `down` to d: R = I + [v]x + [v]x^2 / (1 + c), v = down x d.
+    const glm::dvec3 v = glm::cross(down, d);
+    const glm::dmat3 vx(glm::dvec3(0.0, v.z, -v.y), glm::dvec3(-v.z, 0.0, v.x), glm::dvec3(v.y, -v.x, 0.0));
+    const glm::dmat3 rotation = glm::dmat3(1.0) + vx + (vx * vx) * (1.0 / (1.0 + c));
+    glm::dvec3 right = glm::normalize(rotation * baseRight);
+    glm::dvec3 back = -d;
+    glm::dvec3 up = glm::normalize(glm::cross(back, right));
+    right = glm::cross(up, back);
+    (void)baseBack;
+    return glm::dmat3(right, up, back);
+}
+
+LightSettings effectiveLight(const Settings& settings, const Scene& scene) {
+    LightSettings light = settings.light;
+    if (!settings.light.useSceneLight) return light;
+    for (const SceneLight& sl : scene.lights) {
+        if (sl.type == SceneLightType::Point) continue;  // point lights need cube maps: not supported yet
+        light.type = sl.type == SceneLightType::Spot ? LightType::Spot : LightType::Directional;
+        light.direction = sl.direction;
+        light.position = sl.position;
+        light.spotConeDeg = std::clamp(float(glm::degrees(2.0 * double(sl.outerConeRad))), 1.0f, 170.0f);
+        break;
+    }
+    return light;
+}
+
+bool allFinite(const glm::dmat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+bool allFinite(const glm::mat4& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
+                                          std::string& error) {
+    const LightSettings& light = settings.light;
+    const ProjectionSettings& proj = settings.projection;
+    const glm::dvec3 dir(light.direction);
+    const double dirLength = glm::length(dir);
+    if (!std::isfinite(dirLength) || dirLength < 1e-12) {
+        error = "light.direction: must be finite and non-zero";
+        return std::nullopt;
+    }
+    LightSpace ls;
+    ls.direction = dir / dirLength;
+    ls.resolution = std::max(settings.shadow.resolution, 1);
+    const glm::dmat3 basis = lightBasis(ls.direction);
+
+    // The scene's bounding sphere, relative to the render origin (empty scenes get a unit sphere).
+    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) - origin : glm::dvec3(bounds.center()) - origin;
+    const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
+
+    if (light.type == LightType::Directional) {
+        ls.perspective = false;
+        double halfSize = 0.5 * double(proj.orthoSize);
+        if (proj.autoFit) {
+            const double r = radius + fitMargin(radius);
+            halfSize = r;
+            ls.nearPlane = 0.0;
+            ls.farPlane = 2.0 * r;
+            ls.position = center - ls.direction * r;
+        } else {
+            ls.nearPlane = proj.nearPlane;
+            ls.farPlane = proj.farPlane;
+            // The volume is centred on the scene and its eye sits `far/2` back along the light, so near/far are
+            // distances along the light from that eye.
+            ls.position = center - ls.direction * (0.5 * (ls.nearPlane + ls.farPlane));
+        }
+        ls.orthoSize = 2.0 * halfSize;
+        ls.texelWorldSize = ls.orthoSize / ls.resolution;
+        ls.view = viewFromBasis(basis, ls.position);
+        ls.projection = glm::ortho(-halfSize, halfSize, -halfSize, halfSize, ls.nearPlane, ls.farPlane);
+    } else {
+        ls.perspective = true;
+        ls.position = glm::dvec3(light.position) - origin;
+        const double coneDeg = std::clamp(double(light.spotConeDeg), 1.0, 170.0);
+        ls.tanHalfFov = std::tan(glm::radians(coneDeg) * 0.5);
+        const double distance = glm::length(center - ls.position);
+        if (proj.autoFit) {
+            ls.farPlane = distance + radius + fitMargin(radius);
+            ls.nearPlane = std::max({distance - radius - fitMargin(radius), ls.farPlane * 1e-3, 1e-4});
+        } else {
+            ls.nearPlane = proj.nearPlane;
+            ls.farPlane = proj.farPlane;
+        }
+        ls.texelWorldSize = 2.0 * ls.tanHalfFov * std::max(distance, ls.nearPlane) / ls.resolution;
+        ls.view = viewFromBasis(basis, ls.position);
+        ls.projection = glm::perspective(glm::radians(coneDeg), 1.0, ls.nearPlane, ls.farPlane);
+    }
+    if (!(ls.nearPlane < ls.farPlane)) {
+        error = "projection: near (" + std::to_string(ls.nearPlane) + ") must be less than far (" +
+                std::to_string(ls.farPlane) + ")";
+        return std::nullopt;
+    }
+    if (!allFinite(ls.view) || !allFinite(ls.projection)) {
+        error = "light: the light's matrices are not finite (check direction, position, size, near and far)";
+        return std::nullopt;
+    }
+    return ls;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,50 @@
+#pragma once
+// The light's view and projection: built in double precision, relative to a render origin (large world
+// coordinates lose no precision), with a view basis that stays finite and continuous for a light pointing straight
+// down (the textbook's fixed up=(0,1,0) gives NaN there).
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/ext/matrix_double4x4.hpp>
+#include <glm/ext/vector_double3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace shadowlab {
+
+struct LightSpace {
+    glm::dmat4 view{1.0};        // render-origin-relative world -> light view
+    glm::dmat4 projection{1.0};  // light view -> clip
+    glm::dmat4 viewProjection() const { return projection * view; }
+    bool perspective = false;
+    glm::dvec3 direction{0.0, -1.0, 0.0};  // unit, the direction light travels (spot: the cone axis)
+    glm::dvec3 position{0.0};              // spot: world position; directional: the eye of the ortho volume
+    double nearPlane = 0.0;
+    double farPlane = 1.0;
+    double orthoSize = 0.0;        // directional: full width of the volume
+    double tanHalfFov = 0.0;       // spot
+    double texelWorldSize = 0.0;   // directional: constant; spot: at the scene centre's distance
+    int resolution = 1;
+    // The world size of one shadow-map texel at distance `viewDepth` from the light (spot) or anywhere (directional).
+    double texelSizeAt(double viewDepth) const;
+};
+
+// A rotation-minimal basis around `direction`: the frame that takes straight-down (0,-1,0) to `direction` with
+// the smallest rotation. Continuous everywhere except a tiny cap around straight up, where a fixed frame is used.
+// Columns: right, up, back (= -direction). `direction` must be finite and non-zero.
+glm::dmat3 lightBasis(const glm::dvec3& direction);
+
+// Builds the light space for the settings and scene bounds; nullopt with `error` set if it cannot be finite.
+// `origin` is subtracted from every world position before the matrices apply (camera-relative rendering).
+std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
+                                          std::string& error);
+
+// The settings' light, or the scene's first glTF light when light.useSceneLight is set and the scene has one.
+LightSettings effectiveLight(const Settings& settings, const Scene& scene);
+
+bool allFinite(const glm::dmat4& m);
+bool allFinite(const glm::mat4& m);
+
+}  // namespace shadowlab

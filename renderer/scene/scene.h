@@ -1,0 +1,99 @@
+#pragma once
+// The scene model the renderer draws: triangle meshes, materials (alpha only matters for shadows), instances with
+// world transforms, optional punctual lights. No GL here; the renderer uploads it (see gpu_scene.h).
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+enum class AlphaMode { Opaque, Mask, Blend };
+
+// RGBA8 image; only the alpha channel is used (alpha-tested shadow casters).
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;  // width*height*4 bytes, row 0 = first row of the file (glTF uv (0,0) = top-left)
+    bool valid() const { return width > 0 && height > 0 && rgba.size() == std::size_t(width) * height * 4; }
+};
+
+struct Material {
+    std::string name;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    glm::vec4 baseColorFactor{1.0f};
+    int baseColorImage = -1;         // index into Scene::images, -1 = none
+    int baseColorTexCoord = 0;       // which UV set (only TEXCOORD_0 is loaded; others fall back to it with a warning)
+    glm::mat3 uvTransform{1.0f};     // KHR_texture_transform of the base colour texture, identity if absent
+    bool wrapRepeat = true;          // sampler wrap of the base colour texture (repeat vs clamp)
+    bool doubleSided = false;
+};
+
+// One primitive: an indexed triangle list (non-indexed input gets 0..n-1 indices).
+struct Mesh {
+    std::string name;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;  // same count as positions (computed flat/smooth when the file has none)
+    std::vector<glm::vec2> uvs;      // empty or same count as positions
+    std::vector<std::uint32_t> indices;
+    int material = -1;               // index into Scene::materials, -1 = default opaque
+    std::size_t triangleCount() const { return indices.size() / 3; }
+};
+
+struct Instance {
+    int mesh = 0;
+    glm::mat4 transform{1.0f};  // object to world
+    bool mirrored() const;      // negative determinant: triangle winding is reversed in world space
+};
+
+enum class SceneLightType { Directional, Spot, Point };
+
+struct SceneLight {
+    std::string name;
+    SceneLightType type = SceneLightType::Directional;
+    glm::vec3 position{0.0f};
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // world direction the light travels (glTF: node's -Z)
+    float outerConeRad = 0.7853982f;         // spot only
+    float range = 0.0f;                      // 0 = infinite
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+};
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    bool empty = true;
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    float radius() const;  // half the diagonal (bounding sphere around the box)
+    void extend(const glm::vec3& p);  // ignores non-finite points
+};
+
+struct Scene {
+    std::string name;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Image> images;
+    std::vector<Instance> instances;
+    std::vector<SceneLight> lights;
+    std::vector<std::string> warnings;  // what was repaired or ignored while loading
+
+    // World-space bounds over every instance's finite vertices (cached by computeBounds()).
+    Bounds bounds;
+    void computeBounds();
+
+    std::size_t triangleCount() const;  // over all instances
+    // Empty when everything the renderer relies on holds (indices in range, matching attribute counts, finite
+    // positions, unit normals, valid material/image/mesh references, finite transforms); else the first problem.
+    std::string invariantError() const;
+    const Material* materialOf(const Mesh& mesh) const;
+    bool hasAlphaMaskedCasters() const;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,92 @@
+#pragma once
+// Every tunable of a frame, as a plain value type (no GL handles). The editor edits one, a preset is one as JSON,
+// the CLI builds one from a preset plus --set overrides. Keys and ranges live in settings_fields.h.
+#include <glm/vec3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+enum class DepthFormat { D16, D24, D32F };
+enum class CullMode { Back, Front, None };
+enum class LightType { Directional, Spot };
+enum class AddressMode { Wrap, ClampToEdge, ClampToBorder };
+enum class FilterKind { Point, Hardware2x2, Pcf, Poisson };
+enum class ViewMode { Lit, Shadow, LightDepth };
+
+struct ShadowMapSettings {
+    int resolution = 2048;              // square map, texels per side
+    DepthFormat format = DepthFormat::D32F;
+    float depthBias = 2.0f;             // D3D DepthBias: units of the format's smallest depth step
+    float slopeScaledDepthBias = 1.5f;  // D3D SlopeScaledDepthBias: times the polygon's max depth slope
+    float depthBiasClamp = 0.0f;        // D3D DepthBiasClamp: max |bias| in depth units; 0 = no clamp
+    float normalOffset = 0.5f;          // lookup moved along the normal, in shadow-map texels (world size)
+    CullMode cullMode = CullMode::Back;
+
+    bool operator==(const ShadowMapSettings&) const = default;
+};
+
+struct LightSettings {
+    LightType type = LightType::Directional;
+    glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels (need not be normalized)
+    glm::vec3 position{4.0f, 8.0f, 4.0f};      // spot only
+    float spotConeDeg = 60.0f;                 // spot full cone angle, degrees
+    float intensity = 1.0f;
+    float ambient = 0.15f;
+    bool useSceneLight = false;                // take type/direction/position/cone from the scene's first glTF light
+
+    bool operator==(const LightSettings&) const = default;
+};
+
+struct ProjectionSettings {
+    bool autoFit = true;      // fit ortho size / near / far (spot: near / far) to the scene's bounding sphere
+    float orthoSize = 20.0f;  // full width of the square ortho volume, world units
+    float nearPlane = 0.1f;
+    float farPlane = 50.0f;
+    bool depthClamp = true;   // GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast
+
+    bool operator==(const ProjectionSettings&) const = default;
+};
+
+struct SamplerSettings {
+    AddressMode addressMode = AddressMode::ClampToBorder;
+    float borderDepth = 1.0f;  // depth returned outside the map with clamp-to-border; 1 = lit
+
+    bool operator==(const SamplerSettings&) const = default;
+};
+
+struct FilterSettings {
+    FilterKind kind = FilterKind::Pcf;
+    int kernel = 3;          // NxN grid PCF: 1,3,5,7,9
+    float poissonRadius = 2.0f;  // Poisson disk radius, texels
+
+    bool operator==(const FilterSettings&) const = default;
+};
+
+struct CameraSettings {
+    bool autoFrame = true;  // place the camera to frame the scene's bounds (position/target ignored)
+    glm::vec3 position{8.0f, 6.0f, 10.0f};
+    glm::vec3 target{0.0f, 0.0f, 0.0f};
+    float fovYDeg = 45.0f;
+
+    bool operator==(const CameraSettings&) const = default;
+};
+
+struct Settings {
+    ShadowMapSettings shadow;
+    LightSettings light;
+    ProjectionSettings projection;
+    SamplerSettings sampler;
+    FilterSettings filter;
+    CameraSettings camera;
+    ViewMode view = ViewMode::Lit;
+
+    // Every problem as "key: what is wrong (allowed range)"; empty when the settings can be rendered.
+    std::vector<std::string> validate() const;
+
+    bool operator==(const Settings&) const = default;
+};
+
+
+}  // namespace shadowlab

@@ -1,0 +1,129 @@
+#include "shadow/shadow_pass.h"
+
+#include "gl/program.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+void setPolygonOffset(float slopeScaled, float constant, float clamp, bool hasClamp) {
+    // D3D: Bias = DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope, clamped to DepthBiasClamp. GL's polygon
+    // offset is the same formula: factor = slope scale, units = constant (in units of r).
+    if (slopeScaled == 0.0f && constant == 0.0f) {
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        return;
+    }
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    if (hasClamp && glPolygonOffsetClamp)
+        glPolygonOffsetClamp(slopeScaled, constant, clamp);
+    else if (hasClamp && glPolygonOffsetClampEXT)
+        glPolygonOffsetClampEXT(slopeScaled, constant, clamp);
+    else
+        glPolygonOffset(slopeScaled, constant);
+}
+
+}  // namespace
+
+ShadowPass::ShadowPass() {
+    depthOnly_ = gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {});
+    alphaFactorOnly_ = gl::buildProgram(
+        {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
+        {"ALPHA_MASK"});
+    alphaTextured_ = gl::buildProgram(
+        {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
+        {"ALPHA_MASK", "BASE_COLOR_TEXTURE"});
+    hasOffsetClamp_ = glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr;
+}
+
+bool ShadowPass::casterVisible(const GpuDraw& draw, const LightSpace& light) const {
+    if (!draw.hasFiniteBounds) return true;  // cannot tell: draw it (non-finite vertices are dropped at load)
+    const glm::dvec3 c = glm::dvec3(light.view * glm::dvec4(glm::dvec3(draw.boundsCenter), 1.0));
+    const double r = draw.boundsRadius;
+    const double depth = -c.z;  // distance along the light
+    if (depth - r > light.farPlane) return false;
+    if (!light.perspective) {
+        // Casters in front of the near plane still cast (depth clamp), so only the sides and far plane cull.
+        const double half = 0.5 * light.orthoSize;
+        return std::abs(c.x) - r <= half && std::abs(c.y) - r <= half;
+    }
+    if (depth + r < 0.0) return false;  // entirely behind the light
+    // Sphere against the four side planes of the square frustum (normals pointing inward).
+    const double t = light.tanHalfFov;
+    const double norm = std::sqrt(1.0 + t * t);
+    for (int axis = 0; axis < 2; ++axis) {
+        const double lateral = axis == 0 ? c.x : c.y;
+        if ((depth * t - lateral) / norm < -r) return false;
+        if ((depth * t + lateral) / norm < -r) return false;
+    }
+    return true;
+}
+
+ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light, const ShadowMapSettings& shadow,
+                                 bool depthClamp, ShadowMap& map) {
+    ShadowPassCounts counts;
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
+    glViewport(0, 0, map.resolution(), map.resolution());
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    if (depthClamp)
+        glEnable(GL_DEPTH_CLAMP);
+    else
+        glDisable(GL_DEPTH_CLAMP);
+    setPolygonOffset(shadow.slopeScaledDepthBias, shadow.depthBias, shadow.depthBiasClamp, hasOffsetClamp_);
+
+    const glm::mat4 lightViewProjection(light.viewProjection());
+    scene.bind();
+    const Scene& model = scene.scene();
+    for (const GpuDraw& draw : scene.draws()) {
+        if (!casterVisible(draw, light)) {
+            ++counts.castersSkipped;
+            continue;
+        }
+        const Material* material = draw.material >= 0 ? &model.materials[std::size_t(draw.material)] : nullptr;
+        const bool alphaTested = material && material->alphaMode == AlphaMode::Mask;
+        const GLuint texture = alphaTested ? scene.materialTexture(draw.material) : 0;
+        const GLuint program = !alphaTested ? depthOnly_.id() : texture ? alphaTextured_.id() : alphaFactorOnly_.id();
+        glUseProgram(program);
+        glUniformMatrix4fv(glGetUniformLocation(program, "uLightViewProjection"), 1, GL_FALSE,
+                           glm::value_ptr(lightViewProjection));
+        glUniformMatrix4fv(glGetUniformLocation(program, "uModel"), 1, GL_FALSE, glm::value_ptr(draw.model));
+        if (alphaTested) {
+            ++counts.alphaTestedCasters;
+            glUniformMatrix3fv(glGetUniformLocation(program, "uUvTransform"), 1, GL_FALSE,
+                               glm::value_ptr(material->uvTransform));
+            glUniform1f(glGetUniformLocation(program, "uAlphaFactor"), material->baseColorFactor.a);
+            glUniform1f(glGetUniformLocation(program, "uAlphaCutoff"), material->alphaCutoff);
+            if (texture) {
+                glBindTextureUnit(1, texture);
+                glUniform1i(glGetUniformLocation(program, "uBaseColor"), 1);
+            }
+        }
+        // Double-sided materials cast from both faces: culling either would drop single-sided planes.
+        const bool doubleSided = material && material->doubleSided;
+        if (shadow.cullMode == CullMode::None || doubleSided) {
+            glDisable(GL_CULL_FACE);
+        } else {
+            glEnable(GL_CULL_FACE);
+            glCullFace(shadow.cullMode == CullMode::Back ? GL_BACK : GL_FRONT);
+        }
+        glFrontFace(draw.mirrored ? GL_CW : GL_CCW);
+        glDrawElementsBaseVertex(GL_TRIANGLES, draw.indexCount, GL_UNSIGNED_INT,
+                                 reinterpret_cast<const void*>(draw.firstIndexByte), draw.baseVertex);
+        ++counts.castersDrawn;
+        counts.trianglesDrawn += std::size_t(draw.indexCount / 3);
+    }
+    glFrontFace(GL_CCW);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_DEPTH_CLAMP);
+    return counts;
+}
+
+}  // namespace shadowlab

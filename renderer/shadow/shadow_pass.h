@@ -1,0 +1,40 @@
+#pragma once
+// The depth-only pass from the light into the shadow map: D3D-style depth bias through glPolygonOffsetClamp,
+// cull mode (flipped for mirrored instances), depth clamp, alpha-tested MASK casters, and casters outside the
+// light's volume skipped.
+#include "frame/gpu_scene.h"
+#include "gl/gl_objects.h"
+#include "light/light_space.h"
+#include "shadow/shadow_map.h"
+
+#include <string>
+
+namespace shadowlab {
+
+struct ShadowPassCounts {
+    int castersDrawn = 0;
+    int castersSkipped = 0;       // outside the light's volume
+    int alphaTestedCasters = 0;
+    std::size_t trianglesDrawn = 0;
+};
+
+class ShadowPass {
+public:
+    ShadowPass();
+
+    ShadowPassCounts run(const GpuScene& scene, const LightSpace& light, const ShadowMapSettings& shadow,
+                         bool depthClamp, ShadowMap& map);
+
+    // Whether glPolygonOffsetClamp (or its EXT twin) exists; without it DepthBiasClamp is ignored (with a warning).
+    bool hasPolygonOffsetClamp() const { return hasOffsetClamp_; }
+
+private:
+    bool casterVisible(const GpuDraw& draw, const LightSpace& light) const;
+
+    gl::Program depthOnly_;       // vertex stage only: no fragment work for opaque casters
+    gl::Program alphaFactorOnly_; // MASK material without a texture
+    gl::Program alphaTextured_;   // MASK material with a base-colour texture
+    bool hasOffsetClamp_ = false;
+};
+
+}  // namespace shadowlab
