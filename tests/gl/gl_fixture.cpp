@@ -70,6 +70,15 @@ std::string saveView(const View& view, const std::string& name) {
     return path;
 }
 
+Settings topDownShadowView(Settings s) {
+    s.camera.autoFrame = false;
+    s.camera.position = glm::vec3(0.0f, 30.0f, 0.0f);
+    s.camera.target = glm::vec3(0.0f);
+    s.camera.fovYDeg = 45.0f;
+    s.view = ViewMode::Shadow;
+    return s;
+}
+
 Scene loadBuiltin(const std::string& name) {
     std::optional<Scene> scene = makeBuiltinScene(name);
     if (!scene) throw std::runtime_error("no builtin scene " + name);

@@ -36,6 +36,18 @@ struct View {
     int red(int x, int yDown) const;
     // The red channel (0..255) where a world point lands; -1 if it is off screen.
     int redAt(const glm::dvec3& world) const;
+    // Whether pixel i (index into rgba / 4) shows the scene: the background's clear colour is not grey, every
+    // shadow-factor pixel is.
+    bool isGreyScene(std::size_t i) const {
+        return rgba[i * 4] == rgba[i * 4 + 1] && rgba[i * 4 + 1] == rgba[i * 4 + 2];
+    }
+    // Scene pixels (shadow view) whose red value passes a predicate.
+    template <typename Predicate>
+    long countScenePixels(Predicate predicate) const {
+        long n = 0;
+        for (std::size_t i = 0; i * 4 < rgba.size(); ++i) n += isGreyScene(i) && predicate(int(rgba[i * 4]));
+        return n;
+    }
     // Mean red over a (2r+1)^2 window around a world point's pixel; -1 if off screen.
     double meanRedAround(const glm::dvec3& world, int r) const;
 };
@@ -47,6 +59,9 @@ View renderView(Renderer& renderer, const Scene& scene, const Settings& settings
 std::string saveView(const View& view, const std::string& name);
 
 Scene loadBuiltin(const std::string& name);
+// Looking straight down from y=30 at the origin, showing the shadow factor: every floor point outside a caster's
+// footprint is visible, so shadows can be checked at hand-computed floor positions.
+Settings topDownShadowView(Settings settings);
 Settings loadShippedPreset(const std::string& name);
 
 }  // namespace shadowlab::test

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# End-to-end: the real `shadowlab` binary, headless. Checks outputs exist and decode, and that every kind of bad
+# input exits non-zero with a message naming what is wrong. Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
+set -uo pipefail
+: "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
+rm -rf "$OUT_DIR" && mkdir -p "$OUT_DIR" && cd "$OUT_DIR"
+unset DISPLAY WAYLAND_DISPLAY
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { echo "ok: $*"; }
+
+# expect_ok NAME CMD...: exit 0
+expect_ok() {
+  local name=$1; shift
+  if "$@" >"$name.out" 2>"$name.err"; then pass "$name"; else fail "$name (exit $?): $(cat "$name.err")"; fi
+}
+# expect_error NAME PATTERN CMD...: non-zero exit and PATTERN in stderr
+expect_error() {
+  local name=$1 pattern=$2; shift 2
+  "$@" >"$name.out" 2>"$name.err"
+  local rc=$?
+  if [ $rc -eq 0 ]; then fail "$name: exited 0"; return; fi
+  if grep -q -- "$pattern" "$name.err"; then pass "$name (exit $rc)"; else fail "$name: '$pattern' not in: $(cat "$name.err")"; fi
+}
+# png_size FILE -> "W H" from the IHDR chunk
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'; }
+
+expect_ok render "$SHADOWLAB" render --scene builtin:textbook --preset default --width 320 --height 200 \
+  --out view.png --shadow-map map.exr --shadow-map-png map.png
+[ "$(png_size view.png)" = "320 200" ] && pass "view.png is 320x200" || fail "view.png size: $(png_size view.png)"
+[ "$(png_size map.png)" = "2048 2048" ] && pass "map.png is 2048x2048" || fail "map.png size: $(png_size map.png)"
+head -c 4 map.exr | od -An -tx1 | grep -q "76 2f 31 01" && pass "map.exr is an OpenEXR file" || fail "map.exr magic"
+grep -q "wrote view.png" render.out && pass "says where it wrote" || fail "no 'wrote view.png' in output"
+
+expect_ok render-set "$SHADOWLAB" render --scene builtin:fence --preset soft --set shadow.resolution=512 \
+  --set filter.kind=pcf --set filter.kernel=5 --set light.direction=[0,-1,-0.8] --view shadow \
+  --width 160 --height 100 --out fence.png --shadow-map-png fence-map.png
+[ "$(png_size fence-map.png)" = "512 512" ] && pass "--set shadow.resolution applies" || fail "fence-map size"
+grep -q "PCF_KERNEL 5" render-set.out && pass "--set filter.kernel reaches the shader" || fail "kernel not in variants"
+
+for view in lit shadow light-depth; do
+  expect_ok "view-$view" "$SHADOWLAB" render --scene builtin:thin-walls --view "$view" --width 64 --height 64 --out "v-$view.png"
+done
+for preset in "$SOURCE_DIR"/presets/*.json; do
+  expect_ok "preset-$(basename "$preset" .json)" "$SHADOWLAB" render --preset "$preset" --width 64 --height 64 --out p.png
+done
+for scene in "$SOURCE_DIR"/../shared/scenes/*/*.gltf; do
+  [ -f "$scene" ] || continue
+  expect_ok "scene-$(basename "$scene" .gltf)" "$SHADOWLAB" render --scene "$scene" --width 96 --height 64 \
+    --set shadow.resolution=512 --out s.png
+done
+
+expect_ok scenes "$SHADOWLAB" scenes
+for name in textbook grazing thin-walls fence; do
+  grep -q "builtin:$name" scenes.out && pass "scenes lists $name" || fail "scenes does not list $name"
+done
+expect_ok info "$SHADOWLAB" info
+grep -q "GL_RENDERER" info.out && grep -q "GL_MAX_TEXTURE_SIZE" info.out && pass "info prints renderer and limits" || fail "info output"
+expect_ok keys "$SHADOWLAB" keys
+grep -q "shadow.slopeScaledDepthBias" keys.out && pass "keys lists the bias" || fail "keys output"
+
+# Bad input: a clear message naming what is wrong, and a non-zero exit.
+expect_error bad-key "no.such" "$SHADOWLAB" render --set no.such=1 --out x.png
+expect_error bad-range "shadow.resolution" "$SHADOWLAB" render --set shadow.resolution=0 --out x.png
+expect_error bad-nan "shadow.depthBias" "$SHADOWLAB" render --set shadow.depthBias=nan --out x.png
+expect_error bad-enum "filter.kind" "$SHADOWLAB" render --set filter.kind=gaussian --out x.png
+expect_error bad-kernel "filter.kernel" "$SHADOWLAB" render --set filter.kernel=4 --out x.png
+expect_error zero-light "light.direction" "$SHADOWLAB" render --set light.direction=[0,0,0] --out x.png
+expect_error missing-scene "nope.gltf" "$SHADOWLAB" render --scene /nonexistent/nope.gltf --out x.png
+expect_error unknown-builtin "textbook" "$SHADOWLAB" render --scene builtin:nope --out x.png
+expect_error missing-preset "missing.json" "$SHADOWLAB" render --preset /nonexistent/missing.json --out x.png
+printf '{"schema":"shadowlab-preset","schemaVersion":1,"shadow":{"depthBias":"a lot"}}' >bad-type.json
+expect_error bad-preset-type "shadow.depthBias" "$SHADOWLAB" render --preset bad-type.json --out x.png
+printf '{"schema":"shadowlab-preset", "schemaVersion":1, "shadow": {' >truncated.json
+expect_error bad-preset-syntax "truncated.json" "$SHADOWLAB" render --preset truncated.json --out x.png
+expect_error bad-out-dir "no-such-dir" "$SHADOWLAB" render --width 32 --height 32 --out no-such-dir/x.png
+expect_error bad-size "width" "$SHADOWLAB" render --width 0 --out x.png
+expect_error bad-view "view" "$SHADOWLAB" render --view sideways --out x.png
+expect_error bad-command "" "$SHADOWLAB" frobnicate
+printf 'not a gltf' >broken.gltf
+expect_error broken-gltf "broken.gltf" "$SHADOWLAB" render --scene broken.gltf --out x.png
+
+# No arguments: renders the default scene and says where the picture went.
+mkdir -p noargs && (cd noargs && "$SHADOWLAB" >../noargs.out 2>&1)
+[ -f noargs/shadowlab-default.png ] && grep -q "shadowlab-default.png" noargs.out && pass "no-args render" || fail "no-args render: $(cat noargs.out)"
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
