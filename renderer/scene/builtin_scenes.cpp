@@ -1,0 +1,251 @@
+#include "scene/builtin_scenes.h"
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <utility>
+
+namespace shadowlab {
+namespace {
+
+using namespace builtin;
+
+// Builds one Mesh from planar quads (flat normals) and spheres (analytic normals), all CCW seen from outside.
+struct MeshBuilder {
+    Mesh mesh;
+
+    explicit MeshBuilder(std::string name, int material) {
+        mesh.name = std::move(name);
+        mesh.material = material;
+    }
+
+    // Corners c-u-v, c+u-v, c+u+v, c-u+v; the face looks along cross(u, v). UV (0,0) at c-u+v (glTF: v runs down).
+    void quad(const glm::vec3& c, const glm::vec3& u, const glm::vec3& v, bool withUv = false) {
+        const auto base = std::uint32_t(mesh.positions.size());
+        const glm::vec3 n = glm::normalize(glm::cross(u, v));
+        const glm::vec3 corners[4] = {c - u - v, c + u - v, c + u + v, c - u + v};
+        const glm::vec2 uvs[4] = {{0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 0.0f}, {0.0f, 0.0f}};
+        for (int i = 0; i < 4; ++i) {
+            mesh.positions.push_back(corners[i]);
+            mesh.normals.push_back(n);
+            if (withUv) mesh.uvs.push_back(uvs[i]);
+        }
+        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) mesh.indices.push_back(base + i);
+    }
+
+    // Axis-aligned box, then rotated by `frame` (a rotation) about the origin: world = frame * (center + local).
+    void box(const glm::vec3& center, const glm::vec3& size, const glm::mat3& frame = glm::mat3(1.0f)) {
+        const glm::vec3 h = 0.5f * size;
+        const std::pair<glm::vec3, glm::vec3> faces[6] = {  // (outward normal, in-face axis)
+            {{1, 0, 0}, {0, 1, 0}}, {{-1, 0, 0}, {0, 1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+            {{0, -1, 0}, {0, 0, 1}}, {{0, 0, 1}, {1, 0, 0}}, {{0, 0, -1}, {1, 0, 0}}};
+        const std::size_t first = mesh.positions.size();
+        for (const auto& [n, u] : faces) quad(center + n * h, u * h, glm::cross(n, u) * h);
+        for (std::size_t i = first; i < mesh.positions.size(); ++i) {
+            mesh.positions[i] = frame * mesh.positions[i];
+            mesh.normals[i] = frame * mesh.normals[i];
+        }
+    }
+
+    // UV sphere: `segments` around y, `rings` from pole to pole; single triangles at the poles (no zero-area ones).
+    void sphere(const glm::vec3& center, float radius, int segments, int rings) {
+        const auto base = std::uint32_t(mesh.positions.size());
+        for (int j = 0; j <= rings; ++j) {
+            const double theta = std::numbers::pi * j / rings;
+            for (int i = 0; i < segments; ++i) {
+                const double phi = 2.0 * std::numbers::pi * i / segments;
+                const glm::vec3 dir(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
+                                    float(std::sin(theta) * std::sin(phi)));
+                mesh.positions.push_back(center + radius * dir);
+                mesh.normals.push_back(dir);
+            }
+        }
+        auto at = [&](int j, int i) { return base + std::uint32_t(j * segments + (i % segments)); };
+        for (int j = 0; j < rings; ++j) {
+            for (int i = 0; i < segments; ++i) {
+                const std::uint32_t a = at(j, i), b = at(j + 1, i), c = at(j + 1, i + 1), d = at(j, i + 1);
+                if (j != 0) mesh.indices.insert(mesh.indices.end(), {a, d, c});          // a == d at the north pole
+                if (j != rings - 1) mesh.indices.insert(mesh.indices.end(), {a, c, b});  // b == c at the south pole
+            }
+        }
+    }
+};
+
+void addObject(Scene& scene, MeshBuilder&& builder) {
+    scene.instances.push_back(Instance{int(scene.meshes.size()), glm::mat4(1.0f)});
+    scene.meshes.push_back(std::move(builder.mesh));
+}
+
+Material opaque(const char* name, glm::vec4 color) {
+    Material m;
+    m.name = name;
+    m.baseColorFactor = color;
+    return m;
+}
+
+// Materials shared by every scene: 0 = floor, 1 = casters.
+Scene baseScene(const std::string& name) {
+    Scene scene;
+    scene.name = name;
+    scene.materials.push_back(opaque("floor", {0.8f, 0.8f, 0.8f, 1.0f}));
+    scene.materials.push_back(opaque("caster", {0.85f, 0.45f, 0.25f, 1.0f}));
+    return scene;
+}
+
+void addFloor(Scene& scene) {
+    MeshBuilder floor("floor", 0);
+    const float h = 0.5f * kFloorSize;
+    floor.quad({0, 0, 0}, {h, 0, 0}, {0, 0, -h});  // cross(+x, -z) = +y
+    addObject(scene, std::move(floor));
+}
+
+Scene textbook() {
+    Scene scene = baseScene("textbook");
+    addFloor(scene);
+    MeshBuilder cube("cube", 1);
+    cube.box(kCubeCenter, glm::vec3(kCubeSize));
+    addObject(scene, std::move(cube));
+    MeshBuilder sphere("sphere", 1);
+    sphere.sphere(kTextbookSphereCenter, kTextbookSphereRadius, kTextbookSphereSegments, kTextbookSphereRings);
+    addObject(scene, std::move(sphere));
+    MeshBuilder floating("floating-box", 1);
+    floating.box(kFloatingBoxCenter, kFloatingBoxSize);
+    addObject(scene, std::move(floating));
+    return scene;
+}
+
+Scene grazing() {
+    Scene scene = baseScene("grazing");
+    const glm::vec3 n = grazingPlaneNormal();
+    const glm::vec3 t1 = glm::normalize(glm::cross(glm::vec3(0, 1, 0), n));  // horizontal, along the slope
+    const glm::vec3 t2 = glm::cross(n, t1);                                  // up the slope; cross(t1, t2) = n
+    MeshBuilder plane("plane", 0);
+    const float h = 0.5f * kGrazingPlaneSize;
+    plane.quad({0, 0, 0}, h * t1, h * t2);
+    addObject(scene, std::move(plane));
+    // Box built upright at the origin, then turned so its local +y is the plane normal.
+    MeshBuilder box("box", 1);
+    box.box({0.0f, 0.5f * kGrazingBoxSize, 0.0f}, glm::vec3(kGrazingBoxSize), glm::mat3(t1, n, glm::cross(t1, n)));
+    addObject(scene, std::move(box));
+    return scene;
+}
+
+Scene thinWalls() {
+    Scene scene = baseScene("thin-walls");
+    addFloor(scene);
+    for (int i = 0; i < kThinWallCount; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "wall-%g", double(kThinWallThickness[i]));
+        MeshBuilder wall(name, 1);
+        wall.box({0.0f, 0.5f * kThinWallHeight, kThinWallCenterZ[i]},
+                 {kThinWallLength, kThinWallHeight, kThinWallThickness[i]});
+        addObject(scene, std::move(wall));
+    }
+    return scene;
+}
+
+// Alpha 255 on slats and on the rail, 0 in the gaps; RGB is a wood colour (only alpha matters for shadows).
+Image fenceImage() {
+    Image img;
+    img.width = kFenceImageWidth;
+    img.height = kFenceImageHeight;
+    img.rgba.resize(std::size_t(img.width) * img.height * 4);
+    const float texelX = (kFenceXMax - kFenceXMin) / float(img.width);
+    const float texelY = kFenceHeight / float(img.height);
+    for (int row = 0; row < img.height; ++row) {
+        for (int col = 0; col < img.width; ++col) {
+            // Texel centre in fence coordinates; row 0 is the top of the fence.
+            const float x = kFenceXMin + (float(col) + 0.5f) * texelX;
+            const float y = kFenceHeight - (float(row) + 0.5f) * texelY;
+            std::uint8_t* p = &img.rgba[(std::size_t(row) * img.width + col) * 4];
+            p[0] = 150;
+            p[1] = 100;
+            p[2] = 60;
+            p[3] = fenceOpaqueAt(x, y) ? 255 : 0;
+        }
+    }
+    return img;
+}
+
+Scene fence() {
+    Scene scene = baseScene("fence");
+    addFloor(scene);
+    Material m = opaque("fence", {0.6f, 0.4f, 0.25f, 1.0f});
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = kFenceAlphaCutoff;
+    m.doubleSided = true;
+    m.baseColorImage = 0;
+    m.wrapRepeat = false;
+    scene.images.push_back(fenceImage());
+    scene.materials.push_back(m);
+    MeshBuilder quad("fence", 2);
+    const float hx = 0.5f * (kFenceXMax - kFenceXMin), hy = 0.5f * kFenceHeight;
+    quad.quad({0.5f * (kFenceXMin + kFenceXMax), hy, 0.0f}, {hx, 0, 0}, {0, hy, 0}, true);  // faces +z
+    addObject(scene, std::move(quad));
+    return scene;
+}
+
+Scene spherePlane() {
+    Scene scene = baseScene("sphere-plane");
+    addFloor(scene);
+    MeshBuilder sphere("sphere", 1);
+    sphere.sphere(kSpherePlaneCenter, kSpherePlaneRadius, kSpherePlaneSegments, kSpherePlaneRings);
+    addObject(scene, std::move(sphere));
+    return scene;
+}
+
+struct Entry {
+    const char* name;
+    const char* description;
+    Scene (*make)();
+};
+
+constexpr Entry kScenes[] = {
+    {"textbook", "floor, cube, sphere and a floating box (detached shadow): the default scene", textbook},
+    {"grazing", "a 40x40 plane at 80 deg to the default light with a box on it: acne without bias", grazing},
+    {"thin-walls", "walls 0.02, 0.1 and 0.5 thick on a floor: too much bias detaches their shadows", thinWalls},
+    {"fence", "an alpha-tested (MASK) double-sided fence of slats and a rail over a floor", fence},
+    {"sphere-plane", "a finely tessellated unit sphere floating over a floor: the analytic check", spherePlane},
+};
+
+const Entry* find(const std::string& name) {
+    for (const Entry& e : kScenes)
+        if (name == e.name) return &e;
+    return nullptr;
+}
+
+}  // namespace
+
+glm::vec3 builtin::grazingPlaneNormal() {
+    // Tilt the normal away from the light, in the vertical plane that holds the light, until the angle is 80 deg.
+    const glm::dvec3 toLight = glm::normalize(-glm::dvec3(kDefaultLightDir));
+    const glm::dvec3 up(0, 1, 0);
+    const glm::dvec3 towardLight = glm::normalize(toLight - up * toLight.y);  // horizontal
+    const double zenith = std::acos(toLight.y);
+    const double tilt = double(kGrazingAngleDeg) * std::numbers::pi / 180.0 - zenith;
+    return glm::vec3(glm::normalize(std::cos(tilt) * up - std::sin(tilt) * towardLight));
+}
+
+std::vector<std::string> builtinSceneNames() {
+    std::vector<std::string> names;
+    for (const Entry& e : kScenes) names.emplace_back(e.name);
+    return names;
+}
+
+std::string builtinSceneDescription(const std::string& name) {
+    const Entry* e = find(name);
+    return e ? e->description : "";
+}
+
+std::optional<Scene> makeBuiltinScene(const std::string& name) {
+    const Entry* e = find(name);
+    if (!e) return std::nullopt;
+    Scene scene = e->make();
+    scene.computeBounds();
+    return scene;
+}
+
+}  // namespace shadowlab

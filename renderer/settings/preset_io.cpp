@@ -1,0 +1,335 @@
+#include "settings/preset_io.h"
+
+#include "settings/settings_fields.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+namespace shadowlab {
+
+using nlohmann::json;
+using nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kMetaKeys[] = {"schema", "schemaVersion", "name", "description"};
+
+bool isMetaKey(const std::string& key) {
+    return std::find_if(std::begin(kMetaKeys), std::end(kMetaKeys), [&](const char* m) { return key == m; }) !=
+           std::end(kMetaKeys);
+}
+
+bool isGroup(std::string_view name) {
+    return !name.empty() && std::any_of(settingsFields().begin(), settingsFields().end(),
+                                        [&](const SettingsField& f) { return f.group() == name; });
+}
+
+// Built as ordered_json so a saved file reads in Settings order: schema first, then shadow, light, ...
+ordered_json buildPreset(const Settings& settings, const std::string& name, const std::string& description) {
+    ordered_json out = ordered_json::object();
+    out["schema"] = kPresetSchema;
+    out["schemaVersion"] = kPresetSchemaVersion;
+    out["name"] = name;
+    out["description"] = description;
+    for (const SettingsField& f : settingsFields()) {
+        ordered_json value = f.get(settings);
+        if (f.group().empty())
+            out[std::string(f.name())] = std::move(value);
+        else
+            out[std::string(f.group())][std::string(f.name())] = std::move(value);
+    }
+    return out;
+}
+
+// Pretty printing with short arrays ([x, y, z]) kept on one line, which nlohmann's dump(2) does not do.
+void writeJson(std::string& out, const ordered_json& v, int indent) {
+    auto scalar = [](const ordered_json& s) { return s.dump(-1, ' ', false, json::error_handler_t::replace); };
+    if (v.is_object() && !v.empty()) {
+        out += "{\n";
+        std::size_t i = 0;
+        for (const auto& [key, item] : v.items()) {
+            out.append(static_cast<std::size_t>(indent + 2), ' ');
+            out += scalar(ordered_json(key)) + ": ";
+            writeJson(out, item, indent + 2);
+            out += ++i < v.size() ? ",\n" : "\n";
+        }
+        out.append(static_cast<std::size_t>(indent), ' ');
+        out += "}";
+    } else if (v.is_array() && std::none_of(v.begin(), v.end(), [](const ordered_json& e) {
+                   return e.is_structured();
+               })) {
+        out += "[";
+        for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + scalar(v[i]);
+        out += "]";
+    } else if (v.is_structured()) {
+        out += v.dump(indent + 2, ' ', false, json::error_handler_t::replace);
+    } else {
+        out += scalar(v);
+    }
+}
+
+// nlohmann's DOM parser, but keeping the byte position of a syntax error (an out_of_range 406 "number overflow"
+// carries none in its message).
+class PositionedDomParser : public nlohmann::detail::json_sax_dom_parser<json> {
+public:
+    explicit PositionedDomParser(json& result) : json_sax_dom_parser(result, false) {}
+    template <class Exception>
+    bool parse_error(std::size_t position, const std::string& /*lastToken*/, const Exception& ex) {
+        failed = true;
+        errorPosition = position;
+        errorMessage = ex.what();
+        return false;
+    }
+    bool failed = false;
+    std::size_t errorPosition = 0;
+    std::string errorMessage;
+};
+
+// "" or "line:column: invalid JSON: what".
+std::string parseJson(const std::string& text, json& out) {
+    PositionedDomParser handler(out);
+    bool ok = json::sax_parse(text, &handler);
+    if (ok && !handler.failed) return {};
+
+    // position = characters read, so the offending character is at position - 1.
+    std::size_t at = std::min(handler.errorPosition > 0 ? handler.errorPosition - 1 : 0, text.size());
+    std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+    std::size_t lineStart = at == 0 ? std::string::npos : text.rfind('\n', at - 1);
+    std::size_t column = lineStart == std::string::npos ? at + 1 : at - lineStart;
+
+    // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..." -> "syntax error ...".
+    std::string what = handler.errorMessage;
+    if (auto c = what.find("column "); c != std::string::npos) {
+        if (auto colon = what.find(": ", c); colon != std::string::npos) what = what.substr(colon + 2);
+    } else if (auto bracket = what.find("] "); bracket != std::string::npos) {
+        what = what.substr(bracket + 2);
+    }
+    return std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + what;
+}
+
+std::string readTextFile(const std::string& path, std::string& out) {
+    std::error_code ec;
+    fs::file_status st = fs::status(path, ec);
+    if (st.type() == fs::file_type::not_found) return path + ": no such file";
+    if (ec) return path + ": " + ec.message();
+    if (fs::is_directory(st)) return path + ": is a folder, not a preset file";
+
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return path + ": cannot open: " + std::strerror(errno);
+    constexpr std::size_t maxBytes = 16u << 20;  // a preset is a few KiB; refuse to slurp /dev/zero or a video
+    char buf[65536];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, file)) > 0) {
+        out.append(buf, n);
+        if (out.size() > maxBytes) {
+            std::fclose(file);
+            return path + ": larger than 16 MiB, not a preset";
+        }
+    }
+    bool readFailed = std::ferror(file) != 0;
+    int readErrno = errno;
+    std::fclose(file);
+    if (readFailed) return path + ": read error: " + std::strerror(readErrno);
+    return {};
+}
+
+std::string errnoText(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+bool writeAll(int fd, const std::string& data) {
+    const char* p = data.data();
+    std::size_t left = data.size();
+    while (left > 0) {
+        ssize_t n = ::write(fd, p, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return false;
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+nlohmann::json presetToJson(const Settings& settings, const std::string& name, const std::string& description) {
+    return json(buildPreset(settings, name, description));
+}
+
+std::string presetToText(const Settings& settings, const std::string& name, const std::string& description) {
+    std::string out;
+    writeJson(out, buildPreset(settings, name, description), 0);
+    out += "\n";
+    return out;
+}
+
+PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& base) {
+    PresetLoadResult r;
+    if (!preset.is_object()) {
+        r.errors.push_back(std::string("a preset must be a JSON object, got ") + preset.type_name());
+        return r;
+    }
+
+    // Schema first: if this is not our format, or a newer one, the fields below cannot be trusted to mean anything.
+    auto schema = preset.find("schema");
+    if (schema == preset.end())
+        r.errors.push_back(std::string("schema: missing (allowed \"") + kPresetSchema + "\")");
+    else if (!schema->is_string() || *schema != kPresetSchema)
+        r.errors.push_back("schema: " + describeJsonValue(*schema) + " is not a ShadowLab preset (allowed \"" +
+                           kPresetSchema + "\")");
+    const std::string versionAllowed = "(allowed " + std::to_string(kPresetSchemaVersion) + ")";
+    auto version = preset.find("schemaVersion");
+    if (version == preset.end()) {
+        r.errors.push_back("schemaVersion: missing " + versionAllowed);
+    } else if (!version->is_number_integer()) {
+        r.errors.push_back("schemaVersion: expected an integer, got " + describeJsonValue(*version) + " " +
+                           versionAllowed);
+    } else if (version->is_number_unsigned() ? version->get<std::uint64_t>() > kPresetSchemaVersion
+                                             : version->get<std::int64_t>() > kPresetSchemaVersion) {
+        r.errors.push_back("schemaVersion: " + describeJsonValue(*version) +
+                           " is newer than this ShadowLab understands " + versionAllowed +
+                           "; update ShadowLab to load this preset");
+    } else if (version->get<std::int64_t>() < 1) {
+        r.errors.push_back("schemaVersion: " + describeJsonValue(*version) + " is not a valid version " +
+                           versionAllowed);
+    }
+    if (!r.errors.empty()) return r;
+
+    for (const char* key : {"name", "description"}) {
+        auto it = preset.find(key);
+        if (it == preset.end()) continue;
+        if (!it->is_string()) {
+            r.errors.push_back(std::string(key) + ": expected a string, got " + describeJsonValue(*it));
+            continue;
+        }
+        (std::string_view(key) == "name" ? r.name : r.description) = it->get<std::string>();
+    }
+
+    // Everything goes into a copy; the caller sees it only if nothing at all went wrong.
+    Settings settings = base;
+    auto apply = [&](const SettingsField& field, const json& value) {
+        if (std::string error = field.set(settings, value); !error.empty()) r.errors.push_back(std::move(error));
+    };
+    auto unknown = [&](const std::string& key) {
+        std::string warning = "unknown key '" + key + "' ignored";
+        if (auto close = similarSettingsKeys(key); !close.empty()) warning += " (did you mean " + close.front() + "?)";
+        r.warnings.push_back(std::move(warning));
+    };
+    for (const auto& [key, value] : preset.items()) {
+        if (isMetaKey(key)) continue;
+        if (const SettingsField* field = findSettingsField(key); field && field->group().empty()) {
+            apply(*field, value);
+        } else if (isGroup(key)) {
+            if (!value.is_object()) {
+                r.errors.push_back(key + ": expected an object of " + key + ".* settings, got " +
+                                   describeJsonValue(value));
+                continue;
+            }
+            for (const auto& [member, memberValue] : value.items()) {
+                std::string dotted = key + "." + member;
+                if (const SettingsField* f = findSettingsField(dotted))
+                    apply(*f, memberValue);
+                else
+                    unknown(dotted);
+            }
+        } else if (field) {
+            // A dotted key at the top level: easy to write by hand, but presets nest them.
+            r.warnings.push_back("unknown key '" + key + "' ignored (write it nested: \"" +
+                                 std::string(field->group()) + "\": {\"" + std::string(field->name()) + "\": ...})");
+        } else {
+            unknown(key);
+        }
+    }
+    if (r.errors.empty()) r.errors = settings.validate();  // cross-field rules (near < far, ...)
+    if (r.errors.empty()) r.settings = settings;
+    return r;
+}
+
+PresetLoadResult loadPresetFile(const std::string& path, const Settings& base) {
+    PresetLoadResult r;
+    std::string text;
+    if (std::string error = readTextFile(path, text); !error.empty()) {
+        r.errors.push_back(std::move(error));
+        return r;
+    }
+    json preset;
+    if (std::string error = parseJson(text, preset); !error.empty()) {
+        r.errors.push_back(path + ":" + error);
+        return r;
+    }
+    r = presetFromJson(preset, base);
+    for (auto& e : r.errors) e = path + ": " + e;
+    for (auto& w : r.warnings) w = path + ": " + w;
+    return r;
+}
+
+std::string savePresetFile(const std::string& path, const Settings& settings, const std::string& name,
+                           const std::string& description) {
+    const std::string failed = "cannot save preset '" + path + "'";
+    if (path.empty()) return "cannot save preset: no file name given";
+    if (auto problems = settings.validate(); !problems.empty())
+        return failed + ": the settings are invalid: " + problems.front();
+
+    // Replace what a symlink points to, not the link itself.
+    fs::path target(path);
+    std::error_code ec;
+    if (fs::is_symlink(target, ec)) {
+        fs::path resolved = fs::canonical(target, ec);
+        if (!ec) target = resolved;
+    }
+    fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    fs::file_status folderStatus = fs::status(folder, ec);
+    if (folderStatus.type() == fs::file_type::not_found) return failed + ": folder '" + folder.string() + "' does not exist";
+    if (!fs::is_directory(folderStatus)) return failed + ": '" + folder.string() + "' is not a folder";
+    if (fs::is_directory(target, ec)) return failed + ": it is a folder";
+
+    const std::string text = presetToText(settings, name, description);
+
+    // Temporary in the same folder so rename() is atomic (same file system). O_EXCL: never reuse someone's file.
+    static std::atomic<unsigned> counter{0};
+    std::string tempPath;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        tempPath = (folder / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                              std::to_string(counter++)))
+                       .string();
+        fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno != EEXIST) break;
+    }
+    if (fd < 0) return failed + ": " + errnoText("cannot create a temporary file in '" + folder.string() + "'");
+
+    auto abandon = [&](const std::string& what) {
+        std::string message = failed + ": " + errnoText(what);
+        if (fd >= 0) ::close(fd);
+        ::unlink(tempPath.c_str());
+        return message;
+    };
+    // Keep the permissions of the file being replaced (the new file would otherwise get 0666 & ~umask).
+    struct stat old {};
+    if (::stat(target.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) return abandon("fchmod");
+    if (!writeAll(fd, text)) return abandon("write");
+    if (::fsync(fd) != 0) return abandon("fsync");
+    int closeResult = ::close(fd);
+    fd = -1;
+    if (closeResult != 0) return abandon("close");
+    if (::rename(tempPath.c_str(), target.c_str()) != 0) return abandon("rename");
+
+    // Make the rename itself durable; failing here loses nothing, so it is not an error.
+    int dirFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dirFd >= 0) {
+        ::fsync(dirFd);
+        ::close(dirFd);
+    }
+    return {};
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,45 @@
+#pragma once
+// Presets: a Settings as a schema-versioned JSON object, nested by the dotted keys of settings_fields.h:
+//   {"schema": "shadowlab-preset", "schemaVersion": 1, "name": "...", "description": "...",
+//    "shadow": {"resolution": 2048, ...}, "light": {...}, "projection": {...}, "sampler": {...},
+//    "filter": {...}, "camera": {...}, "view": "lit"}
+// Floats are written as the shortest decimal that reads back to the same float, so save -> load is exact.
+#include "settings/settings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+inline constexpr const char* kPresetSchema = "shadowlab-preset";
+inline constexpr int kPresetSchemaVersion = 1;
+
+nlohmann::json presetToJson(const Settings& settings, const std::string& name = {},
+                            const std::string& description = {});
+
+// The preset as file text: keys in Settings order (not alphabetical), [x, y, z] on one line, trailing newline.
+std::string presetToText(const Settings& settings, const std::string& name = {}, const std::string& description = {});
+
+struct PresetLoadResult {
+    std::optional<Settings> settings;   // set only when errors is empty: nothing is ever partially applied
+    std::vector<std::string> errors;    // "key: problem (allowed ...)"; from files prefixed with the path
+    std::vector<std::string> warnings;  // unknown keys (ignored)
+    std::string name, description;
+};
+
+// Keys absent from the preset keep base's values. Unknown keys are warnings; a wrong type, a value out of range,
+// a missing or newer schemaVersion, or settings that fail Settings::validate() are errors.
+PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& base = Settings{});
+
+// As presetFromJson, plus file errors (missing, unreadable, JSON syntax error at path:line:column).
+PresetLoadResult loadPresetFile(const std::string& path, const Settings& base = Settings{});
+
+// Writes atomically: a temporary file in the same folder, fsync, rename over path. Any failure leaves the previous
+// file as it was and removes the temporary. Refuses settings that fail validate(). Returns "" or an error message.
+std::string savePresetFile(const std::string& path, const Settings& settings, const std::string& name = {},
+                           const std::string& description = {});
+
+}  // namespace shadowlab
