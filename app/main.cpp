@@ -1,4 +1,5 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
+#include "cli/bench_command.h"
 #include "cli/info_command.h"
 #include "cli/render_command.h"
 #include "settings/settings_fields.h"
@@ -27,6 +28,19 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--view", render.view, "lit | shadow | light-depth")
         ->check(CLI::IsMember({"lit", "shadow", "light-depth"}));
 
+    cli::BenchOptions bench;
+    CLI::App* benchCmd = app.add_subcommand("bench", "Time the passes per shadow-map resolution and filter");
+    benchCmd->add_option("--scene", bench.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    benchCmd->add_option("--preset", bench.preset, "a preset JSON path, or the name of a shipped preset");
+    benchCmd->add_option("--set", bench.overrides, "override a setting: key=value (repeatable)");
+    benchCmd->add_option("--width", bench.width, "view width")->capture_default_str();
+    benchCmd->add_option("--height", bench.height, "view height")->capture_default_str();
+    benchCmd->add_option("--frames", bench.frames, "timed frames per row")->capture_default_str()->check(
+        CLI::Range(1, 100000));
+    benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
+    benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
+    benchCmd->add_option("--json", bench.json, "also write the table as JSON");
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -38,6 +52,7 @@ int main(int argc, char** argv) {
     }
 
     if (*renderCmd) return cli::runRender(render);
+    if (*benchCmd) return cli::runBench(bench);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

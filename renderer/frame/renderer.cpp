@@ -155,9 +155,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         settings.shadow.resolution = shadowMap_.resolution();
         settings.shadow.format = shadowMap_.format();
     }
-    const bool reallocated = !lastShadow_ || lastShadow_->shadow.resolution != shadowMap_.resolution() ||
-                             lastShadow_->shadow.format != shadowMap_.format();
-    stats.shadowMapReallocated = reallocated && mapError.empty();
+    stats.shadowMapReallocated = shadowMap_.generation() != mapGenerationRendered_;
 
     std::string lightError;
     std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, stats.renderOrigin, lightError);
@@ -187,6 +185,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         stats.alphaTestedCasters = counts.alphaTestedCasters;
         stats.shadowTriangles = counts.trianglesDrawn;
         lastShadow_ = inputs;
+        mapGenerationRendered_ = shadowMap_.generation();
     } else {
         stats.shadowPass = {false, "unchanged: light, casters and shadow settings are the same", std::nullopt};
     }

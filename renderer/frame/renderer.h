@@ -28,6 +28,9 @@ public:
     // Call after editing a Scene in place (geometry or materials), so the next frame re-uploads it.
     void sceneChanged() { gpuScene_.reset(); }
 
+    // Forces the next frame's shadow pass (benchmarks time it every frame).
+    void invalidateShadowMap() { lastShadow_.reset(); }
+
     // Waits for the newest GPU timings (benchmarks, one-shot renders); fills the stats' milliseconds.
     void waitForTimings(FrameStats& stats);
 
@@ -53,6 +56,7 @@ private:
     std::unique_ptr<GpuScene> gpuScene_;
     std::size_t gpuSceneFingerprint_ = 0;
     std::optional<ShadowInputs> lastShadow_;
+    std::uint64_t mapGenerationRendered_ = 0;  // the shadow map allocation the last shadow pass drew into
 };
 
 // Changes whenever geometry, instances or alpha-relevant material values of the scene change.

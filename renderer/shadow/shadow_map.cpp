@@ -58,6 +58,7 @@ std::string ShadowMap::ensure(int resolution, DepthFormat format, int maxTexture
     framebuffer_ = std::move(framebuffer);
     resolution_ = resolution;
     format_ = format;
+    ++generation_;
     if (!compareSampler_) compareSampler_ = gl::createSampler();
     return {};
 }

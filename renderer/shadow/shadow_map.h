@@ -5,6 +5,7 @@
 #include "gl/gl_objects.h"
 #include "settings/settings.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ public:
     void configureSamplers(const SamplerSettings& sampler, FilterKind filter);
 
     bool valid() const { return bool(texture_); }
+    std::uint64_t generation() const { return generation_; }  // bumped at each (re)allocation
     int resolution() const { return resolution_; }
     DepthFormat format() const { return format_; }
     GLuint framebuffer() const { return framebuffer_.id(); }
@@ -38,6 +40,7 @@ private:
     gl::Framebuffer framebuffer_;
     gl::Sampler compareSampler_;
     int resolution_ = 0;
+    std::uint64_t generation_ = 0;
     DepthFormat format_ = DepthFormat::D32F;
 };
 

@@ -1,0 +1,131 @@
+#include "cli/bench_command.h"
+
+#include "cli/settings_from_cli.h"
+#include "context/headless_context.h"
+#include "frame/renderer.h"
+#include "scene/scene_source.h"
+#include "shadow/shadow_map.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+namespace shadowlab::cli {
+
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// "pcf5" -> kind pcf, kernel 5; "poisson", "point", "hardware2x2" as they are.
+bool applyFilter(const std::string& name, Settings& settings) {
+    if (name.rfind("pcf", 0) == 0 && name.size() > 3) {
+        settings.filter.kind = FilterKind::Pcf;
+        settings.filter.kernel = std::atoi(name.c_str() + 3);
+        return true;
+    }
+    if (name == "point") settings.filter.kind = FilterKind::Point;
+    else if (name == "hardware2x2") settings.filter.kind = FilterKind::Hardware2x2;
+    else if (name == "poisson") settings.filter.kind = FilterKind::Poisson;
+    else return false;
+    return true;
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options) {
+    std::optional<Settings> base = settingsFromCli(options.preset, options.overrides);
+    if (!base) return 2;
+    SceneLoadResult loaded = loadScene(options.scene);
+    if (!loaded.scene) {
+        std::cerr << "error: " << loaded.error << "\n";
+        return 1;
+    }
+    const Scene& scene = *loaded.scene;
+    try {
+        HeadlessContext context;
+        Renderer renderer;
+        RenderTarget target;
+        if (std::string e = target.resize(options.width, options.height); !e.empty()) {
+            std::cerr << "error: " << e << "\n";
+            return 1;
+        }
+        const GlInfo& info = renderer.glInfo();
+        std::cout << "bench: " << scene.name << " (" << scene.triangleCount() << " triangles), view " << options.width
+                  << "x" << options.height << ", " << options.frames << " frames per row, shadow pass every frame\n"
+                  << "gl: " << info.renderer << "\n";
+        const Camera camera = cameraFor(base->camera, scene.bounds);
+        nlohmann::json rows = nlohmann::json::array();
+        std::cout << std::left << std::setw(12) << "resolution" << std::setw(13) << "filter" << std::setw(12)
+                  << "map MiB" << std::setw(14) << "shadow ms" << std::setw(14) << "main ms" << "wall ms/frame\n";
+        std::string timing;
+        for (int resolution : options.resolutions) {
+            if (resolution > info.maxTextureSize) {
+                std::cout << resolution << ": above GL_MAX_TEXTURE_SIZE " << info.maxTextureSize << ", skipped\n";
+                continue;
+            }
+            for (const std::string& filter : options.filters) {
+                Settings settings = *base;
+                settings.shadow.resolution = resolution;
+                if (!applyFilter(filter, settings) || !settings.validate().empty()) {
+                    std::cerr << "error: unknown or invalid filter '" << filter << "'\n";
+                    return 2;
+                }
+                std::vector<double> shadowMs, mainMs;
+                double wallTotal = 0.0;
+                for (int frame = -3; frame < options.frames; ++frame) {  // 3 warm-up frames
+                    renderer.invalidateShadowMap();
+                    const auto start = std::chrono::steady_clock::now();
+                    FrameStats stats = renderer.render(scene, settings, camera, target);
+                    renderer.waitForTimings(stats);
+                    const double wall =
+                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+                    if (!stats.ok) {
+                        std::cerr << "error: " << stats.error << "\n";
+                        return 1;
+                    }
+                    timing = stats.timingSource;
+                    if (frame < 0) continue;
+                    wallTotal += wall;
+                    if (stats.shadowPass.milliseconds) shadowMs.push_back(*stats.shadowPass.milliseconds);
+                    if (stats.mainPass.milliseconds) mainMs.push_back(*stats.mainPass.milliseconds);
+                }
+                const double mib = double(renderer.shadowMap().memoryBytes()) / (1024.0 * 1024.0);
+                const double shadow = median(shadowMs), main = median(mainMs);
+                const double wall = wallTotal / std::max(options.frames, 1);
+                std::cout << std::left << std::setw(12) << resolution << std::setw(13) << filter << std::setw(12)
+                          << std::fixed << std::setprecision(1) << mib << std::setw(14) << std::setprecision(3)
+                          << shadow << std::setw(14) << main << std::setprecision(2) << wall << "\n";
+                rows.push_back({{"resolution", resolution}, {"filter", filter}, {"shadowMapMiB", mib},
+                                {"shadowPassMs", shadow}, {"mainPassMs", main}, {"wallMsPerFrame", wall}});
+            }
+        }
+        std::cout << "times: median of " << options.frames << " frames; source: " << timing << "\n";
+        if (!options.json.empty()) {
+            nlohmann::json doc = {{"scene", scene.name},      {"triangles", scene.triangleCount()},
+                                  {"glRenderer", info.renderer}, {"timingSource", timing},
+                                  {"width", options.width},     {"height", options.height},
+                                  {"frames", options.frames},   {"rows", rows}};
+            std::ofstream out(options.json);
+            out << doc.dump(2) << "\n";
+            if (!out) {
+                std::cerr << "error: cannot write " << options.json << "\n";
+                return 1;
+            }
+            std::cout << "wrote " << options.json << "\n";
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace shadowlab::cli

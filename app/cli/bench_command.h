@@ -1,0 +1,23 @@
+#pragma once
+// `shadowlab bench`: what accuracy costs in time. Renders a scene repeatedly per configuration (shadow-map
+// resolution x filter), re-running the shadow pass every frame, and prints median per-pass times and map memory.
+#include <string>
+#include <vector>
+
+namespace shadowlab::cli {
+
+struct BenchOptions {
+    std::string scene = "builtin:textbook";
+    std::string preset;
+    std::vector<std::string> overrides;
+    int width = 1920;
+    int height = 1080;
+    int frames = 30;
+    std::vector<int> resolutions = {1024, 2048, 4096, 8192};
+    std::vector<std::string> filters = {"point", "hardware2x2", "pcf3", "pcf5", "pcf9", "poisson"};
+    std::string json;  // optional: the table as JSON
+};
+
+int runBench(const BenchOptions& options);
+
+}  // namespace shadowlab::cli
