@@ -41,7 +41,7 @@ int runRender(const RenderOptions& options) {
         Renderer renderer;
         RenderTarget target;
         if (std::string error = target.resize(options.width, options.height); !error.empty()) return fail(error);
-        const Camera camera = cameraFor(settings->camera, scene.bounds);
+        const Camera camera = cameraFor(settings->camera, scene);
         FrameStats stats = renderer.render(scene, *settings, camera, target);
         if (!stats.ok) return fail(stats.error);
         renderer.waitForTimings(stats);

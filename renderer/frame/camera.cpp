@@ -23,15 +23,16 @@ glm::dmat4 Camera::projection(double aspect) const {
     return glm::perspective(glm::radians(fovYDeg), std::max(aspect, 1e-6), nearPlane, farPlane);
 }
 
-Camera cameraFor(const CameraSettings& settings, const Bounds& bounds) {
+Camera cameraFor(const CameraSettings& settings, const Scene& scene) {
+    const Bounds& bounds = scene.bounds;
     Camera camera;
     camera.fovYDeg = settings.fovYDeg;
     const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
     const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
     if (settings.autoFrame) {
-        // A three-quarter view from above and across the default light (shadows fall to the side, not behind the
-        // objects), far enough back that the bounding sphere fits the vertical field of view.
-        const glm::dvec3 viewDirection = glm::normalize(glm::dvec3(0.5, 0.6, -0.65));
+        // A three-quarter view from above (by default across the default light, so shadows fall to the side, not
+        // behind the objects), far enough back that the bounding sphere fits the vertical field of view.
+        const glm::dvec3 viewDirection = glm::normalize(glm::dvec3(scene.viewDirection));
         const double distance = radius / std::sin(glm::radians(settings.fovYDeg) * 0.5) * 0.8;
         camera.target = center;
         camera.position = center + viewDirection * distance;

@@ -20,8 +20,8 @@ struct Camera {
     glm::dmat4 projection(double aspect) const;
 };
 
-// The camera the settings ask for: their position/target, or one framing the scene's bounds (camera.autoFrame).
-// Near/far always follow the scene's size so depth precision suits it.
-Camera cameraFor(const CameraSettings& settings, const Bounds& bounds);
+// The camera the settings ask for: their position/target, or one framing the scene's bounds from the scene's
+// preferred side (camera.autoFrame). Near/far always follow the scene's size so depth precision suits it.
+Camera cameraFor(const CameraSettings& settings, const Scene& scene);
 
 }  // namespace shadowlab

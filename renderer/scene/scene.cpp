@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
@@ -22,12 +23,52 @@ void Bounds::extend(const glm::vec3& p) {
     max = glm::max(max, p);
 }
 
+namespace {
+
+// Projected front-facing area of every triangle toward each candidate direction (double-sided faces count from
+// both sides); the default direction wins ties so symmetric scenes keep the familiar view.
+glm::vec3 chooseViewDirection(const Scene& scene) {
+    constexpr int kCandidates = 8;
+    glm::vec3 candidates[kCandidates];
+    const glm::vec3 d = Scene::kDefaultViewDirection;
+    for (int i = 0; i < kCandidates; ++i) {
+        const float angle = float(i) * 6.2831853f / kCandidates;  // rotate the default view about +y
+        const float c = std::cos(angle), s = std::sin(angle);
+        candidates[i] = glm::normalize(glm::vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z));
+    }
+    double score[kCandidates] = {};
+    for (const Instance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes[std::size_t(inst.mesh)];
+        const Material* material = scene.materialOf(mesh);
+        const bool twoSided = material && material->doubleSided;
+        const float winding = inst.mirrored() ? -1.0f : 1.0f;
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const glm::vec3 a(inst.transform * glm::vec4(mesh.positions[mesh.indices[t]], 1.0f));
+            const glm::vec3 b(inst.transform * glm::vec4(mesh.positions[mesh.indices[t + 1]], 1.0f));
+            const glm::vec3 c(inst.transform * glm::vec4(mesh.positions[mesh.indices[t + 2]], 1.0f));
+            const glm::vec3 areaNormal = winding * 0.5f * glm::cross(b - a, c - a);
+            if (!std::isfinite(areaNormal.x) || !std::isfinite(areaNormal.y) || !std::isfinite(areaNormal.z)) continue;
+            for (int i = 0; i < kCandidates; ++i) {
+                const float facing = glm::dot(areaNormal, candidates[i]);
+                score[i] += double(twoSided ? std::abs(facing) : std::max(facing, 0.0f));
+            }
+        }
+    }
+    int best = 0;
+    for (int i = 1; i < kCandidates; ++i)
+        if (score[i] > score[best] * 1.02) best = i;
+    return candidates[best];
+}
+
+}  // namespace
+
 void Scene::computeBounds() {
     bounds = Bounds{};
     for (const Instance& inst : instances) {
         const Mesh& mesh = meshes[inst.mesh];
         for (const glm::vec3& p : mesh.positions) bounds.extend(glm::vec3(inst.transform * glm::vec4(p, 1.0f)));
     }
+    viewDirection = chooseViewDirection(*this);
 }
 
 std::size_t Scene::triangleCount() const {

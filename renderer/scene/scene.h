@@ -84,7 +84,13 @@ struct Scene {
     std::vector<SceneLight> lights;
     std::vector<std::string> warnings;  // what was repaired or ignored while loading
 
-    // World-space bounds over every instance's finite vertices (cached by computeBounds()).
+    // Unit direction from the scene's centre toward an auto-framed camera: of eight three-quarter views from above,
+    // the one that sees the most front-facing surface (a single-sided board is shown from its front). Set by
+    // computeBounds().
+    glm::vec3 viewDirection = kDefaultViewDirection;
+    static constexpr glm::vec3 kDefaultViewDirection{0.4921f, 0.5905f, -0.6397f};
+
+    // World-space bounds over every instance's finite vertices, and viewDirection (cached by computeBounds()).
     Bounds bounds;
     void computeBounds();
 

@@ -19,7 +19,7 @@ struct ShadowMapSettings {
     int resolution = 2048;              // square map, texels per side
     DepthFormat format = DepthFormat::D32F;
     float depthBias = 2.0f;             // D3D DepthBias: units of the format's smallest depth step
-    float slopeScaledDepthBias = 1.5f;  // D3D SlopeScaledDepthBias: times the polygon's max depth slope
+    float slopeScaledDepthBias = 2.0f;  // D3D SlopeScaledDepthBias: times the polygon's max depth slope
     float depthBiasClamp = 0.0f;        // D3D DepthBiasClamp: max |bias| in depth units; 0 = no clamp
     float normalOffset = 0.5f;          // lookup moved along the normal, in shadow-map texels (world size)
     CullMode cullMode = CullMode::Back;

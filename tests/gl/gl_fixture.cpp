@@ -56,7 +56,7 @@ View renderView(Renderer& renderer, const Scene& scene, const Settings& settings
     View view;
     view.width = width;
     view.height = height;
-    view.stats = renderer.render(scene, settings, cameraFor(settings.camera, scene.bounds), target);
+    view.stats = renderer.render(scene, settings, cameraFor(settings.camera, scene), target);
     EXPECT_TRUE(view.stats.ok) << view.stats.error;
     view.rgba = target.readColor();
     return view;

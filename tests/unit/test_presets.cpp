@@ -416,10 +416,10 @@ TEST(Presets, ShippedPresetsShowWhatTheirNamesSay) {
     EXPECT_EQ(acne.shadow.cullMode, CullMode::None);
     EXPECT_EQ(acne.filter.kind, FilterKind::Point);
 
-    // About half a world unit of constant bias over a 40-unit depth range (D32F step 2^-24 for depths in [0.5, 1)).
+    // Over a world unit of constant bias over a 29-unit depth range (D32F step 2^-24 for depths in [0.5, 1)).
     Settings pp = load("peter-panning");
-    const double worldBias = pp.shadow.depthBias * std::ldexp(1.0, -24) * 40.0;
-    EXPECT_NEAR(worldBias, 0.5, 0.01);
+    const double worldBias = pp.shadow.depthBias * std::ldexp(1.0, -24) * 29.0;
+    EXPECT_GT(worldBias, 1.0);
     EXPECT_EQ(pp.shadow.cullMode, CullMode::Front);
     EXPECT_GE(pp.shadow.normalOffset, 4.0f);
 

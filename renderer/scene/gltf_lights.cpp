@@ -1,0 +1,54 @@
+#include "scene/gltf_lights.h"
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace shadowlab::gltf {
+
+std::optional<SceneLight> importLight(const tg::Model& model, int nodeIndex, const glm::dmat4& world,
+                                      const Warn& warn) {
+    const tg::Node& node = model.nodes[std::size_t(nodeIndex)];
+    const auto it = node.extensions.find("KHR_lights_punctual");
+    if (it == node.extensions.end()) return std::nullopt;
+    const tg::Value& ext = it->second;
+    const int li = ext.IsObject() && ext.Has("light") && ext.Get("light").IsNumber() ? ext.Get("light").GetNumberAsInt() : -1;
+    if (li < 0 || li >= int(model.lights.size())) {
+        warn("node " + str(nodeIndex) + ": KHR_lights_punctual refers to a light that does not exist; ignored");
+        return std::nullopt;
+    }
+    const tg::Light& gl = model.lights[std::size_t(li)];
+    SceneLight light;
+    light.name = gl.name.empty() ? "light " + str(li) : gl.name;
+    if (gl.type == "directional")
+        light.type = SceneLightType::Directional;
+    else if (gl.type == "spot")
+        light.type = SceneLightType::Spot;
+    else if (gl.type == "point")
+        light.type = SceneLightType::Point;
+    else {
+        warn("light '" + light.name + "': unknown type '" + gl.type + "'; ignored");
+        return std::nullopt;
+    }
+    light.position = glm::vec3(world * glm::dvec4(0, 0, 0, 1));
+    const glm::dvec3 dir = glm::dmat3(world) * glm::dvec3(0, 0, -1);  // the light shines along its node's -Z
+    const double len = glm::length(dir);
+    if (len > 1e-12 && std::isfinite(len))
+        light.direction = glm::vec3(dir / len);
+    else
+        warn("light '" + light.name + "': its node's transform has no -Z direction; (0,0,-1) used");
+    if (light.type == SceneLightType::Spot) {
+        const double outer = gl.spot.outerConeAngle;
+        light.outerConeRad = float(std::isfinite(outer) ? std::clamp(outer, 1e-4, 1.5707963267948966) : 0.7853981634);
+    }
+    if (std::isfinite(gl.range) && gl.range > 0.0) light.range = float(gl.range);
+    if (gl.color.size() == 3 && std::isfinite(gl.color[0] + gl.color[1] + gl.color[2]))
+        light.color = glm::vec3(float(gl.color[0]), float(gl.color[1]), float(gl.color[2]));
+    if (std::isfinite(gl.intensity) && gl.intensity >= 0.0) light.intensity = float(gl.intensity);
+    return light;
+}
+
+}  // namespace shadowlab::gltf

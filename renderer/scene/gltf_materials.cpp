@@ -1,0 +1,137 @@
+#include "scene/gltf_materials.h"
+
+#include <glm/common.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace shadowlab::gltf {
+namespace {
+
+class MaterialImporter {
+public:
+    MaterialImporter(const tg::Model& model, const EncodedImages& images, std::vector<Image>& sceneImages,
+                     const Warn& warn)
+        : model_(model), images_(images), sceneImages_(sceneImages), warn_(warn) {
+        imageCache_.assign(model.images.size(), kNotImported);
+    }
+
+    Material convert(int index);
+
+private:
+    static constexpr int kNotImported = -2;
+
+    void applyTextureTransform(const tg::TextureInfo& info, Material& m, const std::string& where);
+    int importImage(int index, const std::string& where);
+
+    const tg::Model& model_;
+    const EncodedImages& images_;
+    std::vector<Image>& sceneImages_;
+    const Warn& warn_;
+    std::vector<int> imageCache_;  // glTF image -> Scene image, -1 = unusable
+};
+
+Material MaterialImporter::convert(int index) {
+    const tg::Material& gm = model_.materials[std::size_t(index)];
+    Material m;
+    m.name = gm.name.empty() ? "material " + str(index) : gm.name;
+    const std::string where = "material '" + m.name + "'";
+    if (gm.alphaMode == "MASK")
+        m.alphaMode = AlphaMode::Mask;
+    else if (gm.alphaMode == "BLEND")
+        m.alphaMode = AlphaMode::Blend;
+    else if (!gm.alphaMode.empty() && gm.alphaMode != "OPAQUE")
+        warn_(where + ": unknown alphaMode '" + gm.alphaMode + "', treated as OPAQUE");
+    if (std::isfinite(gm.alphaCutoff) && gm.alphaCutoff >= 0.0)
+        m.alphaCutoff = float(gm.alphaCutoff);
+    else
+        warn_(where + ": invalid alphaCutoff, 0.5 used");
+    const std::vector<double>& f = gm.pbrMetallicRoughness.baseColorFactor;
+    if (f.size() == 4 && std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); }))
+        m.baseColorFactor = glm::clamp(glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3])), 0.0f, 1.0f);
+    else if (!f.empty())
+        warn_(where + ": invalid baseColorFactor, white used");
+    m.doubleSided = gm.doubleSided;
+
+    const tg::TextureInfo& info = gm.pbrMetallicRoughness.baseColorTexture;
+    if (info.index < 0) return m;
+    m.baseColorTexCoord = info.texCoord;
+    if (info.index >= int(model_.textures.size())) {
+        warn_(where + ": base colour texture " + str(info.index) + " does not exist; ignored");
+        return m;
+    }
+    const tg::Texture& tex = model_.textures[std::size_t(info.index)];
+    if (tex.source >= 0 && tex.source < int(model_.images.size()))
+        m.baseColorImage = importImage(tex.source, where);
+    else
+        warn_(where + ": base colour texture " + str(info.index) +
+             " has no usable image source (e.g. only KHR_texture_basisu / EXT_texture_webp); alpha from the factor only");
+    if (tex.sampler >= 0 && tex.sampler < int(model_.samplers.size())) {
+        const tg::Sampler& s = model_.samplers[std::size_t(tex.sampler)];
+        // One flag for both axes: clamp only when both clamp (MIRRORED_REPEAT counts as repeat).
+        m.wrapRepeat = !(s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE && s.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
+    }
+    applyTextureTransform(info, m, where);
+    if (m.baseColorImage >= 0 && m.baseColorTexCoord != 0)
+        warn_(where + ": base colour texture uses TEXCOORD_" + str(m.baseColorTexCoord) +
+             "; only TEXCOORD_0 is loaded and used instead");
+    return m;
+}
+
+// KHR_texture_transform as uv' = T * R * S * (uv, 1). The rotation sign follows the sample model, the sample viewer,
+// three.js and Babylon (KhronosGroup/glTF#1563): the GLSL listing in the extension's README has it the other way.
+void MaterialImporter::applyTextureTransform(const tg::TextureInfo& info, Material& m, const std::string& where) {
+    const auto it = info.extensions.find("KHR_texture_transform");
+    if (it == info.extensions.end() || !it->second.IsObject()) return;
+    const tg::Value& t = it->second;
+    auto vec2 = [&](const char* key, glm::dvec2 fallback) {
+        if (!t.Has(key)) return fallback;
+        const tg::Value& v = t.Get(key);
+        if (v.IsArray() && v.ArrayLen() == 2 && v.Get(0).IsNumber() && v.Get(1).IsNumber())
+            return glm::dvec2(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
+        return glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+    };
+    const glm::dvec2 offset = vec2("offset", glm::dvec2(0.0)), scale = vec2("scale", glm::dvec2(1.0));
+    double rotation = 0.0;
+    if (t.Has("rotation")) rotation = t.Get("rotation").IsNumber() ? t.Get("rotation").GetNumberAsDouble() : NAN;
+    if (t.Has("texCoord") && t.Get("texCoord").IsNumber()) m.baseColorTexCoord = t.Get("texCoord").GetNumberAsInt();
+    if (!std::isfinite(offset.x + offset.y + scale.x + scale.y + rotation)) {
+        warn_(where + ": invalid KHR_texture_transform; ignored");
+        return;
+    }
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    const glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+    const glm::dmat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
+    const glm::dmat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+    m.uvTransform = glm::mat3(translate * rotate * scaling);
+}
+
+int MaterialImporter::importImage(int index, const std::string& where) {
+    int& cached = imageCache_[std::size_t(index)];
+    if (cached != kNotImported) return cached;
+    const tg::Image& src = model_.images[std::size_t(index)];
+    Image image;
+    std::string why;
+    if (decodeImage(images_, index, image, why)) {
+        cached = int(sceneImages_.size());
+        sceneImages_.push_back(std::move(image));
+        return cached;
+    }
+    const std::string name = !src.uri.empty() ? " '" + src.uri + "'" : !src.name.empty() ? " '" + src.name + "'" : "";
+    warn_(where + ": image " + str(index) + name + " " + why + "; texture ignored (alpha from the factor only)");
+    return cached = -1;
+}
+
+}  // namespace
+
+void importMaterials(const tg::Model& model, const EncodedImages& images, Scene& scene, const Warn& warn) {
+    MaterialImporter importer(model, images, scene.images, warn);
+    for (std::size_t i = 0; i < model.materials.size(); ++i) scene.materials.push_back(importer.convert(int(i)));
+}
+
+}  // namespace shadowlab::gltf
