@@ -104,19 +104,18 @@ std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds
 
     if (light.type == LightType::Directional) {
         ls.perspective = false;
+        // The eye sits on the scene's bounding sphere, on the side the light comes from; near/far are distances
+        // from it along the light. Auto-fit takes [0, diameter], so manual values start from the same place.
+        const double r = radius + fitMargin(radius);
+        ls.position = center - ls.direction * r;
         double halfSize = 0.5 * double(proj.orthoSize);
         if (proj.autoFit) {
-            const double r = radius + fitMargin(radius);
             halfSize = r;
             ls.nearPlane = 0.0;
             ls.farPlane = 2.0 * r;
-            ls.position = center - ls.direction * r;
         } else {
             ls.nearPlane = proj.nearPlane;
             ls.farPlane = proj.farPlane;
-            // The volume is centred on the scene and its eye sits `far/2` back along the light, so near/far are
-            // distances along the light from that eye.
-            ls.position = center - ls.direction * (0.5 * (ls.nearPlane + ls.farPlane));
         }
         ls.orthoSize = 2.0 * halfSize;
         ls.texelWorldSize = ls.orthoSize / ls.resolution;

@@ -1,0 +1,153 @@
+// Numerically hard cases from ../shared/HARD_CASES.md that the core renderer must already survive.
+#include "gl_fixture.h"
+
+#include "scene/builtin_scenes.h"
+
+#include <glm/ext/matrix_transform.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace shadowlab::test {
+namespace {
+
+class HardCases : public GlTest {};
+
+long darkScenePixels(const View& view) { return view.countScenePixels([](int red) { return red < 128; }); }
+
+TEST_F(HardCases, EveryDepthFormatRendersTheSameShadows) {
+    // Case 4: D16 / D24 / D32F. On a 20-unit scene every format resolves the cube's shadow.
+    Renderer renderer;
+    const Scene scene = loadBuiltin("textbook");
+    for (DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
+        Settings s = topDownShadowView(loadShippedPreset("default"));
+        s.shadow.format = format;
+        s.shadow.depthBias = format == DepthFormat::D16 ? 4.0f : 2.0f;
+        const View view = renderView(renderer, scene, s, 320, 320);
+        EXPECT_EQ(view.stats.shadowMapFormat, format);
+        EXPECT_LT(view.meanRedAround({-1.4, 0.0, -1.3}, 2), 20.0) << depthFormatName(format);
+        EXPECT_GT(view.meanRedAround({5.0, 0.0, 5.0}, 2), 235.0) << depthFormatName(format);
+    }
+}
+
+// A horizontal quad (y = height, x and z in [-half, half]), facing up.
+Mesh horizontalQuad(const std::string& name, float height, float half, int material) {
+    Mesh m;
+    m.name = name;
+    m.positions = {{-half, height, -half}, {-half, height, half}, {half, height, half}, {half, height, -half}};
+    m.normals.assign(4, glm::vec3(0, 1, 0));
+    m.uvs = {{0, 0}, {0, 1}, {1, 1}, {1, 0}};
+    m.indices = {0, 1, 2, 0, 2, 3};
+    m.material = material;
+    return m;
+}
+
+TEST_F(HardCases, SlopeBiasClampKeepsTheShadowAttachedAtGrazingLight) {
+    // Case 2: a caster at grazing light gets a huge slope-scaled bias that can push it behind its receiver.
+    // DepthBiasClamp (glPolygonOffsetClamp) caps it.
+    Renderer renderer;
+    if (!renderer.glInfo().polygonOffsetClamp) GTEST_SKIP() << "no glPolygonOffsetClamp on this GL";
+    Scene scene;
+    scene.name = "floating-card";
+    Material twoSided;
+    twoSided.doubleSided = true;
+    scene.materials.push_back(twoSided);
+    scene.meshes.push_back(horizontalQuad("floor", 0.0f, 10.0f, -1));
+    scene.meshes.push_back(horizontalQuad("card", 1.0f, 1.0f, 0));  // a single-sided card, drawn two-sided
+    scene.instances = {{0, glm::mat4(1.0f)}, {1, glm::mat4(1.0f)}};
+    scene.computeBounds();
+
+    Settings s = topDownShadowView(loadShippedPreset("default"));
+    s.light.direction = glm::vec3(-1.0f, -0.2f, 0.0f);  // 78.7 degrees from vertical: the card's shadow is 5 units off
+    s.shadow.slopeScaledDepthBias = 100.0f;             // ~7 world units on the card: more than its 5.1 to the floor
+    s.shadow.depthBias = 0.0f;
+    s.shadow.normalOffset = 0.0f;
+    s.shadow.depthBiasClamp = 0.0f;
+    const View unclamped = renderView(renderer, scene, s, 400, 400);
+    s.shadow.depthBiasClamp = 0.01f;  // 0.28 world units over the 28-unit fitted depth range: ends the floor acne
+    const View clamped = renderView(renderer, scene, s, 400, 400);
+    saveView(unclamped, "grazing-card-unclamped");
+    saveView(clamped, "grazing-card-clamped");
+    const glm::dvec3 shadowCentre(-5.0, 0.0, 0.0);
+    EXPECT_LT(clamped.meanRedAround(shadowCentre, 2), 20.0) << "the clamped bias keeps the card's shadow";
+    EXPECT_GT(unclamped.meanRedAround(shadowCentre, 2), 235.0) << "without a clamp the shadow vanishes (case 2)";
+    EXPECT_GT(clamped.meanRedAround({5.0, 0.0, 5.0}, 3), 235.0) << "the clamp still leaves the floor enough bias";
+}
+
+TEST_F(HardCases, DepthClampKeepsCastersBeforeTheNearPlane) {
+    // Case 12 (pancaking): a near plane fitted tightly to the receivers cuts the cube's top face off. With
+    // GL_DEPTH_CLAMP the cube still casts; without it its shadow on the floor beside it is gone.
+    Renderer renderer;
+    const Scene scene = loadBuiltin("textbook");
+    Settings s = topDownShadowView(loadShippedPreset("default"));
+    const View fitted = renderView(renderer, scene, s, 320, 320);
+    const double eyeToCentre = 0.5 * fitted.stats.light.farPlane;  // the auto-fit eye sits one radius before the centre
+    s.projection.autoFit = false;
+    s.projection.orthoSize = float(fitted.stats.light.orthoSize);
+    // The cube's top face lies within 1 unit of the scene centre along the light; the floor beside it, 2.3 beyond.
+    s.projection.nearPlane = float(eyeToCentre + 0.5);
+    s.projection.farPlane = float(2.0 * eyeToCentre);
+    s.projection.depthClamp = true;
+    const View clamped = renderView(renderer, scene, s, 320, 320);
+    s.projection.depthClamp = false;
+    const View unclamped = renderView(renderer, scene, s, 320, 320);
+    EXPECT_LT(clamped.meanRedAround({-1.4, 0.0, -1.3}, 2), 20.0) << "depth clamp: the cube still casts";
+    EXPECT_GT(unclamped.meanRedAround({-1.4, 0.0, -1.3}, 2), 235.0) << "without it, the clipped top casts nothing";
+}
+
+TEST_F(HardCases, NonFiniteVerticesNeitherBreakTheFitNorTheMap) {
+    // Case 16: a mesh with an infinite vertex beside a normal scene. Fitting ignores it; the frame stays valid.
+    Renderer renderer;
+    Scene scene = loadBuiltin("textbook");
+    Mesh broken;
+    broken.name = "broken";
+    const float inf = std::numeric_limits<float>::infinity();
+    broken.positions = {{0, 5, 0}, {inf, 5, 0}, {0, 5, 1}};
+    broken.normals = {{0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
+    broken.indices = {0, 1, 2};
+    scene.meshes.push_back(broken);
+    scene.instances.push_back({int(scene.meshes.size() - 1), glm::mat4(1.0f)});
+    const Bounds before = loadBuiltin("textbook").bounds;
+    scene.computeBounds();
+    EXPECT_EQ(scene.bounds.min, glm::min(before.min, glm::vec3(0, 5, 0)));
+    EXPECT_TRUE(std::isfinite(scene.bounds.radius()));
+    const View view = renderView(renderer, scene, topDownShadowView(loadShippedPreset("default")), 200, 200);
+    EXPECT_TRUE(allFinite(view.stats.light.viewProjection()));
+    EXPECT_LT(view.meanRedAround({-1.4, 0.0, -1.3}, 1), 20.0);
+}
+
+TEST_F(HardCases, LargeWorldOffsetGivesTheSamePicture) {
+    // Case 3: the whole scene moved 1e5 on x and z. Matrices are built relative to the scene's centre in double,
+    // so the shadow mask must not change beyond a sliver of edge pixels.
+    Renderer renderer;
+    const Scene scene = loadBuiltin("textbook");
+    Scene moved = scene;
+    const glm::vec3 offset(1e5f, 0.0f, 1e5f);
+    for (Instance& instance : moved.instances) instance.transform = glm::translate(glm::mat4(1.0f), offset) * instance.transform;
+    moved.computeBounds();
+    Settings s = loadShippedPreset("default");
+    s.view = ViewMode::Shadow;
+    const View a = renderView(renderer, scene, s, 320, 240);
+    const View b = renderView(renderer, moved, s, 320, 240);
+    long differ = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); i += 4) differ += std::abs(int(a.rgba[i]) - int(b.rgba[i])) > 64;
+    EXPECT_LT(differ, long(a.rgba.size() / 4 / 200)) << "more than 0.5% of pixels changed";
+    EXPECT_GT(darkScenePixels(b), 500);
+}
+
+TEST_F(HardCases, SceneLightFromGltfIsUsedWhenAsked) {
+    Renderer renderer;
+    Scene scene = loadBuiltin("textbook");
+    SceneLight sun;
+    sun.type = SceneLightType::Directional;
+    sun.direction = glm::vec3(0.4f, -1.0f, 0.3f);  // the mirror image of the default: shadows fall to +x, +z
+    scene.lights.push_back(sun);
+    Settings s = topDownShadowView(loadShippedPreset("default"));
+    s.light.useSceneLight = true;
+    const View view = renderView(renderer, scene, s, 320, 320);
+    EXPECT_LT(view.meanRedAround({1.4, 0.0, 1.3}, 2), 20.0) << "shadow on the +x,+z side";
+    EXPECT_GT(view.meanRedAround({-1.4, 0.0, -1.3}, 2), 235.0) << "the default light's shadow side is lit";
+}
+
+}  // namespace
+}  // namespace shadowlab::test
