@@ -31,7 +31,8 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
     out << "main pass: " << milliseconds(stats.mainPass) << "; variants:";
     for (const std::string& v : stats.mainVariants) out << " [" << v << "]";
     out << "\n";
-    out << std::setprecision(4) << "light: " << (stats.light.perspective ? "spot" : "directional") << ", near "
+    out << std::setprecision(4) << "light: " << stats.lightSource << "; "
+        << (stats.light.perspective ? "spot" : "directional") << ", near "
         << stats.light.nearPlane << ", far " << stats.light.farPlane << ", texel " << stats.bias.texelWorldSize
         << " world units\n";
     out << "bias: DepthBias = " << stats.bias.constantDepth << " depth (" << stats.bias.constantWorld

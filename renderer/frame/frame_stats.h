@@ -47,6 +47,7 @@ struct FrameStats {
     std::vector<std::string> mainVariants;  // the #define sets compiled into the programs this frame used
 
     LightSpace light;
+    std::string lightSource;  // which light was used, in words
     BiasAmount bias;
     glm::dvec3 renderOrigin{0.0};
     glm::dmat4 cameraViewProjection{1.0};  // render-origin-relative

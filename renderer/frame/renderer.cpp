@@ -132,6 +132,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     // Settings with the scene's light applied (light.useSceneLight); normal offset needs no separate copy.
     Settings settings = requested;
     settings.light = effectiveLight(requested, scene);
+    stats.lightSource = describeLightSource(requested, scene);
 
     const std::size_t fingerprint = sceneFingerprint(scene);
     if (!gpuScene_ || &gpuScene_->scene() != &scene || gpuSceneFingerprint_ != fingerprint) {

@@ -69,6 +69,26 @@ LightSettings effectiveLight(const Settings& settings, const Scene& scene) {
     return light;
 }
 
+std::string describeLightSource(const Settings& settings, const Scene& scene) {
+    int usable = 0;
+    const SceneLight* first = nullptr;
+    for (const SceneLight& sl : scene.lights) {
+        if (sl.type == SceneLightType::Point) continue;
+        if (!first) first = &sl;
+        ++usable;
+    }
+    const bool hasPointLights = usable < int(scene.lights.size());
+    const std::string pointNote = hasPointLights ? "; its point lights are not supported (they need cube maps)" : "";
+    if (settings.light.useSceneLight && first)
+        return "the scene's light '" + (first->name.empty() ? std::string("unnamed") : first->name) + "'" + pointNote;
+    if (settings.light.useSceneLight) return "the settings' light (the scene has no directional or spot light" +
+                                             pointNote + ")";
+    if (usable > 0)
+        return "the settings' light (the scene has " + std::to_string(usable) +
+               " glTF light(s): light.useSceneLight=true uses the first)";
+    return "the settings' light";
+}
+
 bool allFinite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)

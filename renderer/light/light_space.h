@@ -44,6 +44,9 @@ std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds
 // The settings' light, or the scene's first glTF light when light.useSceneLight is set and the scene has one.
 LightSettings effectiveLight(const Settings& settings, const Scene& scene);
 
+// Which light a frame uses, in words, e.g. "the scene's light 'Sun'" (for reports and the editor).
+std::string describeLightSource(const Settings& settings, const Scene& scene);
+
 bool allFinite(const glm::dmat4& m);
 bool allFinite(const glm::mat4& m);
 

@@ -1,7 +1,6 @@
 #include "shading/main_pass.h"
 
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/trigonometric.hpp>
 
 #include <cmath>
 
@@ -12,15 +11,39 @@ namespace {
 constexpr GLuint kShadowMapUnit = 0;
 constexpr GLuint kBaseColorUnit = 1;
 
-GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+// Uniforms that are the same for every draw of a frame: set once per program per frame.
+void setFrameUniforms(const MainUniforms& u, const MainPassInput& in, const MainVariantKey& key) {
+    const Settings& settings = *in.settings;
+    const LightSpace& light = *in.light;
+    const float texel = 1.0f / float(in.shadowMap->resolution());
+    glUniformMatrix4fv(u.viewProjection, 1, GL_FALSE, glm::value_ptr(glm::mat4(in.viewProjection)));
+    glUniformMatrix4fv(u.lightViewProjection, 1, GL_FALSE, glm::value_ptr(glm::mat4(light.viewProjection())));
+    glUniform1i(u.shadowMap, GLint(kShadowMapUnit));
+    glUniform3fv(u.lightDirection, 1, glm::value_ptr(glm::vec3(light.direction)));
+    glUniform3fv(u.lightPosition, 1, glm::value_ptr(glm::vec3(light.position)));
+    glUniform3fv(u.cameraPosition, 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
+    glUniform2f(u.shadowTexel, texel, texel);
+    glUniform1f(u.lightIntensity, settings.light.intensity);
+    glUniform1f(u.ambient, settings.light.ambient);
+    glUniform2f(u.lightDepthRange, float(light.nearPlane), float(light.farPlane));
+    if (key.normalOffset) {
+        glUniform1f(u.normalOffsetTexels, settings.shadow.normalOffset);
+        // Spot: the texel's world size grows with distance, so the shader multiplies by its depth.
+        const double texelWorld = light.perspective ? 2.0 * light.tanHalfFov / light.resolution : light.texelWorldSize;
+        glUniform1f(u.texelWorldSize, float(texelWorld));
+    }
+    if (key.perspectiveLight) glUniform1f(u.spotCosHalfAngle, float(std::cos(std::atan(light.tanHalfFov))));
+    if (key.filter == FilterKind::Poisson) glUniform1f(u.poissonRadiusTexels, settings.filter.poissonRadius);
+    if (key.alphaTexture) glUniform1i(u.baseColorTexture, GLint(kBaseColorUnit));
+}
 
 }  // namespace
 
 std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& target) {
     const Settings& settings = *in.settings;
-    const LightSpace& light = *in.light;
     const Scene& scene = in.scene->scene();
     std::set<std::string> used;
+    std::set<GLuint> prepared;  // programs whose per-frame uniforms are set
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
     glViewport(0, 0, target.width(), target.height());
@@ -35,14 +58,11 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     glBindTextureUnit(kShadowMapUnit, in.shadowMap->texture());
     glBindSampler(kShadowMapUnit, in.shadowMap->compareSampler());
 
-    const glm::mat4 viewProjection(in.viewProjection);
-    const glm::mat4 lightViewProjection(light.viewProjection());
-    const float texel = 1.0f / float(in.shadowMap->resolution());
     MainVariantKey base;
     base.filter = settings.filter.kind;
     base.kernel = settings.filter.kernel;
     base.view = settings.view;
-    base.perspectiveLight = light.perspective;
+    base.perspectiveLight = in.light->perspective;
     base.normalOffset = settings.shadow.normalOffset > 0.0f;
 
     in.scene->bind();
@@ -52,43 +72,22 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         key.alphaMask = material && material->alphaMode == AlphaMode::Mask;
         const GLuint alphaTexture = key.alphaMask ? in.scene->materialTexture(draw.material) : 0;
         key.alphaTexture = alphaTexture != 0;
-        const GLuint program = variants_.program(key);
+        const MainProgram& variant = variants_.program(key);
+        const MainUniforms& u = variant.uniforms;
         used.insert(key.name());
-        glUseProgram(program);
+        glUseProgram(variant.program.id());
+        if (prepared.insert(variant.program.id()).second) setFrameUniforms(u, in, key);
 
-        glUniformMatrix4fv(uniform(program, "uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-        glUniformMatrix4fv(uniform(program, "uModel"), 1, GL_FALSE, glm::value_ptr(draw.model));
-        glUniformMatrix3fv(uniform(program, "uNormalMatrix"), 1, GL_FALSE, glm::value_ptr(draw.normalMatrix));
+        glUniformMatrix4fv(u.model, 1, GL_FALSE, glm::value_ptr(draw.model));
+        glUniformMatrix3fv(u.normalMatrix, 1, GL_FALSE, glm::value_ptr(draw.normalMatrix));
         const glm::mat3 uvTransform = material ? material->uvTransform : glm::mat3(1.0f);
-        glUniformMatrix3fv(uniform(program, "uUvTransform"), 1, GL_FALSE, glm::value_ptr(uvTransform));
-        glUniformMatrix4fv(uniform(program, "uLightViewProjection"), 1, GL_FALSE, glm::value_ptr(lightViewProjection));
-        glUniform1i(uniform(program, "uShadowMap"), GLint(kShadowMapUnit));
-        glUniform3fv(uniform(program, "uLightDirection"), 1, glm::value_ptr(glm::vec3(light.direction)));
-        glUniform3fv(uniform(program, "uLightPosition"), 1, glm::value_ptr(glm::vec3(light.position)));
-        glUniform3fv(uniform(program, "uCameraPosition"), 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
-        glUniform2f(uniform(program, "uShadowTexel"), texel, texel);
+        glUniformMatrix3fv(u.uvTransform, 1, GL_FALSE, glm::value_ptr(uvTransform));
         const glm::vec3 baseColor = material ? glm::vec3(material->baseColorFactor) : glm::vec3(0.8f);
-        glUniform3fv(uniform(program, "uBaseColor"), 1, glm::value_ptr(baseColor));
-        glUniform1f(uniform(program, "uLightIntensity"), settings.light.intensity);
-        glUniform1f(uniform(program, "uAmbient"), settings.light.ambient);
-        glUniform2f(uniform(program, "uLightDepthRange"), float(light.nearPlane), float(light.farPlane));
-        if (key.normalOffset) {
-            glUniform1f(uniform(program, "uNormalOffsetTexels"), settings.shadow.normalOffset);
-            const double texelWorld = light.perspective ? 2.0 * light.tanHalfFov / light.resolution
-                                                        : light.texelWorldSize;
-            glUniform1f(uniform(program, "uTexelWorldSize"), float(texelWorld));
-        }
-        if (key.perspectiveLight)
-            glUniform1f(uniform(program, "uSpotCosHalfAngle"), float(std::cos(std::atan(light.tanHalfFov))));
-        if (key.filter == FilterKind::Poisson)
-            glUniform1f(uniform(program, "uPoissonRadiusTexels"), settings.filter.poissonRadius);
+        glUniform3fv(u.baseColor, 1, glm::value_ptr(baseColor));
         if (key.alphaMask) {
-            glUniform1f(uniform(program, "uAlphaFactor"), material->baseColorFactor.a);
-            glUniform1f(uniform(program, "uAlphaCutoff"), material->alphaCutoff);
-            if (alphaTexture) {
-                glBindTextureUnit(kBaseColorUnit, alphaTexture);
-                glUniform1i(uniform(program, "uBaseColorTexture"), GLint(kBaseColorUnit));
-            }
+            glUniform1f(u.alphaFactor, material->baseColorFactor.a);
+            glUniform1f(u.alphaCutoff, material->alphaCutoff);
+            if (alphaTexture) glBindTextureUnit(kBaseColorUnit, alphaTexture);
         }
         glFrontFace(draw.mirrored ? GL_CW : GL_CCW);
         glDrawElementsBaseVertex(GL_TRIANGLES, draw.indexCount, GL_UNSIGNED_INT,

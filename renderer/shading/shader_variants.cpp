@@ -33,15 +33,29 @@ std::string MainVariantKey::name() const {
     return joined;
 }
 
-GLuint MainVariantCache::program(const MainVariantKey& key) {
+namespace {
+
+MainUniforms locateUniforms(GLuint p) {
+    const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
+    return {at("uViewProjection"),     at("uModel"),          at("uNormalMatrix"),      at("uUvTransform"),
+            at("uLightViewProjection"), at("uShadowMap"),      at("uLightDirection"),    at("uLightPosition"),
+            at("uCameraPosition"),     at("uShadowTexel"),    at("uBaseColor"),         at("uLightIntensity"),
+            at("uAmbient"),            at("uLightDepthRange"), at("uNormalOffsetTexels"), at("uTexelWorldSize"),
+            at("uSpotCosHalfAngle"),   at("uPoissonRadiusTexels"), at("uAlphaFactor"),   at("uAlphaCutoff"),
+            at("uBaseColorTexture")};
+}
+
+}  // namespace
+
+const MainProgram& MainVariantCache::program(const MainVariantKey& key) {
     auto it = programs_.find(key);
-    if (it == programs_.end())
-        it = programs_
-                 .emplace(key, gl::buildProgram({{GL_VERTEX_SHADER, "main.vert.glsl"},
-                                                 {GL_FRAGMENT_SHADER, "main.frag.glsl"}},
-                                                key.defines()))
-                 .first;
-    return it->second.id();
+    if (it == programs_.end()) {
+        gl::Program program = gl::buildProgram(
+            {{GL_VERTEX_SHADER, "main.vert.glsl"}, {GL_FRAGMENT_SHADER, "main.frag.glsl"}}, key.defines());
+        const MainUniforms uniforms = locateUniforms(program.id());
+        it = programs_.emplace(key, MainProgram{std::move(program), uniforms}).first;
+    }
+    return it->second;
 }
 
 }  // namespace shadowlab

@@ -24,14 +24,27 @@ struct MainVariantKey {
     auto operator<=>(const MainVariantKey&) const = default;
 };
 
+// Uniform locations of a main-pass program, looked up once when it is built (-1 where the variant lacks one).
+struct MainUniforms {
+    GLint viewProjection, model, normalMatrix, uvTransform, lightViewProjection, shadowMap, lightDirection,
+        lightPosition, cameraPosition, shadowTexel, baseColor, lightIntensity, ambient, lightDepthRange,
+        normalOffsetTexels, texelWorldSize, spotCosHalfAngle, poissonRadiusTexels, alphaFactor, alphaCutoff,
+        baseColorTexture;
+};
+
+struct MainProgram {
+    gl::Program program;
+    MainUniforms uniforms;
+};
+
 class MainVariantCache {
 public:
     // Builds on first use; later calls return the cached program.
-    GLuint program(const MainVariantKey& key);
+    const MainProgram& program(const MainVariantKey& key);
     std::size_t size() const { return programs_.size(); }
 
 private:
-    std::map<MainVariantKey, gl::Program> programs_;
+    std::map<MainVariantKey, MainProgram> programs_;
 };
 
 }  // namespace shadowlab

@@ -28,16 +28,25 @@ void setPolygonOffset(float slopeScaled, float constant, float clamp, bool hasCl
 
 }  // namespace
 
-ShadowPass::ShadowPass() {
-    depthOnly_ = gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {});
-    alphaFactorOnly_ = gl::buildProgram(
-        {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
-        {"ALPHA_MASK"});
-    alphaTextured_ = gl::buildProgram(
-        {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
-        {"ALPHA_MASK", "BASE_COLOR_TEXTURE"});
-    hasOffsetClamp_ = glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr;
+ShadowPass::CasterProgram::CasterProgram(gl::Program built) : program(std::move(built)) {
+    const GLuint p = program.id();
+    lightViewProjection = glGetUniformLocation(p, "uLightViewProjection");
+    model = glGetUniformLocation(p, "uModel");
+    uvTransform = glGetUniformLocation(p, "uUvTransform");
+    alphaFactor = glGetUniformLocation(p, "uAlphaFactor");
+    alphaCutoff = glGetUniformLocation(p, "uAlphaCutoff");
+    baseColor = glGetUniformLocation(p, "uBaseColor");
 }
+
+ShadowPass::ShadowPass()
+    : depthOnly_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {})),
+      alphaFactorOnly_(gl::buildProgram(
+          {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
+          {"ALPHA_MASK"})),
+      alphaTextured_(gl::buildProgram(
+          {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
+          {"ALPHA_MASK", "BASE_COLOR_TEXTURE"})),
+      hasOffsetClamp_(glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr) {}
 
 bool ShadowPass::casterVisible(const GpuDraw& draw, const LightSpace& light) const {
     if (!draw.hasFiniteBounds) return true;  // cannot tell: draw it (non-finite vertices are dropped at load)
@@ -79,6 +88,7 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     setPolygonOffset(shadow.slopeScaledDepthBias, shadow.depthBias, shadow.depthBiasClamp, hasOffsetClamp_);
 
     const glm::mat4 lightViewProjection(light.viewProjection());
+    std::set<GLuint> prepared;  // programs whose per-pass uniforms are set
     scene.bind();
     const Scene& model = scene.scene();
     for (const GpuDraw& draw : scene.draws()) {
@@ -89,21 +99,19 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
         const Material* material = draw.material >= 0 ? &model.materials[std::size_t(draw.material)] : nullptr;
         const bool alphaTested = material && material->alphaMode == AlphaMode::Mask;
         const GLuint texture = alphaTested ? scene.materialTexture(draw.material) : 0;
-        const GLuint program = !alphaTested ? depthOnly_.id() : texture ? alphaTextured_.id() : alphaFactorOnly_.id();
-        glUseProgram(program);
-        glUniformMatrix4fv(glGetUniformLocation(program, "uLightViewProjection"), 1, GL_FALSE,
-                           glm::value_ptr(lightViewProjection));
-        glUniformMatrix4fv(glGetUniformLocation(program, "uModel"), 1, GL_FALSE, glm::value_ptr(draw.model));
+        const CasterProgram& caster = !alphaTested ? depthOnly_ : texture ? alphaTextured_ : alphaFactorOnly_;
+        glUseProgram(caster.program.id());
+        if (prepared.insert(caster.program.id()).second) {
+            glUniformMatrix4fv(caster.lightViewProjection, 1, GL_FALSE, glm::value_ptr(lightViewProjection));
+            glUniform1i(caster.baseColor, 1);
+        }
+        glUniformMatrix4fv(caster.model, 1, GL_FALSE, glm::value_ptr(draw.model));
         if (alphaTested) {
             ++counts.alphaTestedCasters;
-            glUniformMatrix3fv(glGetUniformLocation(program, "uUvTransform"), 1, GL_FALSE,
-                               glm::value_ptr(material->uvTransform));
-            glUniform1f(glGetUniformLocation(program, "uAlphaFactor"), material->baseColorFactor.a);
-            glUniform1f(glGetUniformLocation(program, "uAlphaCutoff"), material->alphaCutoff);
-            if (texture) {
-                glBindTextureUnit(1, texture);
-                glUniform1i(glGetUniformLocation(program, "uBaseColor"), 1);
-            }
+            glUniformMatrix3fv(caster.uvTransform, 1, GL_FALSE, glm::value_ptr(material->uvTransform));
+            glUniform1f(caster.alphaFactor, material->baseColorFactor.a);
+            glUniform1f(caster.alphaCutoff, material->alphaCutoff);
+            if (texture) glBindTextureUnit(1, texture);
         }
         // Double-sided materials cast from both faces: culling either would drop single-sided planes.
         const bool doubleSided = material && material->doubleSided;

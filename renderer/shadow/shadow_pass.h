@@ -7,6 +7,7 @@
 #include "light/light_space.h"
 #include "shadow/shadow_map.h"
 
+#include <set>
 #include <string>
 
 namespace shadowlab {
@@ -31,9 +32,17 @@ public:
 private:
     bool casterVisible(const GpuDraw& draw, const LightSpace& light) const;
 
-    gl::Program depthOnly_;       // vertex stage only: no fragment work for opaque casters
-    gl::Program alphaFactorOnly_; // MASK material without a texture
-    gl::Program alphaTextured_;   // MASK material with a base-colour texture
+    // A shadow-pass program with its uniform locations, looked up once (-1 where the program lacks one).
+    struct CasterProgram {
+        gl::Program program;
+        GLint lightViewProjection = -1, model = -1, uvTransform = -1, alphaFactor = -1, alphaCutoff = -1,
+              baseColor = -1;
+        explicit CasterProgram(gl::Program built);
+    };
+
+    CasterProgram depthOnly_;        // vertex stage only: no fragment work for opaque casters
+    CasterProgram alphaFactorOnly_;  // MASK material without a texture
+    CasterProgram alphaTextured_;    // MASK material with a base-colour texture
     bool hasOffsetClamp_ = false;
 };
 

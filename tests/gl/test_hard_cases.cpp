@@ -151,3 +151,93 @@ TEST_F(HardCases, SceneLightFromGltfIsUsedWhenAsked) {
 
 }  // namespace
 }  // namespace shadowlab::test
+
+namespace shadowlab::test {
+namespace {
+
+// Reads back every float uniform of the program the main pass used last: all must be finite (HARD_CASES 14).
+std::vector<std::string> nonFiniteUniforms() {
+    GLint program = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    std::vector<std::string> bad;
+    if (program == 0) return {"no program bound"};
+    GLint count = 0;
+    glGetProgramiv(GLuint(program), GL_ACTIVE_UNIFORMS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char name[128];
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(GLuint(program), GLuint(i), sizeof name, nullptr, &size, &type, name);
+        int components = 0;
+        switch (type) {
+            case GL_FLOAT: components = 1; break;
+            case GL_FLOAT_VEC2: components = 2; break;
+            case GL_FLOAT_VEC3: components = 3; break;
+            case GL_FLOAT_VEC4: components = 4; break;
+            case GL_FLOAT_MAT3: components = 9; break;
+            case GL_FLOAT_MAT4: components = 16; break;
+            default: continue;
+        }
+        float values[16] = {};
+        glGetUniformfv(GLuint(program), glGetUniformLocation(GLuint(program), name), values);
+        for (int c = 0; c < components; ++c)
+            if (!std::isfinite(values[c])) bad.push_back(name);
+    }
+    return bad;
+}
+
+TEST_F(HardCases, NoNonFiniteUniformReachesTheGpuForExtremeButValidSettings) {
+    Renderer renderer;
+    const Scene textbook = loadBuiltin("textbook");
+    Scene zeroScale = textbook;
+    zeroScale.instances[1].transform = glm::scale(glm::mat4(1.0f), glm::vec3(0.0f));  // no inverse for normals
+    zeroScale.computeBounds();
+    struct Case {
+        const char* name;
+        const Scene* scene;
+        void (*tweak)(Settings&);
+    };
+    const Case cases[] = {
+        {"straight down", &textbook, [](Settings& s) { s.light.direction = {0, -1, 0}; }},
+        {"straight up", &textbook, [](Settings& s) { s.light.direction = {0, 1, 0}; }},
+        {"pole tilt 1e-7", &textbook, [](Settings& s) { s.light.direction = {1e-7f, -1, 0}; }},
+        {"spot 170 degrees", &textbook,
+         [](Settings& s) {
+             s.light.type = LightType::Spot;
+             s.light.spotConeDeg = 170.0f;
+             s.light.direction = {0, -1, 0};
+         }},
+        {"spot inside the scene", &textbook,
+         [](Settings& s) {
+             s.light.type = LightType::Spot;
+             s.light.position = {0, 1, 0};  // inside the cube
+             s.light.direction = {1, -0.2f, 0};
+         }},
+        {"tiny ortho volume", &textbook,
+         [](Settings& s) {
+             s.projection.autoFit = false;
+             s.projection.orthoSize = 1e-3f;
+             s.projection.nearPlane = 1e-4f;
+             s.projection.farPlane = 1e-3f;
+         }},
+        {"huge normal offset, D16", &textbook,
+         [](Settings& s) {
+             s.shadow.normalOffset = 16.0f;
+             s.shadow.format = DepthFormat::D16;
+             s.shadow.resolution = 16;
+         }},
+        {"zero-scale instance", &zeroScale, [](Settings&) {}},
+    };
+    for (const Case& c : cases) {
+        Settings s = loadShippedPreset("default");
+        c.tweak(s);
+        const View view = renderView(renderer, *c.scene, s, 64, 64);
+        ASSERT_TRUE(view.stats.ok) << c.name << ": " << view.stats.error;
+        EXPECT_TRUE(allFinite(view.stats.light.viewProjection())) << c.name;
+        const std::vector<std::string> bad = nonFiniteUniforms();
+        EXPECT_TRUE(bad.empty()) << c.name << ": non-finite uniform " << (bad.empty() ? "" : bad[0]);
+    }
+}
+
+}  // namespace
+}  // namespace shadowlab::test
