@@ -33,7 +33,7 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene) {
         // A three-quarter view from above (by default across the default light, so shadows fall to the side, not
         // behind the objects), far enough back that the bounding sphere fits the vertical field of view.
         const glm::dvec3 viewDirection = glm::normalize(glm::dvec3(scene.viewDirection));
-        const double distance = radius / std::sin(glm::radians(settings.fovYDeg) * 0.5) * 0.8;
+        const double distance = radius / std::sin(glm::radians(settings.fovYDeg) * 0.5);
         camera.target = center;
         camera.position = center + viewDirection * distance;
     } else {
