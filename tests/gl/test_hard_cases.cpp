@@ -2,11 +2,13 @@
 #include "gl_fixture.h"
 
 #include "scene/builtin_scenes.h"
+#include "scene/scene_source.h"
 
 #include <glm/ext/matrix_transform.hpp>
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace shadowlab::test {
 namespace {
@@ -236,6 +238,43 @@ TEST_F(HardCases, NoNonFiniteUniformReachesTheGpuForExtremeButValidSettings) {
         EXPECT_TRUE(allFinite(view.stats.light.viewProjection())) << c.name;
         const std::vector<std::string> bad = nonFiniteUniforms();
         EXPECT_TRUE(bad.empty()) << c.name << ": non-finite uniform " << (bad.empty() ? "" : bad[0]);
+    }
+}
+
+}  // namespace
+}  // namespace shadowlab::test
+
+namespace shadowlab::test {
+namespace {
+
+TEST_F(HardCases, LightSweptAcrossStraightDownStaysFiniteAndStable) {
+    // HARD_CASES 1: L(t) = (sin t, -cos t, 0) for t in [-1e-3, 1e-3] over AlphaBlendModeTest. The textbook lookAt
+    // gives NaN at t = 0 and flips the map 180 degrees across it; ours must change the picture only as much as the
+    // light's motion does.
+    const std::string path = std::string(SHADOWLAB_SOURCE_DIR) +
+                             "/../shared/scenes/AlphaBlendModeTest/AlphaBlendModeTest.gltf";
+    SceneLoadResult loaded = loadScene(path);
+    if (!loaded.scene) GTEST_SKIP() << loaded.error;
+    const Scene& scene = *loaded.scene;
+    Renderer renderer;
+    Settings s = loadShippedPreset("default");
+    s.view = ViewMode::Shadow;
+    std::optional<View> previous;
+    for (int step = -10; step <= 10; ++step) {
+        const double t = step * 1e-4;
+        s.light.direction = glm::vec3(float(std::sin(t)), float(-std::cos(t)), 0.0f);
+        const View view = renderView(renderer, scene, s, 200, 150);
+        ASSERT_TRUE(allFinite(view.stats.light.viewProjection())) << "t=" << t;
+        if (previous) {
+            long changed = 0, total = 0;
+            for (std::size_t i = 0; i * 4 < view.rgba.size(); ++i) {
+                if (!view.isGreyScene(i)) continue;
+                ++total;
+                changed += std::abs(int(view.rgba[i * 4]) - int(previous->rgba[i * 4])) > 64;
+            }
+            EXPECT_LT(double(changed), 0.002 * double(total)) << "flicker between adjacent t at t=" << t;
+        }
+        previous = view;
     }
 }
 
