@@ -4,6 +4,7 @@
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/renderer.h"
+#include "gl/gl_errors.h"
 #include "image/depth_visualization.h"
 #include "image/image_io.h"
 #include "scene/scene_source.h"
@@ -37,7 +38,13 @@ int runRender(const RenderOptions& options) {
     for (const std::string& w : scene.warnings) std::cerr << "warning: " << scene.name << ": " << w << "\n";
 
     try {
+#ifndef NDEBUG
+        // Debug builds report every GL error through KHR_debug.
+        HeadlessContext context(/*debug=*/true);
+        gl::enableDebugOutput();
+#else
         HeadlessContext context;
+#endif
         Renderer renderer;
         RenderTarget target;
         if (std::string error = target.resize(options.width, options.height); !error.empty()) return fail(error);
@@ -46,6 +53,7 @@ int runRender(const RenderOptions& options) {
         if (!stats.ok) return fail(stats.error);
         renderer.waitForTimings(stats);
         for (const std::string& w : stats.warnings) std::cerr << "warning: " << w << "\n";
+        for (const std::string& e : gl::takeDebugErrors()) std::cerr << "GL error: " << e << "\n";
 
         const std::vector<std::uint8_t> pixels = target.readColor();
         if (std::string error = writePng(options.out, target.width(), target.height(), 4, pixels.data(), true);
