@@ -2,46 +2,30 @@
 
 namespace shadowlab::gl {
 
-Buffer createBuffer() {
+namespace {
+
+// Every glCreate* call has the shape (count, names) once any target is bound in.
+template <typename Owner, typename CreateNames>
+Owner create(CreateNames createNames) {
     GLuint id = 0;
-    glCreateBuffers(1, &id);
-    return Buffer(id);
+    createNames(1, &id);
+    return Owner(id);
 }
 
-VertexArray createVertexArray() {
-    GLuint id = 0;
-    glCreateVertexArrays(1, &id);
-    return VertexArray(id);
-}
+}  // namespace
+
+Buffer createBuffer() { return create<Buffer>(glCreateBuffers); }
+VertexArray createVertexArray() { return create<VertexArray>(glCreateVertexArrays); }
+Sampler createSampler() { return create<Sampler>(glCreateSamplers); }
+Framebuffer createFramebuffer() { return create<Framebuffer>(glCreateFramebuffers); }
+Renderbuffer createRenderbuffer() { return create<Renderbuffer>(glCreateRenderbuffers); }
 
 Texture createTexture(GLenum target) {
-    GLuint id = 0;
-    glCreateTextures(target, 1, &id);
-    return Texture(id);
-}
-
-Sampler createSampler() {
-    GLuint id = 0;
-    glCreateSamplers(1, &id);
-    return Sampler(id);
-}
-
-Framebuffer createFramebuffer() {
-    GLuint id = 0;
-    glCreateFramebuffers(1, &id);
-    return Framebuffer(id);
-}
-
-Renderbuffer createRenderbuffer() {
-    GLuint id = 0;
-    glCreateRenderbuffers(1, &id);
-    return Renderbuffer(id);
+    return create<Texture>([target](GLsizei n, GLuint* ids) { glCreateTextures(target, n, ids); });
 }
 
 Query createQuery(GLenum target) {
-    GLuint id = 0;
-    glCreateQueries(target, 1, &id);
-    return Query(id);
+    return create<Query>([target](GLsizei n, GLuint* ids) { glCreateQueries(target, n, ids); });
 }
 
 }  // namespace shadowlab::gl

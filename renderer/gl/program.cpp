@@ -8,19 +8,13 @@ namespace shadowlab::gl {
 
 namespace {
 
-std::string shaderLog(GLuint shader) {
+// The info log of a shader or program (each has its own pair of query functions).
+template <typename GetParameter, typename GetLog>
+std::string infoLog(GLuint object, GetParameter getParameter, GetLog getLog) {
     GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    getParameter(object, GL_INFO_LOG_LENGTH, &length);
     std::string log(std::size_t(length > 0 ? length : 1), '\0');
-    glGetShaderInfoLog(shader, length, nullptr, log.data());
-    return log;
-}
-
-std::string programLog(GLuint program) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(length > 0 ? length : 1), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
+    getLog(object, length, nullptr, log.data());
     return log;
 }
 
@@ -52,14 +46,14 @@ Program buildProgram(const std::vector<ShaderStage>& stages, const std::vector<s
         glCompileShader(shader.id());
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-        if (ok != GL_TRUE) throw std::runtime_error("compiling " + stage.file + ":\n" + shaderLog(shader.id()));
+        if (ok != GL_TRUE) throw std::runtime_error("compiling " + stage.file + ":\n" + infoLog(shader.id(), glGetShaderiv, glGetShaderInfoLog));
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
     }
     glLinkProgram(program.id());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) throw std::runtime_error("linking program:\n" + programLog(program.id()));
+    if (ok != GL_TRUE) throw std::runtime_error("linking program:\n" + infoLog(program.id(), glGetProgramiv, glGetProgramInfoLog));
     for (const Shader& s : shaders) glDetachShader(program.id(), s.id());
     return program;
 }
