@@ -108,13 +108,12 @@ void main() {
 #if defined(VIEW_SHADOW)
     outColor = vec4(vec3(shadow), 1.0);
 #elif defined(VIEW_LIGHT_DEPTH)
-    vec3 receiver = toLightTexture(vWorldPosition);
 #ifdef LIGHT_PERSPECTIVE
     // Linear distance along the light axis, so the picture is not all white.
     float viewDepth = dot(vWorldPosition - uLightPosition, uLightDirection);
     float depth = (viewDepth - uLightDepthRange.x) / (uLightDepthRange.y - uLightDepthRange.x);
 #else
-    float depth = receiver.z;
+    float depth = toLightTexture(vWorldPosition).z;
 #endif
     outColor = vec4(vec3(clamp(depth, 0.0, 1.0)), 1.0);
 #else

@@ -102,8 +102,7 @@ std::string Renderer::shadowPassReason(const ShadowInputs& now, bool reallocated
     if (!lastShadow_) return "first frame";
     if (reallocated) return "shadow map reallocated";
     std::vector<std::string> reasons;
-    if (now.scene != lastShadow_->scene || now.sceneFingerprint != lastShadow_->sceneFingerprint)
-        reasons.push_back("scene changed");
+    if (now.sceneFingerprint != lastShadow_->sceneFingerprint) reasons.push_back("scene changed");
     if (now.lightViewProjection != lastShadow_->lightViewProjection) reasons.push_back("light changed");
     const ShadowMapSettings& a = now.shadow;
     const ShadowMapSettings& b = lastShadow_->shadow;
@@ -112,7 +111,6 @@ std::string Renderer::shadowPassReason(const ShadowInputs& now, bool reallocated
         reasons.push_back("bias changed");
     if (a.cullMode != b.cullMode) reasons.push_back("cull mode changed");
     if (now.depthClamp != lastShadow_->depthClamp) reasons.push_back("depth clamp changed");
-    if (a.resolution != b.resolution || a.format != b.format) reasons.push_back("shadow map changed");
     return joinLines(reasons);
 }
 
@@ -172,7 +170,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     if (settings.shadow.depthBiasClamp != 0.0f && !shadowPass_->hasPolygonOffsetClamp())
         stats.warnings.push_back("shadow.depthBiasClamp: glPolygonOffsetClamp is not available; the clamp is ignored");
 
-    const ShadowInputs inputs{&scene, fingerprint, light->viewProjection(), settings.shadow,
+    const ShadowInputs inputs{fingerprint, light->viewProjection(), settings.shadow,
                               settings.projection.depthClamp};
     const std::string reason = shadowPassReason(inputs, stats.shadowMapReallocated);
     if (!reason.empty()) {

@@ -38,13 +38,12 @@ public:
     const GlInfo& glInfo() const { return info_; }
 
 private:
+    // What the last shadow pass drew from; the next one runs only if one of these changed.
     struct ShadowInputs {
-        const void* scene = nullptr;
-        std::size_t sceneFingerprint = 0;
+        std::size_t sceneFingerprint = 0;  // includes the scene's address
         glm::dmat4 lightViewProjection{0.0};
         ShadowMapSettings shadow;
         bool depthClamp = true;
-        bool operator==(const ShadowInputs&) const = default;
     };
     std::string shadowPassReason(const ShadowInputs& now, bool reallocated) const;
 

@@ -77,12 +77,17 @@ std::string rangeText(double lo, double hi) {
 
 // ---- field factories. `access` is a generic lambda returning a reference into Settings (const or not). ----
 
-template <class Access>
-SettingsField floatField(std::string fieldKey, std::string description, double lo, double hi, Access access) {
+SettingsField namedField(std::string fieldKey, std::string description, SettingsFieldKind kind) {
     SettingsField f;
     f.key = std::move(fieldKey);
     f.description = std::move(description);
-    f.kind = SettingsFieldKind::Float;
+    f.kind = kind;
+    return f;
+}
+
+template <class Access>
+SettingsField floatField(std::string fieldKey, std::string description, double lo, double hi, Access access) {
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::Float);
     f.min = lo;
     f.max = hi;
     f.allowed = rangeText(lo, hi);
@@ -101,10 +106,7 @@ SettingsField floatField(std::string fieldKey, std::string description, double l
 template <class Access>
 SettingsField intField(std::string fieldKey, std::string description, int lo, int hi, std::vector<int> onlyValues,
                        Access access) {
-    SettingsField f;
-    f.key = std::move(fieldKey);
-    f.description = std::move(description);
-    f.kind = SettingsFieldKind::Int;
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::Int);
     f.min = lo;
     f.max = hi;
     f.intChoices = std::move(onlyValues);
@@ -136,10 +138,7 @@ SettingsField intField(std::string fieldKey, std::string description, int lo, in
 
 template <class Access>
 SettingsField boolField(std::string fieldKey, std::string description, Access access) {
-    SettingsField f;
-    f.key = std::move(fieldKey);
-    f.description = std::move(description);
-    f.kind = SettingsFieldKind::Bool;
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::Bool);
     f.min = 0;
     f.max = 1;
     f.allowed = "true or false";
@@ -155,10 +154,7 @@ SettingsField boolField(std::string fieldKey, std::string description, Access ac
 template <class Enum, class Access>
 SettingsField enumField(std::string fieldKey, std::string description,
                         std::vector<std::pair<Enum, std::string>> names, Access access) {
-    SettingsField f;
-    f.key = std::move(fieldKey);
-    f.description = std::move(description);
-    f.kind = SettingsFieldKind::Enum;
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::Enum);
     for (const auto& n : names) f.choices.push_back(n.second);
     f.min = 0;
     f.max = static_cast<double>(names.size()) - 1.0;
@@ -191,10 +187,7 @@ SettingsField enumField(std::string fieldKey, std::string description,
 template <class Access, class Check>
 SettingsField vec3Field(std::string fieldKey, std::string description, std::string allowedExtra, Check check,
                         Access access) {
-    SettingsField f;
-    f.key = std::move(fieldKey);
-    f.description = std::move(description);
-    f.kind = SettingsFieldKind::Vec3;
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::Vec3);
     f.allowed = "[x, y, z], finite" + (allowedExtra.empty() ? std::string() : ", " + allowedExtra);
     f.get = [access](const Settings& s) {
         const glm::vec3& v = access(s);

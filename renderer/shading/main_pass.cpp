@@ -42,8 +42,7 @@ void setFrameUniforms(const MainUniforms& u, const MainPassInput& in, const Main
 std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& target) {
     const Settings& settings = *in.settings;
     const Scene& scene = in.scene->scene();
-    std::set<std::string> used;
-    std::set<GLuint> prepared;  // programs whose per-frame uniforms are set
+    std::set<const MainProgram*> prepared;  // programs used this frame, their per-frame uniforms set
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
     glViewport(0, 0, target.width(), target.height());
@@ -74,9 +73,8 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         key.alphaTexture = alphaTexture != 0;
         const MainProgram& variant = variants_.program(key);
         const MainUniforms& u = variant.uniforms;
-        used.insert(key.name());
         glUseProgram(variant.program.id());
-        if (prepared.insert(variant.program.id()).second) setFrameUniforms(u, in, key);
+        if (prepared.insert(&variant).second) setFrameUniforms(u, in, key);
 
         glUniformMatrix4fv(u.model, 1, GL_FALSE, glm::value_ptr(draw.model));
         glUniformMatrix3fv(u.normalMatrix, 1, GL_FALSE, glm::value_ptr(draw.normalMatrix));
@@ -95,6 +93,8 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     }
     glFrontFace(GL_CCW);
     glBindSampler(kShadowMapUnit, 0);
+    std::set<std::string> used;
+    for (const MainProgram* program : prepared) used.insert(program->name);
     return used;
 }
 

@@ -53,7 +53,7 @@ const MainProgram& MainVariantCache::program(const MainVariantKey& key) {
         gl::Program program = gl::buildProgram(
             {{GL_VERTEX_SHADER, "main.vert.glsl"}, {GL_FRAGMENT_SHADER, "main.frag.glsl"}}, key.defines());
         const MainUniforms uniforms = locateUniforms(program.id());
-        it = programs_.emplace(key, MainProgram{std::move(program), uniforms}).first;
+        it = programs_.emplace(key, MainProgram{std::move(program), uniforms, key.name()}).first;
     }
     return it->second;
 }

@@ -35,6 +35,7 @@ struct MainUniforms {
 struct MainProgram {
     gl::Program program;
     MainUniforms uniforms;
+    std::string name;  // MainVariantKey::name(), for FrameStats
 };
 
 class MainVariantCache {

@@ -65,6 +65,8 @@ std::string ShadowMap::ensure(int resolution, DepthFormat format, int maxTexture
 
 void ShadowMap::configureSamplers(const SamplerSettings& sampler, FilterKind filter) {
     if (!compareSampler_) compareSampler_ = gl::createSampler();
+    if (samplerState_ && samplerState_->first == sampler && samplerState_->second == filter) return;
+    samplerState_ = std::make_pair(sampler, filter);
     const GLuint s = compareSampler_.id();
     GLint wrap = GL_CLAMP_TO_BORDER;
     switch (sampler.addressMode) {

@@ -6,6 +6,8 @@
 #include "settings/settings.h"
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -20,7 +22,7 @@ public:
     // Returns "" on success (or when nothing changed), else why the new map could not be made; the old one stays.
     std::string ensure(int resolution, DepthFormat format, int maxTextureSize);
 
-    // Sampler state from the settings (address mode, border depth, comparison filter).
+    // Sampler state from the settings (address mode, border depth, comparison filter); no GL calls if unchanged.
     void configureSamplers(const SamplerSettings& sampler, FilterKind filter);
 
     bool valid() const { return bool(texture_); }
@@ -39,6 +41,7 @@ private:
     gl::Texture texture_;
     gl::Framebuffer framebuffer_;
     gl::Sampler compareSampler_;
+    std::optional<std::pair<SamplerSettings, FilterKind>> samplerState_;  // what compareSampler_ is set to
     int resolution_ = 0;
     std::uint64_t generation_ = 0;
     DepthFormat format_ = DepthFormat::D32F;
