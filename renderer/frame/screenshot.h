@@ -1,0 +1,27 @@
+#pragma once
+// Screenshots: a RenderTarget's colour as PNG in a folder, named shadowlab-YYYYMMDD-HHMMSS.png (local time), with
+// -2, -3, ... appended when that name is taken: an existing file is never overwritten. Optionally the shadow map
+// beside it, as float EXR and viewable PNG (same stem + "-shadowmap"). Creates the folder if missing.
+#include "frame/render_target.h"
+#include "shadow/shadow_map.h"
+
+#include <chrono>
+#include <string>
+
+namespace shadowlab {
+
+struct ScreenshotResult {
+    std::string error;         // "" on success; else what failed and why (folder not writable, disk full, ...)
+    std::string viewPng;       // paths written
+    std::string shadowMapExr;  // empty unless the shadow map was asked for
+    std::string shadowMapPng;
+    bool ok() const { return error.empty(); }
+};
+
+// `shadowMap` null: the view only. On failure `error` says which file failed and why; files written before it are
+// complete and keep their paths in the result.
+ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& folder,
+                                 const ShadowMap* shadowMap = nullptr,
+                                 std::chrono::system_clock::time_point when = std::chrono::system_clock::now());
+
+}  // namespace shadowlab

@@ -1,0 +1,80 @@
+#pragma once
+// A picture of the shadow map for display: the depth texture turned into an RGBA8 texture of any size, with
+// contrast control (auto: stretched over the depths casters wrote, measured on the GPU only when the map changed;
+// full [0,1]; manual min/max), optional linearization of a spot light's perspective depth, zoom and pan (a uv
+// rectangle, see map_zoom_pan.h), and a texel grid once a texel covers kGridMinTexelPixels view pixels.
+// Grey goes from black (near the light) to white (far); texels no caster wrote (depth 1) are shown in blue.
+#include "frame/render_target.h"
+#include "gl/gl_objects.h"
+#include "light/light_space.h"
+#include "overlay/map_zoom_pan.h"
+#include "shadow/shadow_map.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace shadowlab {
+
+enum class DepthContrast { Auto, Full, Manual };
+
+struct ShadowMapViewOptions {
+    DepthContrast contrast = DepthContrast::Auto;
+    float manualMin = 0.0f;  // manual contrast, in the shown unit (stored depth, or linear depth when linearized)
+    float manualMax = 1.0f;
+    bool linearize = false;  // spot lights: show distance from the light between near and far, not stored depth
+    UvRect visible;          // the part of the map shown (zoom and pan)
+    bool texelGrid = true;   // draw the grid when zoomed in far enough
+};
+
+// The range the picture stretched to black..white, in the shown unit.
+struct ShownDepthRange {
+    float min = 0.0f;
+    float max = 1.0f;
+    bool anyCaster = false;  // auto: whether any texel was written below depth 1
+};
+
+inline constexpr double kGridMinTexelPixels = 8.0;
+
+// Stored depth [0,1] -> linear depth in [0,1] between the light's near (0) and far (1) planes. Directional
+// (orthographic) depth is already linear.
+double linearLightDepth(const LightSpace& light, double storedDepth);
+
+class ShadowMapView {
+public:
+    ShadowMapView();  // needs a current GL 4.5 context; throws std::runtime_error if a shader does not build
+
+    // Draws the picture at width x height. `mapRedrawn`: the shadow pass ran since the last call (FrameStats::
+    // shadowPass.ran); auto contrast re-measures the map only then, or when the map was reallocated. Returns "" or
+    // why nothing was drawn (no map yet, bad size, manual min >= max); the previous picture is kept then.
+    std::string render(const ShadowMap& map, const LightSpace& light, bool mapRedrawn,
+                       const ShadowMapViewOptions& options, int width, int height);
+
+    GLuint texture() const { return target_.colorTexture(); }  // RGBA8, row 0 = bottom (show it flipped in ImGui)
+    int width() const { return target_.width(); }
+    int height() const { return target_.height(); }
+    std::vector<std::uint8_t> readPixels() const { return target_.readColor(); }
+
+    ShownDepthRange shownRange() const { return shown_; }
+    bool gridShown() const { return gridShown_; }
+
+    // One stored depth read back from the map (for hover); nullopt off the map or when there is none.
+    std::optional<float> depthAt(const ShadowMap& map, int texelX, int texelY) const;
+
+private:
+    void measureWrittenRange(const ShadowMap& map);
+
+    gl::Program displayProgram_;
+    gl::Program rangeProgram_;
+    gl::VertexArray emptyVertexArray_;
+    gl::Sampler rawSampler_;     // nearest, no comparison: reads stored depth
+    gl::Buffer rangeBuffer_;     // two uints: min and max of written depths (float bits)
+    RenderTarget target_;
+    std::optional<float> writtenMin_, writtenMax_;  // measured range; empty when no caster wrote
+    bool measured_ = false;
+    std::uint64_t measuredGeneration_ = 0;
+    ShownDepthRange shown_;
+    bool gridShown_ = false;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,17 @@
+#pragma once
+// Where the user's own files live (editor layout, recent files, user presets):
+//   config folder:  $SHADOWLAB_CONFIG_DIR, else $XDG_CONFIG_HOME/shadowlab, else $HOME/.config/shadowlab
+//   user presets:   $SHADOWLAB_USER_PRESETS, else <config folder>/presets
+// Empty variables count as unset. Nothing here creates folders.
+#include <filesystem>
+
+namespace shadowlab {
+
+std::filesystem::path userConfigDir();
+std::filesystem::path userPresetsDir();
+std::filesystem::path recentFilesPath();  // <config folder>/recent-files.json
+
+// Creates `folder` (and its parents) if missing; "" or why it cannot be a writable folder.
+std::string ensureFolder(const std::filesystem::path& folder);
+
+}  // namespace shadowlab

@@ -1,0 +1,21 @@
+#pragma once
+// The shadow map as files: the raw stored depth as a 1-channel 32-bit float OpenEXR (channel "Z", first scanline =
+// top of the map), and a viewable grey PNG (depths stretched over their used range, white = no caster).
+// Used by `shadowlab render --shadow-map / --shadow-map-png` and by editor screenshots.
+#include "image/depth_visualization.h"
+#include "shadow/shadow_map.h"
+
+#include <string>
+
+namespace shadowlab {
+
+struct ShadowMapFilesResult {
+    std::string error;   // "" on success; else names the file and what went wrong
+    DepthRange pngRange; // the depths the PNG stretched to black .. light grey
+    bool ok() const { return error.empty(); }
+};
+
+// Reads the map back once and writes the files whose path is not empty. Never creates folders.
+ShadowMapFilesResult writeShadowMapFiles(const ShadowMap& map, const std::string& exrPath, const std::string& pngPath);
+
+}  // namespace shadowlab
