@@ -1,13 +1,10 @@
 #include "settings/preset_io.h"
 
+#include "settings/atomic_file.h"
 #include "settings/settings_fields.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -142,22 +139,6 @@ std::string readTextFile(const std::string& path, std::string& out) {
     return {};
 }
 
-std::string errnoText(const std::string& what) { return what + ": " + std::strerror(errno); }
-
-bool writeAll(int fd, const std::string& data) {
-    const char* p = data.data();
-    std::size_t left = data.size();
-    while (left > 0) {
-        ssize_t n = ::write(fd, p, left);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            return false;
-        }
-        p += n;
-        left -= static_cast<std::size_t>(n);
-    }
-    return true;
-}
 
 }  // namespace
 
@@ -279,56 +260,8 @@ std::string savePresetFile(const std::string& path, const Settings& settings, co
     if (auto problems = settings.validate(); !problems.empty())
         return failed + ": the settings are invalid: " + problems.front();
 
-    // Replace what a symlink points to, not the link itself.
-    fs::path target(path);
-    std::error_code ec;
-    if (fs::is_symlink(target, ec)) {
-        fs::path resolved = fs::canonical(target, ec);
-        if (!ec) target = resolved;
-    }
-    fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    fs::file_status folderStatus = fs::status(folder, ec);
-    if (folderStatus.type() == fs::file_type::not_found) return failed + ": folder '" + folder.string() + "' does not exist";
-    if (!fs::is_directory(folderStatus)) return failed + ": '" + folder.string() + "' is not a folder";
-    if (fs::is_directory(target, ec)) return failed + ": it is a folder";
-
-    const std::string text = presetToText(settings, name, description);
-
-    // Temporary in the same folder so rename() is atomic (same file system). O_EXCL: never reuse someone's file.
-    static std::atomic<unsigned> counter{0};
-    std::string tempPath;
-    int fd = -1;
-    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
-        tempPath = (folder / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                              std::to_string(counter++)))
-                       .string();
-        fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd < 0 && errno != EEXIST) break;
-    }
-    if (fd < 0) return failed + ": " + errnoText("cannot create a temporary file in '" + folder.string() + "'");
-
-    auto abandon = [&](const std::string& what) {
-        std::string message = failed + ": " + errnoText(what);
-        if (fd >= 0) ::close(fd);
-        ::unlink(tempPath.c_str());
-        return message;
-    };
-    // Keep the permissions of the file being replaced (the new file would otherwise get 0666 & ~umask).
-    struct stat old {};
-    if (::stat(target.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) return abandon("fchmod");
-    if (!writeAll(fd, text)) return abandon("write");
-    if (::fsync(fd) != 0) return abandon("fsync");
-    int closeResult = ::close(fd);
-    fd = -1;
-    if (closeResult != 0) return abandon("close");
-    if (::rename(tempPath.c_str(), target.c_str()) != 0) return abandon("rename");
-
-    // Make the rename itself durable; failing here loses nothing, so it is not an error.
-    int dirFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (dirFd >= 0) {
-        ::fsync(dirFd);
-        ::close(dirFd);
-    }
+    if (std::string error = writeFileAtomically(path, presetToText(settings, name, description)); !error.empty())
+        return failed + ": " + error;
     return {};
 }
 

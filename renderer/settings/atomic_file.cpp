@@ -1,0 +1,99 @@
+#include "settings/atomic_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace shadowlab {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// 'path' (appended, not "'" + ...: g++ 12 warns falsely about the latter with -Wrestrict).
+std::string quoted(const fs::path& path) {
+    std::string out = "'";
+    out += path.string();
+    out += "'";
+    return out;
+}
+
+std::string errnoText(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+bool writeAll(int fd, const std::string& data) {
+    const char* p = data.data();
+    std::size_t left = data.size();
+    while (left > 0) {
+        ssize_t n = ::write(fd, p, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return false;
+        }
+        p += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string writeFileAtomically(const std::string& path, const std::string& text) {
+    if (path.empty()) return "no file name given";
+    // Replace what a symlink points to, not the link itself.
+    fs::path target(path);
+    std::error_code ec;
+    if (fs::is_symlink(target, ec)) {
+        fs::path resolved = fs::canonical(target, ec);
+        if (!ec) target = resolved;
+    }
+    fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    fs::file_status folderStatus = fs::status(folder, ec);
+    if (folderStatus.type() == fs::file_type::not_found) return "folder " + quoted(folder) + " does not exist";
+    if (!fs::is_directory(folderStatus)) return quoted(folder) + " is not a folder";
+    if (fs::is_directory(target, ec)) return "it is a folder";
+
+    // Temporary in the same folder so rename() is atomic (same file system). O_EXCL: never reuse someone's file.
+    static std::atomic<unsigned> counter{0};
+    std::string tempPath;
+    int fd = -1;
+    for (int attempt = 0; attempt < 100 && fd < 0; ++attempt) {
+        std::string tempName = ".";
+        tempName += target.filename().string();
+        tempName += ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+        tempPath = (folder / tempName).string();
+        fd = ::open(tempPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd < 0 && errno != EEXIST) break;
+    }
+    if (fd < 0) return errnoText("cannot create a temporary file in " + quoted(folder));
+
+    auto abandon = [&](const std::string& what) {
+        std::string message = errnoText(what);
+        if (fd >= 0) ::close(fd);
+        ::unlink(tempPath.c_str());
+        return message;
+    };
+    // Keep the permissions of the file being replaced (the new file would otherwise get 0666 & ~umask).
+    struct stat old {};
+    if (::stat(target.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) return abandon("fchmod");
+    if (!writeAll(fd, text)) return abandon("write");
+    if (::fsync(fd) != 0) return abandon("fsync");
+    int closeResult = ::close(fd);
+    fd = -1;
+    if (closeResult != 0) return abandon("close");
+    if (::rename(tempPath.c_str(), target.c_str()) != 0) return abandon("rename");
+
+    // Make the rename itself durable; failing here loses nothing, so it is not an error.
+    int dirFd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dirFd >= 0) {
+        ::fsync(dirFd);
+        ::close(dirFd);
+    }
+    return {};
+}
+
+}  // namespace shadowlab
