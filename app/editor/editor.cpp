@@ -1,0 +1,416 @@
+#include "editor/editor.h"
+
+#include "editor/editor_keys.h"
+#include "editor/panels/panel_registry.h"
+#include "frame/screenshot.h"
+#include "image/image_io.h"
+#include "scene/builtin_scenes.h"
+#include "settings/user_config.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace shadowlab::editor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double secondsNow() {
+    using namespace std::chrono;
+    static const steady_clock::time_point start = steady_clock::now();
+    return duration<double>(steady_clock::now() - start).count();
+}
+
+bool sameOptions(const ShadowMapViewOptions& a, const ShadowMapViewOptions& b) {
+    return a.contrast == b.contrast && a.manualMin == b.manualMin && a.manualMax == b.manualMax &&
+           a.linearize == b.linearize && a.visible.min == b.visible.min && a.visible.max == b.visible.max &&
+           a.texelGrid == b.texelGrid;
+}
+
+bool isGltfPath(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".gltf" || ext == ".glb";
+}
+
+}  // namespace
+
+Editor::Editor(EditorOptions options) : options_(std::move(options)) {
+    renderer_ = std::make_unique<Renderer>();
+    frustum_ = std::make_unique<LightFrustumOverlay>();
+    mapView_ = std::make_unique<ShadowMapView>();
+    state_.limits.maxTextureSize = renderer_->glInfo().maxTextureSize;
+    state_.time = secondsNow();
+
+    if (options_.shippedPresetsDir.empty()) options_.shippedPresetsDir = SHADOWLAB_PRESET_DIR;
+    if (options_.userPresetsDir.empty()) options_.userPresetsDir = userPresetsDir().string();
+    if (options_.recentFilesPath.empty()) options_.recentFilesPath = recentFilesPath().string();
+    state_.userPresetsDir = options_.userPresetsDir;
+    state_.screenshotDir = options_.screenshotDir;
+    if (options_.recentFilesPath != "-") {
+        RecentFilesLoad recent = loadRecentFiles(options_.recentFilesPath);
+        state_.recentFiles = recent.files;
+        if (!recent.error.empty()) state_.say(recent.error, true);
+    }
+    refreshPresetList();
+
+    // The start preset: a path, else a shipped preset's name, else a user preset's name.
+    const std::string preset = options_.preset.empty() ? "default" : options_.preset;
+    std::string path = preset;
+    bool shipped = false;
+    if (!fs::exists(path)) {
+        for (const PresetEntry& entry : state_.presetList)
+            if (entry.name == preset) {
+                path = entry.path.string();
+                shipped = entry.readOnly;
+                break;
+            }
+    } else {
+        std::error_code ec;
+        shipped = fs::equivalent(fs::path(path).parent_path(), options_.shippedPresetsDir, ec);
+    }
+    if (std::string error = state_.preset.load(path, shipped, state_.settings); !error.empty())
+        state_.say("preset " + preset + " not loaded: " + error + "; using built-in defaults", true);
+
+    state_.sceneSpec = options_.scene;
+    state_.scenePathInput = options_.scene;
+    loader_.request(options_.scene);
+    state_.loading = loader_.progress();
+}
+
+Editor::~Editor() = default;
+
+// ---------------------------------------------------------------------------------------------------------------
+// Frame work (before the UI)
+
+void Editor::renderFrame() {
+    const double now = secondsNow();
+    const double dt = std::clamp(now - state_.time, 0.0, 0.25);
+    state_.time = now;
+    pollSceneLoad();
+    if (state_.animateLight) {
+        state_.animatedAzimuthDeg = std::fmod(state_.animatedAzimuthDeg + state_.animateDegreesPerSecond * dt, 360.0);
+    }
+    renderViewport();
+    if (screenshotRequested_) takeScreenshot();
+}
+
+void Editor::pollSceneLoad() {
+    if (std::optional<FinishedSceneLoad> done = loader_.poll()) {
+        if (done->result.ok()) {
+            auto scene = std::make_shared<const Scene>(std::move(*done->result.scene));
+            std::ostringstream text;
+            text << "loaded " << done->spec << " (" << scene->triangleCount() << " triangles) in " << std::fixed
+                 << std::setprecision(2) << done->seconds << " s";
+            adoptScene(std::move(scene), done->spec);
+            state_.say(text.str());
+        } else {
+            state_.say(done->result.error, true);
+            if (!state_.scene) {
+                // The start scene failed: show the default one so the editor is usable.
+                SceneLoadResult fallback = loadScene(kDefaultSceneSpec);
+                if (fallback.ok()) {
+                    adoptScene(std::make_shared<const Scene>(std::move(*fallback.scene)), kDefaultSceneSpec);
+                    state_.say(std::string("showing ") + kDefaultSceneSpec + " instead");
+                }
+            }
+        }
+    }
+    state_.loading = loader_.progress();
+}
+
+void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& spec) {
+    state_.scene = std::move(scene);
+    state_.sceneSpec = spec;
+    state_.scenePathInput = spec;
+    renderer_->sceneChanged();
+    for (std::size_t i = 0; i < state_.scene->warnings.size() && i < 3; ++i)
+        state_.say(state_.scene->name + ": " + state_.scene->warnings[i]);
+    // A new scene gets the preset's camera (auto-framed by default).
+    orbit_.emplace(cameraFor(state_.settings.camera, *state_.scene), state_.scene->bounds);
+    lastRendered_.reset();
+    if (spec.rfind(kBuiltinPrefix, 0) != 0 && options_.recentFilesPath != "-") {
+        state_.recentFiles.add(spec);
+        if (std::string error = saveRecentFiles(options_.recentFilesPath, state_.recentFiles); !error.empty())
+            state_.say(error, true);
+    }
+}
+
+Settings Editor::effectiveSettings() const {
+    Settings s = state_.settings;
+    if (state_.animateLight && state_.animatedAzimuthDeg != 0.0) {
+        // The preview turns the light around the vertical axis through the scene's centre.
+        const glm::dmat4 turn =
+            glm::rotate(glm::dmat4(1.0), glm::radians(state_.animatedAzimuthDeg), glm::dvec3(0.0, 1.0, 0.0));
+        s.light.direction = glm::vec3(turn * glm::dvec4(glm::dvec3(s.light.direction), 0.0));
+        const glm::dvec3 center = state_.scene && !state_.scene->bounds.empty
+                                      ? glm::dvec3(state_.scene->bounds.center())
+                                      : glm::dvec3(0.0);
+        s.light.position = glm::vec3(center + glm::dvec3(turn * glm::dvec4(glm::dvec3(s.light.position) - center, 0.0)));
+    }
+    return s;
+}
+
+void Editor::renderViewport() {
+    if (!state_.scene || !orbit_) return;
+    const int w = int(viewportRect_.z);
+    const int h = int(viewportRect_.w);
+    if (w < 16 || h < 16) return;  // no UI built yet, or the panels cover the window
+    if (target_.width() != w || target_.height() != h) {
+        if (std::string error = target_.resize(w, h); !error.empty()) {
+            state_.say("viewport: " + error, true);
+            return;
+        }
+        lastRendered_.reset();
+    }
+    RenderKey key{effectiveSettings(), orbit_->eye(), orbit_->target(), state_.scene.get(), w, h,
+                  state_.showLightFrustum};
+    if (lastRendered_ && *lastRendered_ == key) {
+        ++state_.idleFrames;  // nothing changed: no pass runs, the viewport keeps its picture
+        renderMapPicture(false);
+        return;
+    }
+
+    const double start = secondsNow();
+    FrameStats stats = renderer_->render(*state_.scene, key.settings, orbit_->toCamera(), target_);
+    if (!stats.ok) {
+        if (!state_.lastMessage() || state_.lastMessage()->text != stats.error) state_.say(stats.error, true);
+        lastRendered_ = key;
+        return;
+    }
+    for (const std::string& warning : stats.warnings)
+        if (!state_.lastMessage() || state_.lastMessage()->text != warning) state_.say(warning, true);
+    // A map the GPU refused (too big, out of memory): the settings go back to the map still in use.
+    if (stats.shadowMapResolution != state_.settings.shadow.resolution ||
+        stats.shadowMapFormat != state_.settings.shadow.format) {
+        state_.fieldErrors["shadow.resolution"] =
+            stats.warnings.empty() ? "the GPU refused this shadow map; the previous one is kept" : stats.warnings.front();
+        state_.settings.shadow.resolution = stats.shadowMapResolution;
+        state_.settings.shadow.format = stats.shadowMapFormat;
+        key.settings.shadow.resolution = stats.shadowMapResolution;
+        key.settings.shadow.format = stats.shadowMapFormat;
+    }
+    if (state_.showLightFrustum) {
+        if (std::string error = frustum_->draw(stats, target_); !error.empty())
+            state_.say("light frustum: " + error, true);
+    }
+    state_.lastFrameMs = (secondsNow() - start) * 1000.0;
+    const float shadowMs = stats.shadowPass.ran && stats.shadowPass.milliseconds ? float(*stats.shadowPass.milliseconds)
+                                                                                 : 0.0f;
+    state_.history.push(float(state_.lastFrameMs), shadowMs);
+    mapPictureStale_ = mapPictureStale_ || stats.shadowPass.ran || stats.shadowMapReallocated;
+    state_.stats = std::move(stats);
+    state_.haveStats = true;
+    ++state_.renderedFrames;
+    lastRendered_ = key;
+    renderMapPicture(false);
+}
+
+void Editor::renderMapPicture(bool mapRedrawn) {
+    MapViewerState& v = state_.viewer;
+    mapPictureStale_ = mapPictureStale_ || mapRedrawn;
+    if (v.width < 8 || v.height < 8 || !state_.haveStats || !renderer_->shadowMap().valid()) return;
+    const bool changed = mapPictureStale_ || v.width != lastMapWidth_ || v.height != lastMapHeight_ ||
+                         !sameOptions(v.options, lastMapOptions_) || v.texture == 0;
+    if (changed) {
+        v.error = mapView_->render(renderer_->shadowMap(), state_.stats.light, mapPictureStale_, v.options, v.width,
+                                   v.height);
+        if (v.error.empty()) {
+            v.texture = mapView_->texture();
+            v.textureWidth = mapView_->width();
+            v.textureHeight = mapView_->height();
+            v.shown = mapView_->shownRange();
+            v.gridShown = mapView_->gridShown();
+        }
+        lastMapOptions_ = v.options;
+        lastMapWidth_ = v.width;
+        lastMapHeight_ = v.height;
+        mapPictureStale_ = false;
+    }
+    v.hoverDepth.reset();
+    if (v.hoverTexel) v.hoverDepth = mapView_->depthAt(renderer_->shadowMap(), v.hoverTexel->x, v.hoverTexel->y);
+}
+
+void Editor::takeScreenshot() {
+    screenshotRequested_ = false;
+    if (target_.width() == 0 || !state_.haveStats) {
+        state_.lastScreenshot = "screenshot failed: nothing has been rendered yet";
+        state_.say(state_.lastScreenshot, true);
+        return;
+    }
+    const ScreenshotResult result =
+        writeScreenshot(target_, state_.screenshotDir, screenshotWithMap_ ? &renderer_->shadowMap() : nullptr);
+    if (!result.ok()) {
+        state_.lastScreenshot = "screenshot failed: " + result.error;
+        state_.say(state_.lastScreenshot, true);
+        return;
+    }
+    state_.lastScreenshot = result.viewPng;
+    std::string text = "screenshot: " + result.viewPng;
+    if (!result.shadowMapExr.empty()) text += " + " + result.shadowMapExr;
+    if (!result.shadowMapPng.empty()) text += " + " + result.shadowMapPng;
+    state_.say(text);
+}
+
+void Editor::refreshPresetList() {
+    state_.presetList = listPresets(options_.shippedPresetsDir, options_.userPresetsDir);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Actions
+
+void Editor::requestScene(const std::string& spec) {
+    if (spec.empty()) {
+        state_.say("scene: enter a .gltf / .glb path or pick a built-in scene", true);
+        return;
+    }
+    startSwitch({PendingSwitch::Scene, spec, false});
+}
+
+void Editor::requestPreset(const std::string& path, bool shipped) { startSwitch({PendingSwitch::Preset, path, shipped}); }
+
+void Editor::requestQuit() { startSwitch({PendingSwitch::Quit, {}, false}); }
+
+void Editor::startSwitch(PendingSwitch pending) {
+    if (state_.preset.dirty(state_.settings)) {
+        pendingSwitch_ = std::move(pending);
+        openUnsavedDialog_ = true;
+        return;
+    }
+    performSwitch(pending);
+}
+
+void Editor::performSwitch(const PendingSwitch& pending) {
+    switch (pending.kind) {
+        case PendingSwitch::Scene:
+            // Unsaved edits were declined (or there were none): the scene opens with the preset as saved.
+            state_.preset.revert(state_.settings);
+            loader_.request(pending.target);
+            state_.loading = loader_.progress();
+            break;
+        case PendingSwitch::Preset: {
+            if (std::string error = state_.preset.load(pending.target, pending.shipped, state_.settings);
+                !error.empty()) {
+                state_.say(error, true);
+                break;
+            }
+            state_.fieldErrors.clear();
+            if (state_.scene) orbit_.emplace(cameraFor(state_.settings.camera, *state_.scene), state_.scene->bounds);
+            state_.say("preset " + state_.preset.name() + " loaded from " + pending.target);
+            break;
+        }
+        case PendingSwitch::Quit:
+            quitConfirmed_ = true;
+            break;
+    }
+}
+
+void Editor::savePreset() {
+    if (!state_.preset.canSaveInPlace()) {
+        openSaveAs();
+        return;
+    }
+    if (std::string error = state_.preset.save(state_.settings); !error.empty()) {
+        state_.say(error, true);
+        return;
+    }
+    state_.say("saved preset " + state_.preset.path());
+}
+
+void Editor::openSaveAs() {
+    openSaveAsDialog_ = true;
+    const std::string& name = state_.preset.name();
+    saveAsName_ = state_.preset.canSaveInPlace() ? name
+                  : state_.preset.path().empty() ? std::string("my-preset")
+                                                 : name + "-tuned";
+    saveAsError_.clear();
+}
+
+void Editor::revertPreset() {
+    state_.preset.revert(state_.settings);
+    state_.fieldErrors.clear();
+    state_.say("reverted to preset " + state_.preset.name());
+}
+
+void Editor::requestScreenshot(bool withShadowMap) {
+    screenshotRequested_ = true;
+    screenshotWithMap_ = withShadowMap;
+}
+
+void Editor::frameScene() {
+    if (!orbit_ || !state_.scene) return;
+    const double aspect = viewportRect_.w > 0 ? double(viewportRect_.z) / double(viewportRect_.w) : 1.0;
+    orbit_->frame(state_.scene->bounds, aspect);
+}
+
+void Editor::dropFiles(const std::vector<std::string>& paths) {
+    for (const std::string& path : paths) {
+        if (isGltfPath(path)) {
+            requestScene(path);
+            return;
+        }
+    }
+    state_.say("dropped " + (paths.empty() ? std::string("nothing") : paths.front()) +
+                   ": not a .gltf / .glb file; the current scene stays",
+               true);
+}
+
+bool Editor::busy() const {
+    if (loader_.busy() || state_.animateLight || screenshotRequested_ || windowScreenshotPath_) return true;
+    if (!lastRendered_ || !state_.scene || !orbit_) return true;
+    const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
+                        state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
+                        state_.showLightFrustum};
+    return !(key == *lastRendered_) || mapPictureStale_;
+}
+
+std::optional<std::string> Editor::takeWindowScreenshotRequest() {
+    std::optional<std::string> path = std::move(windowScreenshotPath_);
+    windowScreenshotPath_.reset();
+    return path;
+}
+
+void Editor::windowScreenshotDone(const std::string& pathOrError, bool ok) {
+    state_.lastScreenshot = ok ? pathOrError : "window screenshot failed: " + pathOrError;
+    state_.say(ok ? "window screenshot: " + pathOrError : state_.lastScreenshot, !ok);
+}
+
+std::string Editor::windowTitle() const {
+    std::string title = "ShadowLab - " + (state_.scene ? state_.scene->name : state_.sceneSpec) + " - " +
+                        state_.preset.name();
+    if (state_.preset.dirty(state_.settings)) title += " *";
+    return title;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Helpers for hosts
+
+std::string writeFramebufferPng(const std::string& path, int width, int height) {
+    std::vector<std::uint8_t> pixels(std::size_t(width) * height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    for (std::size_t i = 3; i < pixels.size(); i += 4) pixels[i] = 255;  // the window is opaque
+    return writePng(path, width, height, 4, pixels.data(), true);
+}
+
+std::string windowScreenshotPath(const std::string& folder) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    const std::time_t t = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&t, &local);
+    char stamp[32];
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+    fs::path path = fs::path(folder) / (std::string("shadowlab-window-") + stamp + ".png");
+    for (int n = 2; fs::exists(path, ec); ++n)
+        path = fs::path(folder) / (std::string("shadowlab-window-") + stamp + "-" + std::to_string(n) + ".png");
+    return path.string();
+}
+
+}  // namespace shadowlab::editor

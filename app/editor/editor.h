@@ -1,0 +1,142 @@
+#pragma once
+// The editor without a window system: Dear ImGui panels around a viewport that shows the two-pass renderer. A host
+// (the GLFW window in app/editor_window, or a headless test) owns the GL and ImGui contexts and calls, per frame:
+//   editor.renderFrame();   // passes for what changed last frame (idle frames run none), map picture, screenshots
+//   ImGui::NewFrame(); editor.buildUi(); ImGui::Render();   // then draws ImGui's draw data
+// Rendering before the UI keeps every texture the UI shows valid for the frame that draws it.
+#include "editor/editor_state.h"
+#include "frame/orbit_camera.h"
+#include "frame/render_target.h"
+#include "frame/renderer.h"
+#include "overlay/light_frustum_overlay.h"
+#include "overlay/shadow_map_view.h"
+#include "scene/async_scene_loader.h"
+
+#include <imgui.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab::editor {
+
+struct EditorOptions {
+    std::string scene = kDefaultSceneSpec;  // "builtin:NAME" or a .gltf / .glb path
+    std::string preset;                     // a preset path or a shipped preset's name; empty = "default"
+    std::string shippedPresetsDir;          // empty = the source tree's presets/
+    std::string userPresetsDir;             // empty = userPresetsDir() (see settings/user_config.h)
+    std::string recentFilesPath;            // empty = recentFilesPath(); "-" = do not remember
+    std::string screenshotDir = "screenshots";
+};
+
+class Editor final : public EditorActions {
+public:
+    // Needs a current GL 4.5 context and an ImGui context. Throws std::runtime_error if the renderer cannot start.
+    // A preset that does not load is reported and built-in defaults are used.
+    explicit Editor(EditorOptions options);
+    ~Editor() override;
+
+    void renderFrame();
+    void buildUi();
+
+    // True while frames must keep coming without input (a scene loading, the light animating, a change not yet
+    // rendered); otherwise the host may sleep until the next event.
+    bool busy() const;
+    // Ctrl+Q or the window's close button: asks about unsaved changes first. quitConfirmed() once it may close.
+    void requestQuit();
+    bool quitConfirmed() const { return quitConfirmed_; }
+    // Files dropped onto the window: the first .gltf / .glb is loaded.
+    void dropFiles(const std::vector<std::string>& paths);
+    // Ctrl+F12: the host writes the whole window to this path after drawing it (then calls windowScreenshotDone).
+    std::optional<std::string> takeWindowScreenshotRequest();
+    void windowScreenshotDone(const std::string& pathOrError, bool ok);
+    std::string windowTitle() const;
+
+    EditorState& state() { return state_; }
+    const Renderer& renderer() const { return *renderer_; }
+    const RenderTarget& viewportTarget() const { return target_; }
+    const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
+    ImVec4 viewportRect() const { return viewportRect_; }  // x, y, w, h in window pixels
+
+    // EditorActions
+    void requestScene(const std::string& spec) override;
+    void requestPreset(const std::string& path, bool shipped) override;
+    void savePreset() override;
+    void openSaveAs() override;
+    void revertPreset() override;
+    void requestScreenshot(bool withShadowMap) override;
+    void frameScene() override;
+
+private:
+    struct PendingSwitch {
+        enum Kind { Scene, Preset, Quit } kind = Scene;
+        std::string target;
+        bool shipped = false;
+    };
+    // What the last rendered frame was made from; an identical next frame runs no pass.
+    struct RenderKey {
+        Settings settings;
+        glm::dvec3 eye{0.0}, target{0.0};
+        const Scene* scene = nullptr;
+        int width = 0, height = 0;
+        bool frustum = false;
+        bool operator==(const RenderKey&) const = default;
+    };
+
+    void pollSceneLoad();
+    void adoptScene(std::shared_ptr<const Scene> scene, const std::string& spec);
+    void renderViewport();
+    void renderMapPicture(bool mapRedrawn);
+    void takeScreenshot();
+    void refreshPresetList();
+    Settings effectiveSettings() const;  // the edited settings plus the light animation's preview
+
+    void handleShortcuts();
+    ImVec4 viewportWindowRect() const;
+    void drawViewport();
+    void viewportCameraInput(ImVec2 size);
+    void drawPanels();
+    void drawUnsavedChangesDialog();
+    void drawSaveAsDialog();
+    void drawStatusBar();
+    void performSwitch(const PendingSwitch& pending);
+    void startSwitch(PendingSwitch pending);
+
+    EditorOptions options_;
+    EditorState state_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<LightFrustumOverlay> frustum_;
+    std::unique_ptr<ShadowMapView> mapView_;
+    RenderTarget target_;
+    AsyncSceneLoader loader_;
+    std::optional<OrbitCamera> orbit_;
+    std::optional<RenderKey> lastRendered_;
+    bool cameraFromPreset_ = true;  // the next adopted scene / loaded preset sets the camera from the settings
+    ImVec4 viewportRect_{0, 0, 0, 0};  // the image area, where the renderer draws
+    std::vector<ImVec4> panelRects_;   // last frame's panel windows (x, y, w, h): the viewport fills the rest
+
+    std::optional<PendingSwitch> pendingSwitch_;  // waiting for the unsaved-changes answer
+    bool openUnsavedDialog_ = false;
+    bool openSaveAsDialog_ = false;
+    std::optional<PendingSwitch> afterSaveAs_;    // a switch to finish once Save As succeeded
+    std::string saveAsName_;
+    std::string saveAsError_;
+    bool quitConfirmed_ = false;
+
+    bool screenshotRequested_ = false;
+    bool screenshotWithMap_ = false;
+    std::optional<std::string> windowScreenshotPath_;
+    bool mapPictureStale_ = true;
+    ShadowMapViewOptions lastMapOptions_;
+    int lastMapWidth_ = 0, lastMapHeight_ = 0;
+    double lastRenderTime_ = 0.0;
+};
+
+// Reads the bound framebuffer (width x height, GL rows) and writes it as PNG; "" or why it failed.
+std::string writeFramebufferPng(const std::string& path, int width, int height);
+
+// "shadowlab-window-YYYYMMDD-HHMMSS.png" in `folder` (created if missing); never an existing file.
+std::string windowScreenshotPath(const std::string& folder);
+
+}  // namespace shadowlab::editor

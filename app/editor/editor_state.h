@@ -1,0 +1,116 @@
+#pragma once
+// What the editor's panels read and change: the edited Settings, the scene, the preset session, the last frame's
+// stats, messages and the named controls' rectangles. Panels change Settings only through edit().
+#include "editor/control_rects.h"
+#include "editor/preset_session.h"
+#include "editor/settings_edit.h"
+#include "frame/frame_stats.h"
+#include "overlay/shadow_map_view.h"
+#include "scene/async_scene_loader.h"
+#include "scene/scene.h"
+#include "settings/preset_catalog.h"
+#include "settings/recent_files.h"
+#include "settings/settings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shadowlab::editor {
+
+struct Message {
+    std::string text;
+    bool error = false;
+    double time = 0.0;  // seconds since the editor started
+};
+
+struct FrameHistory {
+    static constexpr std::size_t kLength = 120;
+    std::deque<float> frameMs;       // wall time of frames that rendered
+    std::deque<float> shadowPassMs;  // 0 where the shadow pass did not run
+    void push(float frame, float shadow);
+};
+
+// The Shadow map viewer panel's view of the map: options and size it asks for, the picture the editor made.
+struct MapViewerState {
+    ShadowMapViewOptions options;
+    MapZoomPan zoomPan;
+    int width = 0, height = 0;              // picture size the panel asks for (0 = panel hidden)
+    std::optional<glm::ivec2> hoverTexel;   // set by the panel; the editor reads the stored depth there
+    std::optional<float> hoverDepth;
+    unsigned texture = 0;                   // GL texture of the newest picture (0 = none)
+    int textureWidth = 0, textureHeight = 0;
+    ShownDepthRange shown;
+    bool gridShown = false;
+    std::string error;                      // why the newest picture could not be made
+};
+
+struct EditorState {
+    Settings settings;                              // what the next frame renders
+    std::map<std::string, std::string> fieldErrors;  // key -> why its last edit was refused (cleared on success)
+    EditLimits limits;
+
+    std::string sceneSpec;                // "builtin:textbook" or a path
+    std::shared_ptr<const Scene> scene;   // never null once the editor runs
+    PresetSession preset;
+
+    // View options that are not settings (they never mark the preset as changed).
+    bool showLightFrustum = true;
+    bool animateLight = false;
+    float animateDegreesPerSecond = 30.0f;
+    double animatedAzimuthDeg = 0.0;  // added to the light's azimuth while animating (a preview)
+
+    FrameStats stats;           // the newest frame the renderer drew
+    bool haveStats = false;
+    FrameHistory history;
+    long renderedFrames = 0;
+    long idleFrames = 0;        // frames where nothing changed and no pass ran
+    double lastFrameMs = 0.0;   // wall time of the newest rendered frame (renderer + readiness)
+
+    MapViewerState viewer;
+
+    // Scene panel
+    std::optional<SceneLoadProgress> loading;  // while a scene loads
+    RecentFiles recentFiles;
+    std::string scenePathInput;
+
+    // Presets panel
+    std::vector<PresetEntry> presetList;  // shipped first, then the user's
+    std::string userPresetsDir;
+
+    // Screenshots
+    std::string screenshotDir = "screenshots";
+    bool screenshotWithShadowMap = false;
+    std::string lastScreenshot;  // path of the newest screenshot, or why it failed
+
+    std::vector<Message> messages;  // newest last
+    ControlRects controls;
+    double time = 0.0;
+
+    // Applies an edit through the key table; on refusal records it under the key and as an error message.
+    bool edit(std::string_view key, const nlohmann::json& value);
+    void say(std::string text, bool error = false);
+    const std::string* fieldError(const std::string& key) const;
+    const Message* lastMessage() const { return messages.empty() ? nullptr : &messages.back(); }
+};
+
+// Requests panels make of the editor (scene and preset switches may first ask about unsaved changes).
+class EditorActions {
+public:
+    virtual ~EditorActions() = default;
+    virtual void requestScene(const std::string& spec) = 0;
+    virtual void requestPreset(const std::string& path, bool shipped) = 0;
+    virtual void savePreset() = 0;                      // in place, or opens Save As for shipped/unnamed presets
+    virtual void openSaveAs() = 0;
+    virtual void revertPreset() = 0;
+    virtual void requestScreenshot(bool withShadowMap) = 0;
+    virtual void frameScene() = 0;
+};
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,291 @@
+// The editor's UI for one frame: shortcuts, the viewport (behind everything, filling what the panels leave), the
+// panels from the registry, the unsaved-changes and Save As dialogs.
+#include "editor/editor.h"
+#include "editor/editor_keys.h"
+#include "editor/field_widgets.h"
+#include "editor/panels/panel_registry.h"
+
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace shadowlab::editor {
+
+namespace {
+
+constexpr float kToolbarHeight = 34.0f;
+constexpr float kStatusHeight = 26.0f;
+
+std::string presetNameProblem(const std::string& name) {
+    if (name.empty()) return "enter a name";
+    if (name.find_first_of("/\\") != std::string::npos) return "a name cannot contain / or \\";
+    if (name.front() == '.') return "a name cannot start with a dot";
+    return {};
+}
+
+}  // namespace
+
+void Editor::buildUi() {
+    state_.controls = ControlRects{};
+    state_.viewer.width = state_.viewer.height = 0;  // set again by the viewer panel when it is visible
+    state_.viewer.hoverTexel.reset();
+    handleShortcuts();
+    drawViewport();
+    drawPanels();
+    drawUnsavedChangesDialog();
+    drawSaveAsDialog();
+}
+
+void Editor::handleShortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsKeyPressed(keys::kF12, false)) {
+        if (io.KeyCtrl)
+            windowScreenshotPath_ = windowScreenshotPath(state_.screenshotDir);
+        else
+            requestScreenshot(state_.screenshotWithShadowMap);
+    }
+    if (io.KeyCtrl && ImGui::IsKeyPressed(keys::kS, false)) savePreset();
+    if (io.KeyCtrl && ImGui::IsKeyPressed(keys::kQ, false)) requestQuit();
+    if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed(keys::kF, false)) frameScene();
+}
+
+ImVec4 Editor::viewportWindowRect() const {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    float left = 0.0f, right = display.x, top = 0.0f, bottom = display.y;
+    if (panelRects_.empty()) {  // first frame: the first-run layout
+        left = leftColumnWidth(display);
+        right = display.x - rightColumnWidth(display);
+        bottom = display.y - bottomStripHeight(display);
+    }
+    // Panels near a side push that side in; panels in the middle push the top or bottom.
+    for (const ImVec4& r : panelRects_) {
+        const float cx = r.x + r.z * 0.5f, cy = r.y + r.w * 0.5f;
+        if (cx < display.x * 0.3f)
+            left = std::max(left, r.x + r.z);
+        else if (cx > display.x * 0.7f)
+            right = std::min(right, r.x);
+        else if (cy > display.y * 0.5f)
+            bottom = std::min(bottom, r.y);
+        else
+            top = std::max(top, r.y + r.w);
+    }
+    if (right - left < 160.0f || bottom - top < 120.0f) return ImVec4(0, 0, display.x, display.y);
+    return ImVec4(left, top, right - left, bottom - top);
+}
+
+void Editor::drawViewport() {
+    const ImVec4 rect = viewportWindowRect();
+    ImGui::SetNextWindowPos(ImVec2(rect.x, rect.y));
+    ImGui::SetNextWindowSize(ImVec2(rect.z, rect.w));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                                   ImGuiWindowFlags_NoScrollWithMouse;
+    ImGui::Begin("Viewport", nullptr, flags);
+    ImGui::PopStyleVar(3);
+
+    // Toolbar: what the view shows, the light's frustum, screenshots, framing.
+    ImGui::SetCursorPos(ImVec2(8, 6));
+    ImGui::SetNextItemWidth(130.0f);
+    comboField(state_, "view", "##view");
+    ImGui::SameLine();
+    ImGui::Checkbox("light frustum", &state_.showLightFrustum);
+    state_.controls.recordLastItem("viewport.frustum");
+    ImGui::SameLine();
+    if (ImGui::Button("Frame (F)")) frameScene();
+    state_.controls.recordLastItem("viewport.frame");
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot (F12)")) requestScreenshot(state_.screenshotWithShadowMap);
+    state_.controls.recordLastItem("viewport.screenshot");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Writes the viewport as PNG into %s/ (Ctrl+F12: the whole window)",
+                          state_.screenshotDir.c_str());
+    ImGui::SameLine();
+    ImGui::Checkbox("+ shadow map", &state_.screenshotWithShadowMap);
+    state_.controls.recordLastItem("viewport.screenshotWithMap");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Screenshots also write the shadow map as float EXR and PNG");
+
+    // The image: the renderer draws at exactly this size.
+    const ImVec2 origin = ImGui::GetWindowPos();
+    const ImVec2 imagePos(origin.x, origin.y + kToolbarHeight);
+    const ImVec2 imageSize(rect.z, std::max(0.0f, rect.w - kToolbarHeight - kStatusHeight));
+    viewportRect_ = ImVec4(imagePos.x, imagePos.y, std::floor(imageSize.x), std::floor(imageSize.y));
+    ImGui::SetCursorScreenPos(imagePos);
+    if (imageSize.x >= 1.0f && imageSize.y >= 1.0f) {
+        ImGui::InvisibleButton("##view", imageSize, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+        state_.controls.recordLastItem("viewport.image");
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        if (target_.width() > 0 && state_.haveStats) {
+            draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(target_.colorTexture())), imagePos,
+                           ImVec2(imagePos.x + imageSize.x, imagePos.y + imageSize.y), ImVec2(0, 1), ImVec2(1, 0));
+        } else {
+            draw->AddText(ImVec2(imagePos.x + 12, imagePos.y + 12), IM_COL32(200, 200, 200, 255),
+                          state_.loading ? "loading the scene..." : "no frame yet");
+        }
+        viewportCameraInput(imageSize);
+    }
+    drawStatusBar();
+    ImGui::End();
+}
+
+void Editor::viewportCameraInput(ImVec2 size) {
+    if (!orbit_) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+        if (io.MouseDown[2] || (io.MouseDown[0] && io.KeyShift))
+            orbit_->pan(io.MouseDelta.x, io.MouseDelta.y, int(size.y));
+        else if (io.MouseDown[0])
+            orbit_->orbit(io.MouseDelta.x, io.MouseDelta.y);
+    }
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) orbit_->zoom(io.MouseWheel);
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+        ImGui::SetTooltip("left drag: orbit   middle or Shift+left drag: pan   wheel: zoom   F: frame the scene");
+}
+
+void Editor::drawStatusBar() {
+    const ImVec2 size = ImGui::GetWindowSize();
+    ImGui::SetCursorPos(ImVec2(8, size.y - kStatusHeight + 4));
+    if (state_.loading) {
+        const SceneLoadProgress& p = *state_.loading;
+        ImGui::ProgressBar(float(std::fmod(p.elapsedSeconds, 1.0)), ImVec2(120, 16), "");
+        ImGui::SameLine();
+        ImGui::Text("loading %s (%s, %.1f s)", p.spec.c_str(), p.stage.c_str(), p.elapsedSeconds);
+        return;
+    }
+    if (const Message* m = state_.lastMessage()) {
+        if (m->error)
+            errorText(m->text);
+        else
+            ImGui::TextDisabled("%s", m->text.c_str());
+        state_.controls.recordLastItem("status");
+    }
+}
+
+void Editor::drawPanels() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    panelRects_.clear();
+    PanelContext ctx{state_, *this};
+    for (const Panel& panel : panels()) {
+        const PanelRect first = firstRunRect(panel, display);
+        ImGui::SetNextWindowPos(first.pos, ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(first.size, ImGuiCond_FirstUseEver);
+        // The title may carry the unsaved marker; "###" keeps the window's identity (and imgui.ini entry) stable.
+        std::string title = panel.title;
+        if (std::string(panel.title) == "Presets" && state_.preset.dirty(state_.settings)) title += " *";
+        title += std::string("###") + panel.title;
+        const bool open = ImGui::Begin(title.c_str());
+        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        panelRects_.emplace_back(pos.x, pos.y, size.x, size.y);
+        state_.controls.record(std::string("panel:") + panel.title, ControlRect{pos.x, pos.y, size.x, size.y});
+        if (open) panel.draw(ctx);
+        ImGui::End();
+    }
+}
+
+void Editor::drawUnsavedChangesDialog() {
+    if (openUnsavedDialog_) {
+        ImGui::OpenPopup("Unsaved changes");
+        openUnsavedDialog_ = false;
+    }
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!pendingSwitch_) {
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    const PendingSwitch pending = *pendingSwitch_;
+    ImGui::Text("The settings differ from preset \"%s\".", state_.preset.name().c_str());
+    if (pending.kind == PendingSwitch::Scene)
+        ImGui::Text("Save them before opening %s?", pending.target.c_str());
+    else if (pending.kind == PendingSwitch::Preset)
+        ImGui::Text("Save them before loading preset %s?", presetNameFromPath(pending.target).c_str());
+    else
+        ImGui::TextUnformatted("Save them before quitting?");
+    ImGui::Spacing();
+    const bool save = ImGui::Button("Save", ImVec2(110, 0));
+    state_.controls.recordLastItem("dialog.save");
+    ImGui::SameLine();
+    const bool discard = ImGui::Button("Don't save", ImVec2(110, 0));
+    state_.controls.recordLastItem("dialog.dontSave");
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    state_.controls.recordLastItem("dialog.cancel");
+    if (save || discard || cancel) {
+        ImGui::CloseCurrentPopup();
+        pendingSwitch_.reset();
+    }
+    ImGui::EndPopup();
+    if (save) {
+        if (state_.preset.canSaveInPlace()) {
+            savePreset();
+            if (!state_.preset.dirty(state_.settings)) performSwitch(pending);
+        } else {
+            afterSaveAs_ = pending;  // finished once Save As succeeds
+            openSaveAs();
+        }
+    } else if (discard) {
+        performSwitch(pending);
+    }
+}
+
+void Editor::drawSaveAsDialog() {
+    if (openSaveAsDialog_) {
+        ImGui::OpenPopup("Save preset as");
+        openSaveAsDialog_ = false;
+    }
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Save preset as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (state_.preset.shipped())
+        ImGui::Text("\"%s\" is a shipped preset (read-only): save a copy in your folder.", state_.preset.name().c_str());
+    ImGui::TextDisabled("folder: %s", state_.userPresetsDir.c_str());
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(300.0f);
+    bool submit = ImGui::InputText("name", &saveAsName_, ImGuiInputTextFlags_EnterReturnsTrue);
+    state_.controls.recordLastItem("saveAs.name");
+    ImGui::SameLine();
+    ImGui::TextDisabled(".json");
+    bool overwrite = false;
+    if (!saveAsError_.empty()) {
+        errorText(saveAsError_);
+        overwrite = ImGui::Button("Replace it");
+        state_.controls.recordLastItem("saveAs.replace");
+    }
+    submit |= ImGui::Button("Save", ImVec2(110, 0));
+    state_.controls.recordLastItem("saveAs.save");
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel", ImVec2(110, 0));
+    state_.controls.recordLastItem("saveAs.cancel");
+    if (submit || overwrite) {
+        saveAsError_ = presetNameProblem(saveAsName_);
+        if (saveAsError_.empty()) {
+            const std::string path = (std::filesystem::path(state_.userPresetsDir) / (saveAsName_ + ".json")).string();
+            saveAsError_ = state_.preset.saveAs(path, state_.settings, overwrite);
+            if (saveAsError_.empty()) {
+                state_.say("saved preset " + path);
+                refreshPresetList();
+                ImGui::CloseCurrentPopup();
+                if (afterSaveAs_) {
+                    const PendingSwitch pending = *afterSaveAs_;
+                    afterSaveAs_.reset();
+                    ImGui::EndPopup();
+                    performSwitch(pending);
+                    return;
+                }
+            }
+        }
+    }
+    if (cancel) {
+        afterSaveAs_.reset();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,105 @@
+#include "editor/field_widgets.h"
+
+#include "settings/settings_fields.h"
+
+#include <string>
+
+namespace shadowlab::editor {
+
+namespace {
+
+const SettingsField& fieldOf(const char* key) {
+    const SettingsField* field = findSettingsField(key);
+    IM_ASSERT(field && "editor control bound to an unknown preset key");
+    return *field;
+}
+
+// Shared tail of every bound control.
+void finishControl(EditorState& state, const char* key) {
+    state.controls.recordLastItem(key);
+    fieldHelp(state, key);
+    showFieldError(state, key);
+}
+
+}  // namespace
+
+bool sliderFloatField(EditorState& state, const char* key, const char* label, float lo, float hi, const char* format,
+                      ImGuiSliderFlags flags) {
+    const SettingsField& field = fieldOf(key);
+    float value = field.get(state.settings).get<float>();
+    bool changed = ImGui::SliderFloat(label, &value, lo, hi, format, flags) && state.edit(key, value);
+    finishControl(state, key);
+    return changed;
+}
+
+bool dragFloatField(EditorState& state, const char* key, const char* label, float speed, const char* format) {
+    const SettingsField& field = fieldOf(key);
+    float value = field.get(state.settings).get<float>();
+    // No clamping here: typed values outside the key's range reach the key table, which refuses them.
+    bool changed = ImGui::DragFloat(label, &value, speed, 0.0f, 0.0f, format) && state.edit(key, value);
+    finishControl(state, key);
+    return changed;
+}
+
+bool checkboxField(EditorState& state, const char* key, const char* label) {
+    const SettingsField& field = fieldOf(key);
+    bool value = field.get(state.settings).get<bool>();
+    bool changed = ImGui::Checkbox(label, &value) && state.edit(key, value);
+    finishControl(state, key);
+    return changed;
+}
+
+bool comboField(EditorState& state, const char* key, const char* label) {
+    const SettingsField& field = fieldOf(key);
+    const nlohmann::json current = field.get(state.settings);
+    std::vector<nlohmann::json> options;
+    if (field.kind == SettingsFieldKind::Enum)
+        for (const std::string& c : field.choices) options.emplace_back(c);
+    else
+        for (int c : field.intChoices) options.emplace_back(c);
+    auto text = [](const nlohmann::json& j) { return j.is_string() ? j.get<std::string>() : j.dump(); };
+
+    bool changed = false;
+    if (ImGui::BeginCombo(label, text(current).c_str())) {
+        for (std::size_t i = 0; i < options.size(); ++i) {
+            const bool selected = options[i] == current;
+            if (ImGui::Selectable(text(options[i]).c_str(), selected) && !selected)
+                changed = state.edit(key, options[i]);
+            state.controls.recordLastItem(std::string(key) + "=" + text(options[i]));
+            if (selected) ImGui::SetItemDefaultFocus();
+        }
+        ImGui::EndCombo();
+    }
+    finishControl(state, key);
+    return changed;
+}
+
+void fieldHelp(const EditorState&, const char* key) {
+    if (!ImGui::IsItemHovered()) return;
+    const SettingsField& field = fieldOf(key);
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(field.key.c_str());
+    ImGui::TextUnformatted(field.description.c_str());
+    ImGui::TextDisabled("allowed: %s", field.allowed.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+}
+
+void showFieldError(const EditorState& state, const char* key) {
+    if (const std::string* error = state.fieldError(key)) errorText(*error);
+}
+
+void warningText(const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+void errorText(const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+}  // namespace shadowlab::editor

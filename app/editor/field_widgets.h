@@ -1,0 +1,29 @@
+#pragma once
+// ImGui controls bound to a preset key: they show the current value from EditorState::settings, send a changed value
+// through EditorState::edit (the key table), show the field's description as a tooltip and the last refusal below,
+// and record their rectangle under the key's name (see ControlRects).
+#include "editor/editor_state.h"
+
+#include <imgui.h>
+
+namespace shadowlab::editor {
+
+// A slider over [lo, hi] (a comfortable range, not the key's whole one: Ctrl+click types any value, which the key
+// table accepts or refuses).
+bool sliderFloatField(EditorState& state, const char* key, const char* label, float lo, float hi,
+                      const char* format = "%.3f", ImGuiSliderFlags flags = 0);
+// A drag field for values without a natural range (bias units, world sizes).
+bool dragFloatField(EditorState& state, const char* key, const char* label, float speed, const char* format = "%.3f");
+bool checkboxField(EditorState& state, const char* key, const char* label);
+// A combo over the key's enum names (or its allowed integers).
+bool comboField(EditorState& state, const char* key, const char* label);
+
+// Tooltip with the key, its meaning and allowed values; and the key's last refusal, in red, under the control.
+void fieldHelp(const EditorState& state, const char* key);
+void showFieldError(const EditorState& state, const char* key);
+
+// Text in the theme's warning / error colours.
+void warningText(const std::string& text);
+void errorText(const std::string& text);
+
+}  // namespace shadowlab::editor

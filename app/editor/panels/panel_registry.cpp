@@ -1,0 +1,46 @@
+#include "editor/panels/panel_registry.h"
+
+#include <algorithm>
+
+namespace shadowlab::editor {
+
+const std::vector<Panel>& panels() {
+    static const std::vector<Panel> all = {
+        {"Scene", PanelColumn::Left, 0.17f, drawScenePanel},
+        {"Presets", PanelColumn::Left, 0.25f, drawPresetsPanel},
+        {"Light", PanelColumn::Left, 0.34f, drawLightPanel},
+        {"Projection", PanelColumn::Left, 0.24f, drawProjectionPanel},
+        {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel},
+        {"Sampling", PanelColumn::Right, 0.17f, drawSamplingPanel},
+        {"Shadow map viewer", PanelColumn::Right, 0.48f, drawShadowMapViewerPanel},
+        {"Stats", PanelColumn::Bottom, 1.0f, drawStatsPanel},
+    };
+    return all;
+}
+
+float leftColumnWidth(ImVec2 display) { return std::clamp(display.x * 0.23f, 300.0f, 400.0f); }
+float rightColumnWidth(ImVec2 display) { return std::clamp(display.x * 0.26f, 320.0f, 440.0f); }
+float bottomStripHeight(ImVec2 display) { return std::clamp(display.y * 0.24f, 170.0f, 240.0f); }
+
+PanelRect firstRunRect(const Panel& panel, ImVec2 display) {
+    const float left = leftColumnWidth(display);
+    const float right = rightColumnWidth(display);
+    if (panel.column == PanelColumn::Bottom) {
+        const float h = bottomStripHeight(display);
+        return {ImVec2(left, display.y - h), ImVec2(display.x - left - right, h)};
+    }
+    // Stack the column's panels in registry order.
+    float y = 0.0f;
+    for (const Panel& p : panels()) {
+        if (p.column != panel.column) continue;
+        const float h = p.share * display.y;
+        if (&p == &panel) {
+            const float x = panel.column == PanelColumn::Left ? 0.0f : display.x - right;
+            return {ImVec2(x, y), ImVec2(panel.column == PanelColumn::Left ? left : right, h)};
+        }
+        y += h;
+    }
+    return {ImVec2(0, 0), ImVec2(300, 200)};
+}
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,47 @@
+// Presets: the shipped presets (read-only) and the user's, load / save / save as / revert, the unsaved marker.
+#include "editor/field_widgets.h"
+#include "editor/panels/panel_registry.h"
+
+namespace shadowlab::editor {
+
+void drawPresetsPanel(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    const bool dirty = state.preset.dirty(state.settings);
+    ImGui::Text("%s%s", state.preset.name().c_str(), dirty ? " *" : "");
+    state.controls.recordLastItem("preset.current");
+    ImGui::SameLine();
+    if (dirty)
+        ImGui::TextDisabled("(unsaved changes)");
+    else if (state.preset.shipped())
+        ImGui::TextDisabled("(shipped, read-only)");
+
+    const float buttonsHeight = ImGui::GetFrameHeightWithSpacing() * 2.0f;
+    if (ImGui::BeginListBox("##presets", ImVec2(-1, std::max(60.0f, ImGui::GetContentRegionAvail().y - buttonsHeight)))) {
+        for (const PresetEntry& entry : state.presetList) {
+            const bool current = entry.path.string() == state.preset.path();
+            std::string label = entry.name + (entry.readOnly ? "" : "   (yours)");
+            if (ImGui::Selectable(label.c_str(), current) && !current)
+                ctx.actions.requestPreset(entry.path.string(), entry.readOnly);
+            state.controls.recordLastItem((entry.readOnly ? "preset.shipped=" : "preset.user=") + entry.name);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.path.string().c_str());
+        }
+        ImGui::EndListBox();
+    }
+
+    if (ImGui::Button("Save (Ctrl+S)")) ctx.actions.savePreset();
+    state.controls.recordLastItem("preset.save");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(state.preset.canSaveInPlace() ? "Write %s" : "Shipped presets are read-only: asks for a name",
+                          state.preset.path().c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Save As...")) ctx.actions.openSaveAs();
+    state.controls.recordLastItem("preset.saveAs");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!dirty);
+    if (ImGui::Button("Revert")) ctx.actions.revertPreset();
+    ImGui::EndDisabled();
+    state.controls.recordLastItem("preset.revert");
+    ImGui::TextDisabled("yours: %s", state.userPresetsDir.c_str());
+}
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,81 @@
+// Shadow map: resolution (quick picks + custom, capped at GL_MAX_TEXTURE_SIZE), depth format, the three D3D bias
+// values, normal offset and cull mode; beside the bias, what it amounts to in depth steps, texels and world units.
+#include "editor/field_widgets.h"
+#include "editor/panels/panel_registry.h"
+#include "shadow/shadow_map.h"
+
+#include <string>
+
+namespace shadowlab::editor {
+
+namespace {
+
+void resolutionControls(EditorState& state) {
+    static constexpr struct {
+        const char* label;
+        int size;
+    } kPicks[] = {{"256", 256}, {"512", 512}, {"1K", 1024}, {"2K", 2048}, {"4K", 4096}, {"8K", 8192}};
+    const int current = state.settings.shadow.resolution;
+    const int maxSize = state.limits.maxTextureSize;
+    ImGui::TextUnformatted("resolution");
+    for (const auto& pick : kPicks) {
+        ImGui::SameLine();
+        const bool selected = pick.size == current;
+        const bool tooBig = maxSize > 0 && pick.size > maxSize;
+        if (selected) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        ImGui::BeginDisabled(tooBig);
+        if (ImGui::SmallButton(pick.label) && !selected) state.edit("shadow.resolution", pick.size);
+        ImGui::EndDisabled();
+        if (selected) ImGui::PopStyleColor();
+        state.controls.recordLastItem(std::string("shadow.resolution=") + pick.label);
+        if (tooBig && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("above this GPU's GL_MAX_TEXTURE_SIZE (%d)", maxSize);
+    }
+    int custom = current;
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+    if (ImGui::InputInt("custom (Enter)", &custom, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue) && custom != current)
+        state.edit("shadow.resolution", custom);
+    state.controls.recordLastItem("shadow.resolution");
+    fieldHelp(state, "shadow.resolution");
+    ImGui::SameLine();
+    ImGui::TextDisabled("max %d", maxSize);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("GL_MAX_TEXTURE_SIZE of this GPU");
+    showFieldError(state, "shadow.resolution");
+    if (state.haveStats)
+        ImGui::TextDisabled("map: %d x %d %s, %.1f MiB", state.stats.shadowMapResolution,
+                            state.stats.shadowMapResolution, depthFormatName(state.stats.shadowMapFormat),
+                            double(state.stats.shadowMapBytes) / (1024.0 * 1024.0));
+}
+
+void biasAmounts(const EditorState& state) {
+    if (!state.haveStats) return;
+    const BiasAmount& b = state.stats.bias;
+    ImGui::TextDisabled("constant bias = %.3g depth = %.3g world = %.3g texels", b.constantDepth, b.constantWorld,
+                        b.constantTexels);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("DepthBias x the format's depth step (%.3g), along the light in world units, and in "
+                          "shadow-map texels (one texel = %.4g world units)",
+                          b.depthStep, b.texelWorldSize);
+    ImGui::TextDisabled("normal offset = %.3g world units; texel = %.4g world units", b.normalOffsetWorld,
+                        b.texelWorldSize);
+}
+
+}  // namespace
+
+void drawShadowMapPanel(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    resolutionControls(state);
+    ImGui::PushItemWidth(-175.0f);
+    comboField(state, "shadow.depthFormat", "depth format");
+    ImGui::Separator();
+    dragFloatField(state, "shadow.depthBias", "DepthBias (units)", 1.0f, "%.1f");
+    sliderFloatField(state, "shadow.slopeScaledDepthBias", "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");
+    dragFloatField(state, "shadow.depthBiasClamp", "DepthBiasClamp", 0.0001f, "%.5f");
+    sliderFloatField(state, "shadow.normalOffset", "normal offset (texels)", 0.0f, 4.0f, "%.2f");
+    biasAmounts(state);
+    ImGui::Separator();
+    comboField(state, "shadow.cullMode", "cull (shadow pass)");
+    ImGui::PopItemWidth();
+}
+
+}  // namespace shadowlab::editor

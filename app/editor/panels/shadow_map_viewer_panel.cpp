@@ -1,0 +1,93 @@
+// Shadow map viewer: the depth map as a picture with contrast / linearization, wheel zoom about the cursor, drag
+// to pan, a texel grid when zoomed in, and the texel and stored depth under the cursor.
+#include "editor/field_widgets.h"
+#include "editor/panels/panel_registry.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace shadowlab::editor {
+
+namespace {
+
+void contrastControls(MapViewerState& v, bool spot, EditorState& state) {
+    int contrast = int(v.options.contrast);
+    ImGui::TextUnformatted("contrast");
+    ImGui::SameLine();
+    ImGui::RadioButton("auto", &contrast, int(DepthContrast::Auto));
+    state.controls.recordLastItem("viewer.auto");
+    ImGui::SameLine();
+    ImGui::RadioButton("full", &contrast, int(DepthContrast::Full));
+    state.controls.recordLastItem("viewer.full");
+    ImGui::SameLine();
+    ImGui::RadioButton("manual", &contrast, int(DepthContrast::Manual));
+    state.controls.recordLastItem("viewer.manual");
+    v.options.contrast = DepthContrast(contrast);
+    if (spot) {
+        ImGui::SameLine();
+        ImGui::Checkbox("linear", &v.options.linearize);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show distance from the light instead of stored depth");
+    } else {
+        v.options.linearize = false;  // orthographic depth is already linear
+    }
+    if (v.options.contrast == DepthContrast::Manual) {
+        ImGui::SetNextItemWidth(-1);
+        ImGui::DragFloatRange2("##range", &v.options.manualMin, &v.options.manualMax, 0.001f, 0.0f, 1.0f, "min %.4f",
+                               "max %.4f", ImGuiSliderFlags_AlwaysClamp);
+        if (v.options.manualMax <= v.options.manualMin) v.options.manualMax = std::min(1.0f, v.options.manualMin + 1e-4f);
+    }
+}
+
+}  // namespace
+
+void drawShadowMapViewerPanel(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    MapViewerState& v = state.viewer;
+    const bool spot = state.haveStats && state.stats.light.perspective;
+    contrastControls(v, spot, state);
+    ImGui::Checkbox("texel grid", &v.options.texelGrid);
+    ImGui::SameLine();
+    ImGui::Text("zoom %.2gx", v.zoomPan.zoom());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("fit")) v.zoomPan.reset();
+    state.controls.recordLastItem("viewer.fit");
+
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    const float side = std::floor(std::max(0.0f, std::min(avail.x, avail.y - ImGui::GetTextLineHeightWithSpacing())));
+    if (side < 16.0f || !state.haveStats) return;
+    const int size = int(side);
+    v.width = v.height = size;
+    const int resolution = state.stats.shadowMapResolution;
+
+    const ImVec2 pos = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##map", ImVec2(side, side));
+    state.controls.recordLastItem("viewer.image");
+    if (v.texture != 0 && v.textureWidth == size) {
+        ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(v.texture)), pos,
+                                             ImVec2(pos.x + side, pos.y + side), ImVec2(0, 1), ImVec2(1, 0));
+    } else {
+        ImGui::GetWindowDrawList()->AddRect(pos, ImVec2(pos.x + side, pos.y + side), IM_COL32(90, 90, 90, 255));
+    }
+
+    const ImGuiIO& io = ImGui::GetIO();
+    const double mx = io.MousePos.x - pos.x, my = io.MousePos.y - pos.y;
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)
+        v.zoomPan.zoomAt(mx, my, io.MouseWheel > 0 ? 1.25 : 0.8, size, size, resolution);
+    if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+        v.zoomPan.pan(io.MouseDelta.x, io.MouseDelta.y, size, size);
+    v.options.visible = v.zoomPan.visibleRect(size, size);
+    if (ImGui::IsItemHovered()) v.hoverTexel = texelAtView(v.options.visible, mx, my, size, size, resolution);
+
+    if (!v.error.empty()) {
+        errorText(v.error);
+    } else if (v.hoverTexel && v.hoverDepth) {
+        ImGui::Text("texel (%d, %d): depth %.6f%s", v.hoverTexel->x, v.hoverTexel->y, double(*v.hoverDepth),
+                    *v.hoverDepth >= 1.0f ? " (no caster)" : "");
+    } else {
+        ImGui::TextDisabled("%d² | black %.4g .. white %.4g%s | wheel: zoom, drag: pan", resolution,
+                            double(v.shown.min), double(v.shown.max), v.gridShown ? " | grid" : "");
+    }
+    state.controls.recordLastItem("viewer.info");
+}
+
+}  // namespace shadowlab::editor

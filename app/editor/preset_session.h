@@ -1,0 +1,40 @@
+#pragma once
+// Which preset the editor's settings came from, and whether they changed since: shipped presets are read-only
+// (saving one asks for a new name in the user folder), user presets are saved in place, atomically.
+#include "settings/settings.h"
+
+#include <string>
+
+namespace shadowlab::editor {
+
+class PresetSession {
+public:
+    // Starts from built-in defaults, named "default" but not backed by a file: Save asks for a name.
+    explicit PresetSession(Settings baseline = {}) : baseline_(std::move(baseline)) {}
+
+    // Loads a preset file. On error returns why and leaves the session and `settings` untouched.
+    std::string load(const std::string& path, bool shipped, Settings& settings);
+    // Saves to the current file. Refused (with a reason) for shipped presets and unnamed sessions: use saveAs.
+    std::string save(const Settings& settings);
+    // Saves to `path` (refuses to replace an existing file unless `overwrite`) and makes it the current preset.
+    std::string saveAs(const std::string& path, const Settings& settings, bool overwrite);
+    void revert(Settings& settings) const { settings = baseline_; }
+
+    bool dirty(const Settings& settings) const { return !(settings == baseline_); }
+    bool canSaveInPlace() const { return !path_.empty() && !shipped_; }
+    const std::string& path() const { return path_; }
+    const std::string& name() const { return name_; }
+    bool shipped() const { return shipped_; }
+    const Settings& baseline() const { return baseline_; }
+
+private:
+    Settings baseline_;         // the settings as last loaded or saved
+    std::string path_;          // empty: not backed by a file
+    std::string name_ = "built-in defaults";
+    bool shipped_ = false;
+};
+
+// "acne" for ".../presets/acne.json".
+std::string presetNameFromPath(const std::string& path);
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,20 @@
+#pragma once
+// The one way the editor changes Settings: the key table's SettingsField::set, then Settings::validate() on the
+// result. A refusal leaves the settings exactly as they were and says why, naming the key, like presets and --set.
+#include "settings/settings.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace shadowlab::editor {
+
+struct EditLimits {
+    int maxTextureSize = 0;  // GL_MAX_TEXTURE_SIZE of the editor's context; 0 = unknown (no extra cap)
+};
+
+// Applies `value` to `key` in `settings`. Returns "" when applied, else the refusal (settings untouched).
+std::string applyEdit(Settings& settings, std::string_view key, const nlohmann::json& value, const EditLimits& limits);
+
+}  // namespace shadowlab::editor
