@@ -2,6 +2,7 @@
 #include "cli/bench_command.h"
 #include "cli/info_command.h"
 #include "cli/render_command.h"
+#include "editor_window/edit_command.h"
 #include "settings/settings_fields.h"
 
 #include <CLI/CLI.hpp>
@@ -41,6 +42,14 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
 
+    editor_window::EditOptions edit;
+    CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
+    editCmd->add_option("--scene", edit.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    editCmd->add_option("--preset", edit.preset, "a preset JSON path, or the name of a shipped or user preset");
+    editCmd->add_option("--width", edit.width, "window width")->capture_default_str()->check(CLI::Range(320, 16384));
+    editCmd->add_option("--height", edit.height, "window height")->capture_default_str()->check(CLI::Range(240, 16384));
+    editCmd->add_option("--screenshot-dir", edit.screenshotDir, "where F12 writes screenshots")->capture_default_str();
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -53,6 +62,7 @@ int main(int argc, char** argv) {
 
     if (*renderCmd) return cli::runRender(render);
     if (*benchCmd) return cli::runBench(bench);
+    if (*editCmd) return editor_window::runEdit(edit);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {
@@ -60,11 +70,6 @@ int main(int argc, char** argv) {
             std::cout << field.key << "  " << field.allowed << "  " << field.description << "\n";
         return 0;
     }
-    // No subcommand: until the editor exists, render the built-in default scene and say where it went.
-    cli::RenderOptions defaults;
-    defaults.out = "shadowlab-default.png";
-    defaults.shadowMapPng = "shadowlab-default-shadow-map.png";
-    std::cout << "shadowlab: no command given; rendering the built-in default scene headless "
-                 "(`shadowlab --help` lists the commands)\n";
-    return cli::runRender(defaults);
+    // No subcommand: the editor on the built-in default scene.
+    return editor_window::runEdit(edit);
 }
