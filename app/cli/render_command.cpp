@@ -5,10 +5,10 @@
 #include "context/headless_context.h"
 #include "frame/renderer.h"
 #include "gl/gl_errors.h"
-#include "image/depth_visualization.h"
 #include "image/image_io.h"
 #include "scene/scene_source.h"
 #include "settings/settings_fields.h"
+#include "shadow/shadow_map_files.h"
 
 #include <iostream>
 
@@ -64,24 +64,13 @@ int runRender(const RenderOptions& options) {
 
         if (!options.shadowMapExr.empty() || !options.shadowMapPng.empty()) {
             const ShadowMap& map = renderer.shadowMap();
-            const std::vector<float> depth = map.readDepth();
-            if (!options.shadowMapExr.empty()) {
-                if (std::string error = writeExrDepth(options.shadowMapExr, map.resolution(), map.resolution(),
-                                                      depth.data(), true);
-                    !error.empty())
-                    return fail(error);
+            const ShadowMapFilesResult files = writeShadowMapFiles(map, options.shadowMapExr, options.shadowMapPng);
+            if (!files.ok()) return fail(files.error);
+            if (!options.shadowMapExr.empty())
                 std::cout << "wrote " << options.shadowMapExr << " (" << map.resolution() << "² float depth)\n";
-            }
-            if (!options.shadowMapPng.empty()) {
-                const DepthRange range = writtenDepthRange(depth);
-                const std::vector<std::uint8_t> gray = depthToGray(depth, range);
-                if (std::string error = writePng(options.shadowMapPng, map.resolution(), map.resolution(), 1,
-                                                 gray.data(), true);
-                    !error.empty())
-                    return fail(error);
-                std::cout << "wrote " << options.shadowMapPng << " (depth " << range.min << " .. " << range.max
-                          << " stretched to black .. light grey; white = no caster)\n";
-            }
+            if (!options.shadowMapPng.empty())
+                std::cout << "wrote " << options.shadowMapPng << " (depth " << files.pngRange.min << " .. "
+                          << files.pngRange.max << " stretched to black .. light grey; white = no caster)\n";
         }
     } catch (const std::exception& e) {
         return fail(e.what());

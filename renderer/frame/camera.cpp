@@ -40,10 +40,16 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene) {
         camera.position = settings.position;
         camera.target = settings.target;
     }
+    fitDepthRange(camera, bounds);
+    return camera;
+}
+
+void fitDepthRange(Camera& camera, const Bounds& bounds) {
+    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
+    const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
     const double reach = glm::length(camera.position - center) + radius;
     camera.farPlane = reach * 1.05;
     camera.nearPlane = std::max(camera.farPlane * 1e-4, 1e-4);
-    return camera;
 }
 
 }  // namespace shadowlab

@@ -24,4 +24,8 @@ struct Camera {
 // preferred side (camera.autoFrame). Near/far always follow the scene's size so depth precision suits it.
 Camera cameraFor(const CameraSettings& settings, const Scene& scene);
 
+// Sets near/far so the whole of `bounds` lies between them from the camera's position, with the near plane as far
+// out as that allows (depth precision follows the scene's size).
+void fitDepthRange(Camera& camera, const Bounds& bounds);
+
 }  // namespace shadowlab

@@ -1,0 +1,123 @@
+#include "overlay/light_frustum_overlay.h"
+
+#include "gl/program.h"
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr int kConeSegments = 48;
+
+glm::dvec3 unproject(const glm::dmat4& inverse, const glm::dvec3& ndc) {
+    const glm::dvec4 p = inverse * glm::dvec4(ndc, 1.0);
+    return glm::dvec3(p) / p.w;
+}
+
+void addLine(std::vector<glm::dvec3>& lines, const glm::dvec3& a, const glm::dvec3& b) {
+    lines.push_back(a);
+    lines.push_back(b);
+}
+
+}  // namespace
+
+std::vector<glm::dvec3> lightVolumeCorners(const LightSpace& light) {
+    const glm::dmat4 inverse = glm::inverse(light.viewProjection());
+    const double xy[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    std::vector<glm::dvec3> corners;
+    for (double z : {-1.0, 1.0})
+        for (const auto& c : xy) corners.push_back(unproject(inverse, {c[0], c[1], z}));
+    return corners;
+}
+
+std::vector<glm::dvec3> lightVolumeLines(const LightSpace& light) {
+    const std::vector<glm::dvec3> c = lightVolumeCorners(light);
+    std::vector<glm::dvec3> lines;
+    for (int i = 0; i < 4; ++i) {
+        addLine(lines, c[i], c[(i + 1) % 4]);          // near face
+        addLine(lines, c[4 + i], c[4 + (i + 1) % 4]);  // far face
+    }
+    const glm::dmat4 lightToWorld = glm::inverse(light.view);
+    const glm::dvec3 farCenter = (c[4] + c[5] + c[6] + c[7]) * 0.25;
+    if (light.perspective) {
+        // The pyramid from the light itself (through the near corners) and the cone's circle on the far plane.
+        const glm::dvec3 apex = glm::dvec3(lightToWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+        for (int i = 0; i < 4; ++i) addLine(lines, apex, c[4 + i]);
+        addLine(lines, apex, farCenter);
+        const double radius = light.farPlane * light.tanHalfFov;
+        glm::dvec3 previous{};
+        for (int i = 0; i <= kConeSegments; ++i) {
+            const double a = 2.0 * M_PI * i / kConeSegments;
+            const glm::dvec3 p = glm::dvec3(
+                lightToWorld * glm::dvec4(radius * std::cos(a), radius * std::sin(a), -light.farPlane, 1.0));
+            if (i > 0) addLine(lines, previous, p);
+            previous = p;
+        }
+    } else {
+        // The box's side edges, and the light's direction through its centre.
+        for (int i = 0; i < 4; ++i) addLine(lines, c[i], c[4 + i]);
+        addLine(lines, (c[0] + c[1] + c[2] + c[3]) * 0.25, farCenter);
+    }
+    return lines;
+}
+
+LightFrustumOverlay::LightFrustumOverlay()
+    : program_(gl::buildProgram({{GL_VERTEX_SHADER, "overlay_lines.vert.glsl"},
+                                 {GL_FRAGMENT_SHADER, "overlay_lines.frag.glsl"}},
+                                {})),
+      vertexArray_(gl::createVertexArray()),
+      vertices_(gl::createBuffer()) {
+    viewProjectionLocation_ = glGetUniformLocation(program_.id(), "uViewProjection");
+    colorLocation_ = glGetUniformLocation(program_.id(), "uColor");
+    glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
+    glEnableVertexArrayAttrib(vertexArray_.id(), 0);
+    glVertexArrayAttribFormat(vertexArray_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vertexArray_.id(), 0, 0);
+}
+
+std::string LightFrustumOverlay::draw(const FrameStats& stats, RenderTarget& target, const FrustumOverlayStyle& style) {
+    if (!stats.ok) return "no light volume to draw: the frame was not rendered (" + stats.error + ")";
+    if (!allFinite(stats.light.viewProjection()) || !allFinite(stats.cameraViewProjection))
+        return "no light volume to draw: the light's or the camera's matrices are not finite";
+    if (target.width() < 1) return "no light volume to draw: the view has no size";
+
+    std::vector<glm::vec3> points;
+    for (const glm::dvec3& p : lightVolumeLines(stats.light)) points.emplace_back(p);
+    glNamedBufferData(vertices_.id(), GLsizeiptr(points.size() * sizeof(glm::vec3)), points.data(), GL_STREAM_DRAW);
+
+    glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
+    glViewport(0, 0, target.width(), target.height());
+    glUseProgram(program_.id());
+    glBindVertexArray(vertexArray_.id());
+    glUniformMatrix4fv(viewProjectionLocation_, 1, GL_FALSE, glm::value_ptr(glm::mat4(stats.cameraViewProjection)));
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    // The volume usually reaches past the camera's far plane (it encloses the scene's bounding sphere): clamp
+    // depth instead of clipping, so those parts are drawn (behind everything) rather than cut off.
+    glEnable(GL_DEPTH_CLAMP);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    if (style.hiddenAlpha > 0.0f) {
+        glDepthFunc(GL_GREATER);  // behind the scene's surfaces
+        glUniform4f(colorLocation_, style.color.r, style.color.g, style.color.b, style.color.a * style.hiddenAlpha);
+        glDrawArrays(GL_LINES, 0, GLsizei(points.size()));
+    }
+    glDepthFunc(GL_LEQUAL);
+    glUniform4fv(colorLocation_, 1, glm::value_ptr(style.color));
+    glDrawArrays(GL_LINES, 0, GLsizei(points.size()));
+
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_CLAMP);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    return {};
+}
+
+}  // namespace shadowlab
