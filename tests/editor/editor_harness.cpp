@@ -1,0 +1,238 @@
+#include "editor_harness.h"
+
+#include "context/headless_context.h"
+#include "editor/editor_style.h"
+#include "gl/gl_errors.h"
+#include "image/image_io.h"
+
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <memory>
+
+namespace shadowlab::editor::test {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+HeadlessContext& sharedContext() {
+    static HeadlessContext context(/*debug=*/true);
+    static bool debugInstalled = (gl::enableDebugOutput(), true);
+    (void)debugInstalled;
+    return context;
+}
+
+// GLFW's key codes for the keys ImGui's widgets use (ImGui 1.86 looks them up through io.KeyMap).
+constexpr int kGlfwTab = 258, kGlfwLeft = 263, kGlfwRight = 262, kGlfwUp = 265, kGlfwDown = 264, kGlfwPageUp = 266,
+              kGlfwPageDown = 267, kGlfwHome = 268, kGlfwEnd = 269, kGlfwInsert = 260, kGlfwDelete = 261,
+              kGlfwBackspace = 259, kGlfwSpace = 32, kGlfwEnter = 257, kGlfwEscape = 256, kGlfwKpEnter = 335;
+
+}  // namespace
+
+fs::path testFolder(const std::string& name) {
+    const fs::path folder = fs::path(SHADOWLAB_TEST_OUTPUT) / "editor" / name;
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    return folder;
+}
+
+EditorOptions testOptions(const fs::path& folder) {
+    EditorOptions options;
+    options.scene = "builtin:textbook";
+    options.preset = "default";
+    options.shippedPresetsDir = std::string(SHADOWLAB_SOURCE_DIR) + "/presets";
+    options.userPresetsDir = (folder / "user-presets").string();
+    options.recentFilesPath = (folder / "recent-files.json").string();
+    options.screenshotDir = (folder / "screenshots").string();
+    return options;
+}
+
+EditorHarness::EditorHarness(const EditorOptions& options, int width, int height) : width_(width), height_(height) {
+    sharedContext().makeCurrent();
+    gl::takeDebugErrors();
+    gl::drainErrors();
+
+    imguiContext_ = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // tests start from the first-run layout every time
+    io.DisplaySize = ImVec2(float(width), float(height));
+    io.DeltaTime = 1.0f / 60.0f;
+    const int map[][2] = {{ImGuiKey_Tab, kGlfwTab},         {ImGuiKey_LeftArrow, kGlfwLeft},
+                          {ImGuiKey_RightArrow, kGlfwRight}, {ImGuiKey_UpArrow, kGlfwUp},
+                          {ImGuiKey_DownArrow, kGlfwDown},   {ImGuiKey_PageUp, kGlfwPageUp},
+                          {ImGuiKey_PageDown, kGlfwPageDown}, {ImGuiKey_Home, kGlfwHome},
+                          {ImGuiKey_End, kGlfwEnd},          {ImGuiKey_Insert, kGlfwInsert},
+                          {ImGuiKey_Delete, kGlfwDelete},    {ImGuiKey_Backspace, kGlfwBackspace},
+                          {ImGuiKey_Space, kGlfwSpace},      {ImGuiKey_Enter, kGlfwEnter},
+                          {ImGuiKey_Escape, kGlfwEscape},    {ImGuiKey_KeyPadEnter, kGlfwKpEnter},
+                          {ImGuiKey_A, 'A'}, {ImGuiKey_C, 'C'}, {ImGuiKey_V, 'V'}, {ImGuiKey_X, 'X'},
+                          {ImGuiKey_Y, 'Y'}, {ImGuiKey_Z, 'Z'}};
+    for (const auto& [imguiKey, code] : map) io.KeyMap[imguiKey] = code;
+    applyEditorStyle();
+    EXPECT_TRUE(ImGui_ImplOpenGL3_Init("#version 450 core"));
+
+    glCreateTextures(GL_TEXTURE_2D, 1, &colorTexture_);
+    glTextureStorage2D(colorTexture_, 1, GL_RGBA8, width, height);
+    glCreateFramebuffers(1, &fbo_);
+    glNamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT0, colorTexture_, 0);
+    EXPECT_EQ(glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+
+    editor_ = std::make_unique<Editor>(options);
+}
+
+EditorHarness::~EditorHarness() {
+    editor_.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext(static_cast<ImGuiContext*>(imguiContext_));
+    glDeleteFramebuffers(1, &fbo_);
+    glDeleteTextures(1, &colorTexture_);
+    for (const std::string& e : gl::takeDebugErrors()) ADD_FAILURE() << "GL debug error: " << e;
+}
+
+void EditorHarness::frame(int count) {
+    for (int i = 0; i < count; ++i) {
+        editor_->renderFrame();
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui::NewFrame();
+        editor_->buildUi();
+        ImGui::Render();
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+        glViewport(0, 0, width_, height_);
+        glClearColor(0.09f, 0.09f, 0.10f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        // The IO is per frame: a wheel turn is seen once.
+        ImGui::GetIO().MouseWheel = 0.0f;
+    }
+}
+
+void EditorHarness::settle(int maxFrames) {
+    for (int i = 0; i < maxFrames; ++i) {
+        frame();
+        if (state().scene && !editor_->busy()) {
+            frame(2);
+            return;
+        }
+    }
+    ADD_FAILURE() << "the editor did not settle in " << maxFrames << " frames";
+}
+
+void EditorHarness::moveMouse(float x, float y) {
+    ImGui::GetIO().MousePos = ImVec2(x, y);
+    frame();
+}
+
+void EditorHarness::clickAt(float x, float y, int button) {
+    moveMouse(x, y);
+    ImGui::GetIO().MouseDown[button] = true;
+    frame();
+    ImGui::GetIO().MouseDown[button] = false;
+    frame(2);
+}
+
+void EditorHarness::click(const std::string& control, int button) {
+    const ControlRect r = rect(control);
+    clickAt(r.centerX(), r.centerY(), button);
+}
+
+void EditorHarness::ctrlClick(const std::string& control) {
+    setKey(keys::kLeftControl, true);
+    click(control);
+    setKey(keys::kLeftControl, false);
+    frame();
+}
+
+void EditorHarness::drag(const std::string& control, float dx, float dy, int button, int steps, bool shift) {
+    const ControlRect r = rect(control);
+    if (shift) setKey(keys::kLeftShift, true);
+    moveMouse(r.centerX(), r.centerY());
+    ImGui::GetIO().MouseDown[button] = true;
+    frame();
+    for (int i = 1; i <= steps; ++i) moveMouse(r.centerX() + dx * float(i) / float(steps), r.centerY() + dy * float(i) / float(steps));
+    ImGui::GetIO().MouseDown[button] = false;
+    frame(2);
+    if (shift) setKey(keys::kLeftShift, false);
+}
+
+void EditorHarness::wheel(const std::string& control, float steps) {
+    const ControlRect r = rect(control);
+    moveMouse(r.centerX(), r.centerY());
+    ImGui::GetIO().MouseWheel = steps;
+    frame(2);
+}
+
+void EditorHarness::setKey(int key, bool down) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeysDown[key] = down;
+    io.KeyCtrl = io.KeysDown[keys::kLeftControl];
+    io.KeyShift = io.KeysDown[keys::kLeftShift];
+}
+
+void EditorHarness::pressKey(int key, bool ctrl, bool shift) {
+    if (ctrl) setKey(keys::kLeftControl, true);
+    if (shift) setKey(keys::kLeftShift, true);
+    setKey(key, true);
+    frame();
+    setKey(key, false);
+    frame();
+    if (ctrl) setKey(keys::kLeftControl, false);
+    if (shift) setKey(keys::kLeftShift, false);
+    frame();
+}
+
+void EditorHarness::typeText(const std::string& text) {
+    ImGui::GetIO().AddInputCharactersUTF8(text.c_str());
+    frame();
+}
+
+void EditorHarness::selectAllAndType(const std::string& text) {
+    pressKey('A', /*ctrl=*/true);
+    typeText(text);
+    pressKey(kGlfwEnter);
+}
+
+ControlRect EditorHarness::rect(const std::string& name) const {
+    const ControlRect* r = state().controls.find(name);
+    if (!r) {
+        ADD_FAILURE() << "control " << name << " was not drawn";
+        return {};
+    }
+    return *r;
+}
+
+std::vector<std::uint8_t> EditorHarness::readWindow() const {
+    std::vector<std::uint8_t> rgba(std::size_t(width_) * height_ * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureImage(colorTexture_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
+    // GL rows are bottom first; callers think top first.
+    std::vector<std::uint8_t> flipped(rgba.size());
+    const std::size_t row = std::size_t(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+        std::copy_n(rgba.begin() + std::ptrdiff_t(row * (height_ - 1 - y)), row, flipped.begin() + std::ptrdiff_t(row * y));
+    return flipped;
+}
+
+std::string EditorHarness::saveWindow(const std::string& name) const {
+    const fs::path folder = fs::path(SHADOWLAB_TEST_OUTPUT) / "editor";
+    fs::create_directories(folder);
+    const std::string path = (folder / (name + ".png")).string();
+    std::vector<std::uint8_t> rgba = readWindow();
+    for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
+    EXPECT_EQ(writePng(path, width_, height_, 4, rgba.data(), false), "");
+    return path;
+}
+
+double variedFraction(const std::vector<std::uint8_t>& rgba, int width, int x0, int y0, int w, int h) {
+    const std::uint8_t* first = &rgba[(std::size_t(y0) * width + x0) * 4];
+    long differing = 0;
+    for (int y = y0; y < y0 + h; ++y)
+        for (int x = x0; x < x0 + w; ++x) {
+            const std::uint8_t* p = &rgba[(std::size_t(y) * width + x) * 4];
+            differing += std::abs(p[0] - first[0]) + std::abs(p[1] - first[1]) + std::abs(p[2] - first[2]) > 6;
+        }
+    return double(differing) / double(std::max(1, w * h));
+}
+
+}  // namespace shadowlab::editor::test

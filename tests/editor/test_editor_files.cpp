@@ -1,0 +1,133 @@
+// Screenshots and scenes: F12 writes the viewport, a failed write says why, a bad scene path or a dropped file that
+// is not a scene leaves the editor running on its scene with a message; a real glTF loads without blocking.
+#include "editor_harness.h"
+
+#include "image/image_io.h"
+
+#include <fstream>
+
+namespace shadowlab::editor::test {
+
+namespace {
+
+class EditorFiles : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = testFolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    }
+    std::filesystem::path folder;
+};
+
+std::vector<std::filesystem::path> filesIn(const std::filesystem::path& dir, const std::string& suffix) {
+    std::vector<std::filesystem::path> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+        if (e.path().string().size() >= suffix.size() &&
+            e.path().string().compare(e.path().string().size() - suffix.size(), suffix.size(), suffix) == 0)
+            out.push_back(e.path());
+    return out;
+}
+
+}  // namespace
+
+TEST_F(EditorFiles, F12WritesTheViewportAsAPngAndSaysWhere) {
+    EditorHarness h(testOptions(folder));
+    h.settle();
+    h.pressKey(keys::kF12);
+    h.frame();
+    const auto pngs = filesIn(folder / "screenshots", ".png");
+    ASSERT_EQ(pngs.size(), 1u);
+    std::string error;
+    const auto image = readPng(pngs[0].string(), &error);
+    ASSERT_TRUE(image) << error;
+    EXPECT_EQ(image->width, h.editor().viewportTarget().width());
+    EXPECT_EQ(image->height, h.editor().viewportTarget().height());
+    long bright = 0, dark = 0;
+    for (std::size_t i = 0; i < image->pixels.size(); i += std::size_t(image->channels)) {
+        bright += image->pixels[i] > 150;
+        dark += image->pixels[i] < 60;
+    }
+    EXPECT_GT(bright, 1000) << "lit floor";
+    EXPECT_GT(dark, 100) << "shadows";
+    EXPECT_EQ(h.state().lastScreenshot, pngs[0].string());
+
+    // With the shadow map too, from the button.
+    h.click("viewport.screenshotWithMap");
+    h.click("viewport.screenshot");
+    h.frame();
+    EXPECT_EQ(filesIn(folder / "screenshots", ".exr").size(), 1u);
+    EXPECT_EQ(filesIn(folder / "screenshots", ".png").size(), 3u);
+}
+
+TEST_F(EditorFiles, AScreenshotThatCannotBeWrittenSaysWhyAndTheEditorGoesOn) {
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "not-a-folder") << "x";
+    EditorOptions options = testOptions(folder);
+    options.screenshotDir = (folder / "not-a-folder" / "shots").string();
+    EditorHarness h(options);
+    h.settle();
+    h.pressKey(keys::kF12);
+    h.frame();
+    ASSERT_NE(h.state().lastMessage(), nullptr);
+    EXPECT_TRUE(h.state().lastMessage()->error);
+    EXPECT_NE(h.state().lastScreenshot.find("failed"), std::string::npos) << h.state().lastScreenshot;
+    h.pressKey(keys::kF12, /*ctrl=*/true);  // Ctrl+F12 asks the host for the whole window
+    EXPECT_TRUE(h.editor().takeWindowScreenshotRequest().has_value());
+}
+
+TEST_F(EditorFiles, ABadScenePathLeavesTheSceneWithAMessage) {
+    EditorHarness h(testOptions(folder));
+    h.settle();
+    const Scene* before = h.state().scene.get();
+    h.click("scene.path");
+    h.selectAllAndType((folder / "no-such-scene.gltf").string());
+    h.settle();
+    EXPECT_EQ(h.state().scene.get(), before);
+    ASSERT_NE(h.state().lastMessage(), nullptr);
+    EXPECT_TRUE(h.state().lastMessage()->error);
+    EXPECT_NE(h.state().lastMessage()->text.find("no-such-scene.gltf"), std::string::npos);
+
+    h.editor().dropFiles({(folder / "notes.txt").string()});
+    h.frame();
+    EXPECT_NE(h.state().lastMessage()->text.find("not a .gltf"), std::string::npos);
+    EXPECT_EQ(h.state().scene.get(), before);
+}
+
+TEST_F(EditorFiles, ADroppedGltfLoadsWhileTheWindowKeepsDrawing) {
+    const std::string box = "/usr/share/assimp/models/glTF2/Box/glTF/Box.gltf";
+    if (!std::filesystem::exists(box)) GTEST_SKIP() << box << " (assimp-testmodels) is not installed";
+    EditorHarness h(testOptions(folder));
+    h.settle();
+    h.editor().dropFiles({box});
+    h.frame();
+    h.settle();
+    EXPECT_EQ(h.state().sceneSpec, box);
+    EXPECT_EQ(h.state().recentFiles.items().front(), box);
+    EXPECT_TRUE(h.state().stats.ok);
+}
+
+TEST_F(EditorFiles, PickingABuiltInSceneLoadsIt) {
+    EditorHarness h(testOptions(folder));
+    h.settle();
+    h.click("scene.builtin");
+    h.click("scene.builtin=fence");
+    h.settle();
+    EXPECT_EQ(h.state().sceneSpec, "builtin:fence");
+    EXPECT_GT(h.state().stats.alphaTestedCasters, 0);
+}
+
+TEST(EditorStart, AStartSceneThatFailsToLoadFallsBackToTheDefaultWithAMessage) {
+    const auto folder = testFolder("bad-start-scene");
+    EditorOptions options = testOptions(folder);
+    options.scene = (folder / "broken.glb").string();
+    std::ofstream(folder / "broken.glb") << "not a glb";
+    EditorHarness h(options);
+    h.settle();
+    ASSERT_TRUE(h.state().scene);
+    EXPECT_EQ(h.state().sceneSpec, kDefaultSceneSpec);
+    bool reported = false;
+    for (const Message& m : h.state().messages) reported |= m.error && m.text.find("broken.glb") != std::string::npos;
+    EXPECT_TRUE(reported);
+}
+
+}  // namespace shadowlab::editor::test

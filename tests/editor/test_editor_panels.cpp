@@ -1,0 +1,166 @@
+// Every panel is there, the first-run layout does not overlap, and moving a control (through ImGui's IO, at the
+// widget's real rectangle) changes the renderer's Settings; refusals keep the previous value.
+#include "editor/panels/panel_registry.h"
+#include "editor_harness.h"
+#include "settings/settings_fields.h"
+
+#include <cmath>
+
+namespace shadowlab::editor::test {
+
+namespace {
+
+bool overlap(const ControlRect& a, const ControlRect& b) {
+    return a.x < b.x + b.w - 0.5f && b.x < a.x + a.w - 0.5f && a.y < b.y + b.h - 0.5f && b.y < a.y + a.h - 0.5f;
+}
+
+class EditorPanels : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = testFolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
+        harness = std::make_unique<EditorHarness>(testOptions(folder));
+        harness->settle();
+    }
+    std::filesystem::path folder;
+    std::unique_ptr<EditorHarness> harness;
+};
+
+}  // namespace
+
+TEST_F(EditorPanels, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheScene) {
+    EditorHarness& h = *harness;
+    const std::vector<std::string> expected = {"Scene", "Presets", "Light", "Projection", "Shadow map",
+                                               "Sampling", "Shadow map viewer", "Stats"};
+    ASSERT_EQ(panels().size(), expected.size());
+    std::vector<ControlRect> rects;
+    for (const std::string& title : expected) {
+        ASSERT_TRUE(h.hasControl("panel:" + title)) << title;
+        rects.push_back(h.rect("panel:" + title));
+    }
+    const ControlRect view = h.rect("viewport.image");
+    EXPECT_GT(view.w, 700.0f);
+    EXPECT_GT(view.h, 450.0f);
+    for (std::size_t i = 0; i < rects.size(); ++i) {
+        EXPECT_FALSE(overlap(rects[i], view)) << expected[i] << " covers the viewport";
+        EXPECT_LE(rects[i].x + rects[i].w, float(h.width()) + 0.5f) << expected[i];
+        EXPECT_LE(rects[i].y + rects[i].h, float(h.height()) + 0.5f) << expected[i];
+        for (std::size_t j = i + 1; j < rects.size(); ++j)
+            EXPECT_FALSE(overlap(rects[i], rects[j])) << expected[i] << " overlaps " << expected[j];
+    }
+    // The renderer draws at the viewport's size, and the window shows a scene there, and a map in the viewer.
+    EXPECT_EQ(h.editor().viewportTarget().width(), int(view.w));
+    EXPECT_EQ(h.editor().viewportTarget().height(), int(view.h));
+    const std::vector<std::uint8_t> window = h.readWindow();
+    h.saveWindow("every-panel");
+    EXPECT_GT(variedFraction(window, h.width(), int(view.x), int(view.y), int(view.w), int(view.h)), 0.3);
+    const ControlRect map = h.rect("viewer.image");
+    EXPECT_GT(map.w, 250.0f);
+    EXPECT_GT(variedFraction(window, h.width(), int(map.x), int(map.y), int(map.w), int(map.h)), 0.05);
+}
+
+TEST_F(EditorPanels, DraggingDepthBiasRaisesItAndTheNextFrameRedrawsTheShadowMap) {
+    EditorHarness& h = *harness;
+    const float before = h.state().settings.shadow.depthBias;
+    h.drag("shadow.depthBias", 60.0f, 0.0f);
+    EXPECT_GT(h.state().settings.shadow.depthBias, before + 10.0f);
+    h.frame();
+    EXPECT_TRUE(h.state().stats.shadowPass.ran);
+    EXPECT_EQ(h.state().stats.shadowPass.reason, "bias changed");
+}
+
+TEST_F(EditorPanels, ClickingTheSlopeSliderSetsTheValueUnderTheMouse) {
+    EditorHarness& h = *harness;
+    const ControlRect r = h.rect("shadow.slopeScaledDepthBias");
+    // The slider's range is 0..10 over the frame's width (minus the grab): three quarters along is about 7.5.
+    h.clickAt(r.x + r.w * 0.75f, r.centerY());
+    EXPECT_NEAR(h.state().settings.shadow.slopeScaledDepthBias, 7.5f, 0.5f);
+}
+
+TEST_F(EditorPanels, TypedSlopeOutsideItsRangeIsRefusedAndThePreviousValueKept) {
+    EditorHarness& h = *harness;
+    const float before = h.state().settings.shadow.slopeScaledDepthBias;
+    h.ctrlClick("shadow.slopeScaledDepthBias");  // Ctrl+click turns the slider into a text field
+    h.selectAllAndType("250");
+    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, before);
+    const std::string* error = h.state().fieldError("shadow.slopeScaledDepthBias");
+    ASSERT_NE(error, nullptr);
+    EXPECT_NE(error->find("out of range"), std::string::npos) << *error;
+    h.ctrlClick("shadow.slopeScaledDepthBias");
+    h.selectAllAndType("nan");
+    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, before);
+    EXPECT_NE(h.state().fieldError("shadow.slopeScaledDepthBias"), nullptr);
+}
+
+TEST_F(EditorPanels, FilterComboSwitchesToPoissonAndShowsItsRadius) {
+    EditorHarness& h = *harness;
+    EXPECT_FALSE(h.hasControl("filter.poissonRadius"));
+    h.click("filter.kind");
+    h.click("filter.kind=poisson");
+    EXPECT_EQ(h.state().settings.filter.kind, FilterKind::Poisson);
+    EXPECT_TRUE(h.hasControl("filter.poissonRadius"));
+    h.click("sampler.addressMode");
+    h.click("sampler.addressMode=wrap");
+    EXPECT_EQ(h.state().settings.sampler.addressMode, AddressMode::Wrap);
+    EXPECT_FALSE(h.hasControl("sampler.borderDepth"));  // border depth only matters with border addressing
+}
+
+TEST_F(EditorPanels, ResolutionQuickPickReallocatesTheMap) {
+    EditorHarness& h = *harness;
+    h.click("shadow.resolution=1K");
+    EXPECT_EQ(h.state().settings.shadow.resolution, 1024);
+    h.frame();
+    EXPECT_EQ(h.editor().renderer().shadowMap().resolution(), 1024);
+    EXPECT_EQ(h.state().stats.shadowMapResolution, 1024);
+}
+
+TEST_F(EditorPanels, ResolutionAboveTheGpuLimitIsRefusedWithAMessageAndTheMapKept) {
+    EditorHarness& h = *harness;
+    const int limit = h.state().limits.maxTextureSize;
+    ASSERT_GT(limit, 0);
+    const int tooBig = limit * 2;
+    const std::uint64_t generation = h.editor().renderer().shadowMap().generation();
+    h.click("shadow.resolution");
+    h.selectAllAndType(std::to_string(tooBig));
+    h.frame(2);
+    EXPECT_EQ(h.state().settings.shadow.resolution, 2048);
+    EXPECT_EQ(h.editor().renderer().shadowMap().resolution(), 2048);
+    EXPECT_EQ(h.editor().renderer().shadowMap().generation(), generation);
+    const std::string* error = h.state().fieldError("shadow.resolution");
+    ASSERT_NE(error, nullptr);
+    EXPECT_NE(error->find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << *error;
+    ASSERT_NE(h.state().lastMessage(), nullptr);
+    EXPECT_TRUE(h.state().lastMessage()->error);
+}
+
+TEST_F(EditorPanels, LightAnglesAndProjectionControlsReachTheSettings) {
+    EditorHarness& h = *harness;
+    const glm::vec3 before = h.state().settings.light.direction;
+    h.drag("light.azimuth", 50.0f, 0.0f);
+    const glm::vec3 after = h.state().settings.light.direction;
+    EXPECT_GT(std::abs(after.x - before.x) + std::abs(after.z - before.z), 0.05f);
+
+    h.click("light.type");
+    h.click("light.type=spot");
+    EXPECT_EQ(h.state().settings.light.type, LightType::Spot);
+    EXPECT_TRUE(h.hasControl("light.spotConeDeg"));
+
+    EXPECT_TRUE(h.state().settings.projection.autoFit);
+    h.click("projection.autoFit");
+    EXPECT_FALSE(h.state().settings.projection.autoFit);
+    const float far = h.state().settings.projection.farPlane;
+    h.drag("projection.far", 40.0f, 0.0f);
+    EXPECT_GT(h.state().settings.projection.farPlane, far);
+    h.frame();
+    EXPECT_TRUE(h.state().stats.ok) << h.state().stats.error;
+}
+
+TEST_F(EditorPanels, ViewModeComboShowsTheShadowFactor) {
+    EditorHarness& h = *harness;
+    h.click("view");
+    h.click("view=shadow");
+    EXPECT_EQ(h.state().settings.view, ViewMode::Shadow);
+    h.frame();
+    EXPECT_TRUE(h.state().stats.ok);
+}
+
+}  // namespace shadowlab::editor::test
