@@ -1,0 +1,137 @@
+#!/usr/bin/env bash
+# End-to-end: the real `shadowlab edit` in a virtual X display (Xvfb) with real X input from xdotool. The editor
+# writes its controls' rectangles to $SHADOWLAB_EDITOR_CONTROLS so clicks land on real widgets. Checks: F12 writes a
+# PNG of the viewport's size that decodes and is not blank; a click on "1K", Ctrl+S and Enter save a preset that
+# `render` loads and that equals the state; a bad scene path leaves the editor running with a message; Ctrl+F12
+# writes the whole window; Ctrl+Q quits cleanly. Xvfb and the editor are always killed on exit.
+# Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
+set -uo pipefail
+: "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
+rm -rf "$OUT_DIR" && mkdir -p "$OUT_DIR" && cd "$OUT_DIR"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+pass() { echo "ok: $*"; }
+png_check() { python3 "$SOURCE_DIR/tests/e2e/png_check.py" "$1"; }
+
+# Without a display: a clear message and a non-zero exit.
+env -u DISPLAY -u WAYLAND_DISPLAY "$SHADOWLAB" edit >nodisplay.out 2>&1
+rc=$?
+if [ $rc -ne 0 ] && grep -q "needs a display" nodisplay.out; then pass "no display: exit $rc with a message"
+else fail "no display: exit $rc: $(cat nodisplay.out)"; fi
+
+for tool in Xvfb xdotool python3; do
+  command -v $tool >/dev/null || { echo "FAIL: $tool is not installed (scripts/install-deps)"; exit 1; }
+done
+
+xvfb_pid="" app_pid=""
+cleanup() {
+  [ -n "$app_pid" ] && kill "$app_pid" 2>/dev/null
+  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
+  wait 2>/dev/null
+}
+trap cleanup EXIT
+trap "exit 1" TERM INT  # so the EXIT trap runs when the timeout stops us
+
+# Xvfb picks a free display number and writes it to fd 3.
+Xvfb -displayfd 3 -screen 0 1600x900x24 -nolisten tcp 3>display.txt 2>xvfb.err &
+xvfb_pid=$!
+for _ in $(seq 100); do [ -s display.txt ] && break; sleep 0.1; done
+[ -s display.txt ] || { echo "FAIL: Xvfb did not start: $(cat xvfb.err)"; exit 1; }
+export DISPLAY=":$(cat display.txt)"
+
+export SHADOWLAB_CONFIG_DIR="$OUT_DIR/config" SHADOWLAB_USER_PRESETS="$OUT_DIR/user-presets"
+export SHADOWLAB_EDITOR_CONTROLS="$OUT_DIR/controls.json"
+"$SHADOWLAB" edit --scene builtin:textbook --width 1600 --height 900 --screenshot-dir shots >editor.out 2>editor.err &
+app_pid=$!
+
+# control NAME -> "cx cy w h" (centre and size, window pixels) from the controls file; empty if not drawn.
+control() {
+  python3 - "$1" <<'PY' 2>/dev/null
+import json, sys
+r = json.load(open("controls.json")).get(sys.argv[1])
+if r: print(int(r[0] + r[2] / 2), int(r[1] + r[3] / 2), int(r[2]), int(r[3]))
+PY
+}
+# wait_for CONDITION-COMMAND... (up to ~30 s)
+wait_for() { for _ in $(seq 300); do "$@" && return 0; kill -0 "$app_pid" 2>/dev/null || return 1; sleep 0.1; done; return 1; }
+has_control() { [ -f controls.json ] && [ -n "$(control "$1")" ]; }
+click() {
+  local c; c=$(control "$1") || true
+  [ -n "$c" ] || { fail "control $1 not drawn"; return 1; }
+  set -- $c
+  xdotool mousemove --window "$wid" "$1" "$2" sleep 0.15 click 1 sleep 0.2
+}
+
+wid=$(timeout 30 xdotool search --sync --name "ShadowLab" | head -1)
+[ -n "$wid" ] || { echo "FAIL: no editor window: $(cat editor.err)"; exit 1; }
+wait_for has_control stats.frames && pass "editor window up, a frame rendered" || fail "no frame: $(cat editor.err)"
+xdotool windowfocus --sync "$wid" 2>/dev/null || xdotool windowfocus "$wid"
+xdotool mousemove --window "$wid" 800 450 sleep 0.3
+
+# F12: the viewport as PNG.
+xdotool key F12
+wait_for bash -c 'ls shots/shadowlab-*.png >/dev/null 2>&1' && sleep 0.5
+shot=$(ls shots/shadowlab-*.png 2>/dev/null | head -1)
+if [ -z "$shot" ]; then fail "F12 wrote no screenshot: $(tail -3 editor.err)"; else
+  read -r _ _ vw vh <<<"$(control viewport.image)"
+  if info=$(png_check "$shot"); then
+    read -r w h colours bright dark <<<"$info"
+    [ "$w $h" = "$vw $vh" ] && pass "F12 screenshot is the viewport's size ($w x $h)" || fail "screenshot $w x $h, viewport $vw x $vh"
+    [ "$colours" -gt 20 ] && python3 -c "import sys; sys.exit(not ($bright > 0.05 and $dark > 0.01))" \
+      && pass "screenshot is not blank ($colours colours, lit $bright, dark $dark)" || fail "screenshot looks blank: $info"
+  else fail "$info"; fi
+  grep -q "screenshot: $shot" editor.out && pass "the editor says where the screenshot went" || fail "no path message"
+fi
+
+# "1K", then Ctrl+S on the shipped default preset: Save As opens with "default-tuned"; Enter saves it.
+click shadow.resolution=1K
+xdotool key ctrl+s
+wait_for has_control saveAs.name && pass "Ctrl+S on a shipped preset asks for a name" || fail "no Save As dialog"
+sleep 0.3
+xdotool key Return
+saved="$OUT_DIR/user-presets/default-tuned.json"
+if wait_for test -f "$saved"; then
+  pass "preset saved to the user folder"
+  "$SHADOWLAB" render --scene builtin:textbook --preset "$saved" --width 64 --height 48 --out loaded.png \
+    >render.out 2>render.err && pass "render loads the saved preset" || fail "render refuses it: $(cat render.err)"
+  python3 - "$saved" "$SOURCE_DIR/presets/default.json" <<'PY' && pass "saved preset = default with resolution 1024" || fail "saved preset differs"
+import json, sys
+saved, shipped = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+for meta in ("name", "description"): saved.pop(meta, None); shipped.pop(meta, None)
+shipped["shadow"]["resolution"] = 1024
+if saved != shipped:
+    print("saved:  ", json.dumps(saved, sort_keys=True)); print("expected:", json.dumps(shipped, sort_keys=True)); sys.exit(1)
+PY
+else fail "no preset at $saved: $(tail -3 editor.err)"; fi
+
+# A bad scene path: a message, the editor keeps running on its scene.
+click scene.path
+xdotool key ctrl+a
+xdotool type --delay 20 "/nonexistent/missing-scene.gltf"
+xdotool key Return
+if wait_for grep -q "missing-scene.gltf" editor.err; then
+  sleep 0.5
+  kill -0 "$app_pid" 2>/dev/null && pass "bad scene path: message, editor still running" || fail "editor died"
+else fail "no message for a bad scene path: $(tail -3 editor.err)"; fi
+
+# Ctrl+F12: the whole window.
+xdotool mousemove --window "$wid" 800 450 key ctrl+F12
+wait_for bash -c 'ls shots/shadowlab-window-*.png >/dev/null 2>&1' && sleep 0.5
+window_shot=$(ls shots/shadowlab-window-*.png 2>/dev/null | head -1)
+if [ -n "$window_shot" ] && info=$(png_check "$window_shot"); then
+  read -r w h _ <<<"$info"
+  [ "$w $h" = "1600 900" ] && pass "Ctrl+F12 wrote the whole window" || fail "window shot is $w x $h"
+  cp "$window_shot" editor-window.png
+else fail "no whole-window screenshot"; fi
+
+# Ctrl+Q: quits (no unsaved changes after the save) and remembers the layout.
+xdotool key ctrl+q
+for _ in $(seq 100); do kill -0 "$app_pid" 2>/dev/null || break; sleep 0.1; done
+if kill -0 "$app_pid" 2>/dev/null; then fail "Ctrl+Q did not quit"; else
+  wait "$app_pid"; rc=$?; app_pid=""
+  [ $rc -eq 0 ] && pass "Ctrl+Q quits with exit 0" || fail "exit $rc"
+  [ -f config/imgui.ini ] && pass "panel layout saved in imgui.ini" || fail "no imgui.ini"
+fi
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]
