@@ -14,9 +14,15 @@ const SettingsField& fieldOf(const char* key) {
     return *field;
 }
 
-// Shared tail of every bound control.
+// Shared tail of every bound control. The recorded rectangle is the control's frame, without its label, so a
+// click at a fraction of its width means that fraction of a slider's range.
 void finishControl(EditorState& state, const char* key) {
     state.controls.recordLastItem(key);
+    if (const ControlRect* r = state.controls.find(key); r && r->w > ImGui::CalcItemWidth()) {
+        ControlRect frame = *r;
+        frame.w = ImGui::CalcItemWidth();
+        state.controls.record(key, frame);
+    }
     fieldHelp(state, key);
     showFieldError(state, key);
 }

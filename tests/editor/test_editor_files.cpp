@@ -94,8 +94,8 @@ TEST_F(EditorFiles, ABadScenePathLeavesTheSceneWithAMessage) {
 }
 
 TEST_F(EditorFiles, ADroppedGltfLoadsWhileTheWindowKeepsDrawing) {
-    const std::string box = "/usr/share/assimp/models/glTF2/Box/glTF/Box.gltf";
-    if (!std::filesystem::exists(box)) GTEST_SKIP() << box << " (assimp-testmodels) is not installed";
+    const std::string box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF/BoxTextured.gltf";
+    ASSERT_TRUE(std::filesystem::exists(box)) << box << ": assimp-testmodels (scripts/install-deps) is missing";
     EditorHarness h(testOptions(folder));
     h.settle();
     h.editor().dropFiles({box});

@@ -50,14 +50,14 @@ void resolutionControls(EditorState& state) {
 void biasAmounts(const EditorState& state) {
     if (!state.haveStats) return;
     const BiasAmount& b = state.stats.bias;
-    ImGui::TextDisabled("constant bias = %.3g depth = %.3g world = %.3g texels", b.constantDepth, b.constantWorld,
-                        b.constantTexels);
+    ImGui::TextDisabled("DepthBias = %.3g depth = %.3g world units", b.constantDepth, b.constantWorld);
+    ImGui::SameLine();
+    ImGui::Text("= %.3g texels", b.constantTexels);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("DepthBias x the format's depth step (%.3g), along the light in world units, and in "
                           "shadow-map texels (one texel = %.4g world units)",
                           b.depthStep, b.texelWorldSize);
-    ImGui::TextDisabled("normal offset = %.3g world units; texel = %.4g world units", b.normalOffsetWorld,
-                        b.texelWorldSize);
+    ImGui::TextDisabled("normal offset = %.3g world units (texel %.3g)", b.normalOffsetWorld, b.texelWorldSize);
 }
 
 }  // namespace

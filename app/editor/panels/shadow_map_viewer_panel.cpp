@@ -4,6 +4,7 @@
 #include "editor/panels/panel_registry.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace shadowlab::editor {
@@ -72,7 +73,7 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
     const ImGuiIO& io = ImGui::GetIO();
     const double mx = io.MousePos.x - pos.x, my = io.MousePos.y - pos.y;
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f)
-        v.zoomPan.zoomAt(mx, my, io.MouseWheel > 0 ? 1.25 : 0.8, size, size, resolution);
+        v.zoomPan.zoomAt(mx, my, std::pow(1.25, double(io.MouseWheel)), size, size, resolution);
     if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
         v.zoomPan.pan(io.MouseDelta.x, io.MouseDelta.y, size, size);
     v.options.visible = v.zoomPan.visibleRect(size, size);

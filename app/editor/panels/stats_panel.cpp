@@ -42,7 +42,9 @@ void drawStatsPanel(PanelContext& ctx) {
     const bool cpu = s.timingSource.rfind("CPU", 0) == 0;
     const char* clock = cpu ? "CPU" : "GPU";
 
-    if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchProp)) {
+    if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchSame)) {
+        ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch, 0.6f);
+        ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch, 0.4f);
         ImGui::TableNextColumn();
         passLine("shadow pass", s.shadowPass, clock);
         passLine("main pass", s.mainPass, clock);
