@@ -98,6 +98,9 @@ void Editor::drawViewport() {
     ImGui::SameLine();
     if (ImGui::Button("Frame (F)")) frameScene();
     state_.controls.recordLastItem("viewport.frame");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Frame the scene (F). In the view: left drag orbits, middle or Shift+left drag pans, the "
+                          "wheel zooms");
     ImGui::SameLine();
     if (ImGui::Button("Screenshot (F12)")) requestScreenshot(state_.screenshotWithShadowMap);
     state_.controls.recordLastItem("viewport.screenshot");
@@ -108,6 +111,14 @@ void Editor::drawViewport() {
     ImGui::Checkbox("+ shadow map", &state_.screenshotWithShadowMap);
     state_.controls.recordLastItem("viewport.screenshotWithMap");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Screenshots also write the shadow map as float EXR and PNG");
+    // How to move the camera, where there is room for it (else on the Frame button's tooltip).
+    const char* help = "drag: orbit | middle / Shift+drag: pan | wheel: zoom";
+    const float helpWidth = ImGui::CalcTextSize(help).x;
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x > helpWidth + 12.0f) {
+        ImGui::SetCursorPosX(rect.z - helpWidth - 10.0f);
+        ImGui::TextDisabled("%s", help);
+    }
 
     // The image: the renderer draws at exactly this size.
     const ImVec2 origin = ImGui::GetWindowPos();
@@ -142,8 +153,6 @@ void Editor::viewportCameraInput(ImVec2 size) {
             orbit_->orbit(io.MouseDelta.x, io.MouseDelta.y);
     }
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) orbit_->zoom(io.MouseWheel);
-    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
-        ImGui::SetTooltip("left drag: orbit   middle or Shift+left drag: pan   wheel: zoom   F: frame the scene");
 }
 
 void Editor::drawStatusBar() {
@@ -157,11 +166,19 @@ void Editor::drawStatusBar() {
         return;
     }
     if (const Message* m = state_.lastMessage()) {
-        if (m->error)
-            errorText(m->text);
-        else
-            ImGui::TextDisabled("%s", m->text.c_str());
+        // One line, clipped at the viewport's edge; the whole text on hover (and in the terminal).
+        ImGui::PushStyleColor(ImGuiCol_Text, m->error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
+                                                      : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextUnformatted(m->text.c_str());
+        ImGui::PopStyleColor();
         state_.controls.recordLastItem("status");
+        if (ImGui::IsItemHovered()) {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+            ImGui::TextUnformatted(m->text.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
     }
 }
 

@@ -9,11 +9,10 @@ void drawPresetsPanel(PanelContext& ctx) {
     const bool dirty = state.preset.dirty(state.settings);
     ImGui::Text("%s%s", state.preset.name().c_str(), dirty ? " *" : "");
     state.controls.recordLastItem("preset.current");
-    ImGui::SameLine();
-    if (dirty)
-        ImGui::TextDisabled("(unsaved changes)");
-    else if (state.preset.shipped())
-        ImGui::TextDisabled("(shipped, read-only)");
+    if (dirty || state.preset.shipped()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled(dirty ? "(unsaved changes)" : "(shipped, read-only)");
+    }
 
     const float buttonsHeight = ImGui::GetFrameHeightWithSpacing() * 2.0f;
     if (ImGui::BeginListBox("##presets", ImVec2(-1, std::max(60.0f, ImGui::GetContentRegionAvail().y - buttonsHeight)))) {
