@@ -64,14 +64,19 @@ public:
 private:
     void measureWrittenRange(const ShadowMap& map);
 
+    struct DisplayUniforms {
+        GLint uvMin = -1, uvMax = -1, viewSize = -1, range = -1, linearize = -1, nearFar = -1, gridTexelPixels = -1;
+    };
+
     gl::Program displayProgram_;
+    DisplayUniforms uniforms_;  // looked up once
     gl::Program rangeProgram_;
     gl::VertexArray emptyVertexArray_;
     gl::Sampler rawSampler_;     // nearest, no comparison: reads stored depth
     gl::Buffer rangeBuffer_;     // two uints: min and max of written depths (float bits)
     RenderTarget target_;
     std::optional<float> writtenMin_, writtenMax_;  // measured range; empty when no caster wrote
-    bool measured_ = false;
+    bool rangeStale_ = true;                 // the map changed since the range was measured
     std::uint64_t measuredGeneration_ = 0;
     ShownDepthRange shown_;
     bool gridShown_ = false;
