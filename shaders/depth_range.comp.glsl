@@ -1,6 +1,7 @@
 #version 450 core
 // Min and max of the depths casters wrote (below 1) over the whole map, as float bits: non-negative floats order
-// like their bit patterns, so integer atomics find them. Each invocation reads a 4x4 block of texels.
+// like their bit patterns, so integer atomics find them. Each invocation reads a block of BLOCK x BLOCK texels
+// (BLOCK is defined by the renderer).
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = 0) uniform sampler2D uDepth;
@@ -19,10 +20,10 @@ void main() {
     }
     barrier();
     ivec2 size = textureSize(uDepth, 0);
-    ivec2 base = ivec2(gl_GlobalInvocationID.xy) * 4;
+    ivec2 base = ivec2(gl_GlobalInvocationID.xy) * BLOCK;
     uint localMin = 0xFFFFFFFFu, localMax = 0u;
-    for (int y = 0; y < 4; ++y)
-        for (int x = 0; x < 4; ++x) {
+    for (int y = 0; y < BLOCK; ++y)
+        for (int x = 0; x < BLOCK; ++x) {
             ivec2 p = base + ivec2(x, y);
             if (p.x >= size.x || p.y >= size.y) continue;
             float d = texelFetch(uDepth, p, 0).r;

@@ -11,7 +11,7 @@ namespace {
 
 constexpr GLuint kDepthUnit = 0;
 constexpr GLuint kNoCasterBits = 0xFFFFFFFFu;
-constexpr int kTexelsPerInvocation = 4;  // depth_range.comp.glsl reads 4x4 texels per invocation
+constexpr int kTexelsPerInvocation = 8;  // depth_range.comp.glsl reads BLOCK x BLOCK texels per invocation
 constexpr int kGroupSize = 16;
 
 float fromBits(GLuint bits) {
@@ -34,7 +34,8 @@ ShadowMapView::ShadowMapView()
     : displayProgram_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_map_view.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "shadow_map_view.frag.glsl"}},
                                        {})),
-      rangeProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "depth_range.comp.glsl"}}, {})),
+      rangeProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "depth_range.comp.glsl"}},
+                                     {"BLOCK " + std::to_string(kTexelsPerInvocation)})),
       emptyVertexArray_(gl::createVertexArray()),
       rawSampler_(gl::createSampler()),
       rangeBuffer_(gl::createBuffer()) {
