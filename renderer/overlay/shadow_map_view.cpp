@@ -90,6 +90,11 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
                std::to_string(options.manualMax) + ")";
     if (std::string error = target_.resize(width, height); !error.empty()) return "shadow map view: " + error;
 
+    const Inputs inputs{options, width, height, map.texture(), map.generation(), light.perspective,
+                        light.nearPlane, light.farPlane};
+    redrawn_ = mapRedrawn || !drawn_ || !(*drawn_ == inputs);
+    if (!redrawn_) return {};
+
     if (mapRedrawn || measuredGeneration_ != map.generation()) rangeStale_ = true;
     const bool linearize = options.linearize && light.perspective;
     ShownDepthRange shown;
@@ -136,6 +141,7 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
     glEnable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     shown_ = shown;
+    drawn_ = inputs;
     return {};
 }
 

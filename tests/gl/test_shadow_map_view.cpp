@@ -112,6 +112,28 @@ TEST_F(ShadowMapViewTest, AutoRangeIsMeasuredOnlyWhenTheMapChanged) {
     EXPECT_EQ(view.shownRange().min, writtenDepthRange(depth_).min);
 }
 
+TEST_F(ShadowMapViewTest, AnUnchangedPictureIsNotRedrawn) {
+    Settings settings = loadShippedPreset("default");
+    render(settings);
+    ShadowMapView view;
+    ShadowMapViewOptions options;
+    ASSERT_EQ(view.render(map(), stats_.light, true, options, 200, 200), "");
+    EXPECT_TRUE(view.redrawn());
+    ASSERT_EQ(view.render(map(), stats_.light, false, options, 200, 200), "");
+    EXPECT_FALSE(view.redrawn());  // an idle editor frame costs nothing
+    options.texelGrid = false;
+    ASSERT_EQ(view.render(map(), stats_.light, false, options, 200, 200), "");
+    EXPECT_TRUE(view.redrawn());
+    ASSERT_EQ(view.render(map(), stats_.light, false, options, 201, 200), "");
+    EXPECT_TRUE(view.redrawn());
+    ASSERT_EQ(view.render(map(), stats_.light, true, options, 201, 200), "");  // the shadow pass ran
+    EXPECT_TRUE(view.redrawn());
+    settings.shadow.resolution = 1024;  // a new map
+    render(settings);
+    ASSERT_EQ(view.render(map(), stats_.light, false, options, 201, 200), "");
+    EXPECT_TRUE(view.redrawn());
+}
+
 TEST_F(ShadowMapViewTest, FullAndManualContrastAndRefusedManualRange) {
     render(loadShippedPreset("default"));
     ShadowMapView view;
