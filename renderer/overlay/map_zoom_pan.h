@@ -11,6 +11,8 @@ namespace shadowlab {
 struct UvRect {
     glm::dvec2 min{0.0, 0.0};  // map uv at the view's bottom-left corner
     glm::dvec2 max{1.0, 1.0};  // map uv at the view's top-right corner
+
+    bool operator==(const UvRect&) const = default;
 };
 
 class MapZoomPan {

@@ -25,6 +25,8 @@ struct ShadowMapViewOptions {
     bool linearize = false;  // spot lights: show distance from the light between near and far, not stored depth
     UvRect visible;          // the part of the map shown (zoom and pan)
     bool texelGrid = true;   // draw the grid when zoomed in far enough
+
+    bool operator==(const ShadowMapViewOptions&) const = default;
 };
 
 // The range the picture stretched to black..white, in the shown unit.
@@ -47,6 +49,7 @@ public:
     // Draws the picture at width x height. `mapRedrawn`: the shadow pass ran since the last call (FrameStats::
     // shadowPass.ran); auto contrast re-measures the map only then, or when the map was reallocated. Returns "" or
     // why nothing was drawn (no map yet, bad size, manual min >= max); the previous picture is kept then.
+    // When neither the map nor anything else changed since the last picture, it is kept without drawing.
     std::string render(const ShadowMap& map, const LightSpace& light, bool mapRedrawn,
                        const ShadowMapViewOptions& options, int width, int height);
 
@@ -57,6 +60,7 @@ public:
 
     ShownDepthRange shownRange() const { return shown_; }
     bool gridShown() const { return gridShown_; }
+    bool redrawn() const { return redrawn_; }  // whether the last render() call drew (false: picture reused)
 
     // One stored depth read back from the map (for hover); nullopt off the map or when there is none.
     std::optional<float> depthAt(const ShadowMap& map, int texelX, int texelY) const;
@@ -64,17 +68,35 @@ public:
 private:
     void measureWrittenRange(const ShadowMap& map);
 
+    // Everything the picture depends on besides the map's contents.
+    struct Inputs {
+        ShadowMapViewOptions options;
+        int width = 0, height = 0;
+        GLuint mapTexture = 0;
+        std::uint64_t mapGeneration = 0;
+        bool perspective = false;
+        double nearPlane = 0.0, farPlane = 0.0;
+        bool operator==(const Inputs&) const = default;
+    };
+
+    struct DisplayUniforms {
+        GLint uvMin = -1, uvMax = -1, viewSize = -1, range = -1, linearize = -1, nearFar = -1, gridTexelPixels = -1;
+    };
+
     gl::Program displayProgram_;
+    DisplayUniforms uniforms_;  // looked up once
     gl::Program rangeProgram_;
     gl::VertexArray emptyVertexArray_;
     gl::Sampler rawSampler_;     // nearest, no comparison: reads stored depth
     gl::Buffer rangeBuffer_;     // two uints: min and max of written depths (float bits)
     RenderTarget target_;
     std::optional<float> writtenMin_, writtenMax_;  // measured range; empty when no caster wrote
-    bool measured_ = false;
+    bool rangeStale_ = true;                 // the map changed since the range was measured
     std::uint64_t measuredGeneration_ = 0;
     ShownDepthRange shown_;
     bool gridShown_ = false;
+    std::optional<Inputs> drawn_;  // what the current picture shows
+    bool redrawn_ = false;
 };
 
 }  // namespace shadowlab

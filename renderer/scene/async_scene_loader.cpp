@@ -54,7 +54,7 @@ std::optional<SceneLoadProgress> AsyncSceneLoader::progress() const {
     p.spec = newest->spec;
     p.fileBytes = newest->fileBytes;
     p.elapsedSeconds = std::chrono::duration<double>(Clock::now() - newest->requested).count();
-    if (newest == &*loading_) p.stage = "loading";
+    if (loading_ && newest == &*loading_) p.stage = "loading";
     else if (loading_) p.stage = "waiting for an older load to finish (it cannot be interrupted)";
     else p.stage = "starting";
     return p;

@@ -4,6 +4,7 @@
 
 #include "frame/screenshot.h"
 
+#include <sys/mount.h>
 #include <unistd.h>
 
 #include <ctime>
@@ -21,6 +22,7 @@ protected:
         GlTest::SetUp();
         dir_ = fs::path(SHADOWLAB_TEST_OUTPUT) / "gl" / "screenshots" /
                ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        ::umount((dir_ / "full-disk").c_str());  // left mounted only if an earlier run crashed mid-test
         fs::remove_all(dir_);
         scene_ = loadBuiltin("textbook");
         ASSERT_EQ(target_.resize(320, 200), "");
@@ -140,6 +142,27 @@ TEST_F(Screenshot, AReadOnlyFolderSaysWhy) {
     EXPECT_FALSE(shot.ok());
     EXPECT_NE(shot.error.find("Permission denied"), std::string::npos) << shot.error;
     EXPECT_TRUE(fs::is_empty(dir_ / "locked"));
+}
+
+TEST_F(Screenshot, AFullDiskSaysSoAndLeavesNoEmptyFile) {
+    // A tiny tmpfs filled to the brim stands in for a full disk (needs root and permission to mount).
+    const fs::path disk = dir_ / "full-disk";
+    fs::create_directories(disk);
+    if (::mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=64k") != 0) GTEST_SKIP() << "cannot mount a tmpfs here";
+    {
+        std::ofstream filler(disk / "filler", std::ios::binary);
+        const std::string block(4096, 'x');
+        for (int i = 0; i < 64 && filler; ++i) filler.write(block.data(), std::streamsize(block.size()));
+    }
+    const ScreenshotResult shot = writeScreenshot(target_, disk.string(), nullptr, at(2026, 3, 4, 5, 6, 7));
+    std::vector<std::string> left;
+    for (const auto& entry : fs::directory_iterator(disk)) left.push_back(entry.path().filename().string());
+    ::umount(disk.c_str());
+    EXPECT_FALSE(shot.ok());
+    EXPECT_NE(shot.error.find("No space left on device"), std::string::npos) << shot.error;
+    EXPECT_NE(shot.error.find("shadowlab-20260304-050607.png"), std::string::npos) << shot.error;
+    EXPECT_TRUE(shot.viewPng.empty());
+    EXPECT_EQ(left, std::vector<std::string>{"filler"});  // the reserved name was given back
 }
 
 }  // namespace

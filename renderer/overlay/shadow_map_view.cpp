@@ -1,0 +1,158 @@
+#include "overlay/shadow_map_view.h"
+
+#include "gl/program.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace shadowlab {
+
+namespace {
+
+constexpr GLuint kDepthUnit = 0;
+constexpr GLuint kNoCasterBits = 0xFFFFFFFFu;
+constexpr int kTexelsPerInvocation = 8;  // depth_range.comp.glsl reads BLOCK x BLOCK texels per invocation
+constexpr int kGroupSize = 16;
+
+float fromBits(GLuint bits) {
+    float value = 0.0f;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+}  // namespace
+
+double linearLightDepth(const LightSpace& light, double storedDepth) {
+    if (!light.perspective) return storedDepth;
+    const double n = light.nearPlane, f = light.farPlane;
+    const double zNdc = storedDepth * 2.0 - 1.0;
+    const double viewDepth = 2.0 * n * f / (f + n - zNdc * (f - n));
+    return (viewDepth - n) / (f - n);
+}
+
+ShadowMapView::ShadowMapView()
+    : displayProgram_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_map_view.vert.glsl"},
+                                        {GL_FRAGMENT_SHADER, "shadow_map_view.frag.glsl"}},
+                                       {})),
+      rangeProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "depth_range.comp.glsl"}},
+                                     {"BLOCK " + std::to_string(kTexelsPerInvocation)})),
+      emptyVertexArray_(gl::createVertexArray()),
+      rawSampler_(gl::createSampler()),
+      rangeBuffer_(gl::createBuffer()) {
+    glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glNamedBufferStorage(rangeBuffer_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    const GLuint program = displayProgram_.id();
+    uniforms_.uvMin = glGetUniformLocation(program, "uUvMin");
+    uniforms_.uvMax = glGetUniformLocation(program, "uUvMax");
+    uniforms_.viewSize = glGetUniformLocation(program, "uViewSize");
+    uniforms_.range = glGetUniformLocation(program, "uRange");
+    uniforms_.linearize = glGetUniformLocation(program, "uLinearize");
+    uniforms_.nearFar = glGetUniformLocation(program, "uNearFar");
+    uniforms_.gridTexelPixels = glGetUniformLocation(program, "uGridTexelPixels");
+}
+
+void ShadowMapView::measureWrittenRange(const ShadowMap& map) {
+    const GLuint start[2] = {kNoCasterBits, 0u};
+    glNamedBufferSubData(rangeBuffer_.id(), 0, sizeof start, start);
+    glUseProgram(rangeProgram_.id());
+    glBindTextureUnit(kDepthUnit, map.texture());
+    glBindSampler(kDepthUnit, rawSampler_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rangeBuffer_.id());
+    const int perGroup = kGroupSize * kTexelsPerInvocation;
+    const GLuint groups = GLuint((map.resolution() + perGroup - 1) / perGroup);
+    glDispatchCompute(groups, groups, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    GLuint result[2] = {kNoCasterBits, 0u};
+    glGetNamedBufferSubData(rangeBuffer_.id(), 0, sizeof result, result);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindSampler(kDepthUnit, 0);
+    glUseProgram(0);
+    if (result[0] == kNoCasterBits) {
+        writtenMin_.reset();
+        writtenMax_.reset();
+    } else {
+        writtenMin_ = fromBits(result[0]);
+        writtenMax_ = fromBits(result[1]);
+    }
+    measuredGeneration_ = map.generation();
+    rangeStale_ = false;
+}
+
+std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light, bool mapRedrawn,
+                                  const ShadowMapViewOptions& options, int width, int height) {
+    if (!map.valid()) return "no shadow map yet: render a frame first";
+    if (options.contrast == DepthContrast::Manual && !(options.manualMin < options.manualMax))
+        return "manual contrast: min (" + std::to_string(options.manualMin) + ") must be below max (" +
+               std::to_string(options.manualMax) + ")";
+    if (std::string error = target_.resize(width, height); !error.empty()) return "shadow map view: " + error;
+
+    const Inputs inputs{options, width, height, map.texture(), map.generation(), light.perspective,
+                        light.nearPlane, light.farPlane};
+    redrawn_ = mapRedrawn || !drawn_ || !(*drawn_ == inputs);
+    if (!redrawn_) return {};
+
+    if (mapRedrawn || measuredGeneration_ != map.generation()) rangeStale_ = true;
+    const bool linearize = options.linearize && light.perspective;
+    ShownDepthRange shown;
+    switch (options.contrast) {
+        case DepthContrast::Auto: {
+            if (rangeStale_) measureWrittenRange(map);  // only when the map changed
+            shown.anyCaster = writtenMin_.has_value();
+            if (shown.anyCaster) {
+                shown.min = float(linearize ? linearLightDepth(light, *writtenMin_) : *writtenMin_);
+                shown.max = float(linearize ? linearLightDepth(light, *writtenMax_) : *writtenMax_);
+            }
+            // A flat map (one depth everywhere) still shows mid grey rather than dividing by zero.
+            if (shown.max <= shown.min) shown.max = shown.min + 1e-6f;
+            break;
+        }
+        case DepthContrast::Full: shown = {0.0f, 1.0f, false}; break;
+        case DepthContrast::Manual: shown = {options.manualMin, options.manualMax, false}; break;
+    }
+
+    const double pixelsPerTexel = texelPixels(options.visible, width, map.resolution());
+    gridShown_ = options.texelGrid && pixelsPerTexel >= kGridMinTexelPixels;
+
+    const DisplayUniforms& u = uniforms_;
+    glBindFramebuffer(GL_FRAMEBUFFER, target_.framebuffer());
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(displayProgram_.id());
+    glUniform2f(u.uvMin, float(options.visible.min.x), float(options.visible.min.y));
+    glUniform2f(u.uvMax, float(options.visible.max.x), float(options.visible.max.y));
+    glUniform2f(u.viewSize, float(width), float(height));
+    glUniform2f(u.range, shown.min, shown.max);
+    glUniform1i(u.linearize, linearize ? 1 : 0);
+    glUniform2f(u.nearFar, float(light.nearPlane), float(light.farPlane));
+    glUniform1f(u.gridTexelPixels, gridShown_ ? float(pixelsPerTexel) : 0.0f);
+    glBindTextureUnit(kDepthUnit, map.texture());
+    glBindSampler(kDepthUnit, rawSampler_.id());
+    glBindVertexArray(emptyVertexArray_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    glBindSampler(kDepthUnit, 0);
+    glUseProgram(0);
+    glEnable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    shown_ = shown;
+    drawn_ = inputs;
+    return {};
+}
+
+std::optional<float> ShadowMapView::depthAt(const ShadowMap& map, int texelX, int texelY) const {
+    if (!map.valid() || texelX < 0 || texelY < 0 || texelX >= map.resolution() || texelY >= map.resolution())
+        return std::nullopt;
+    float depth = 0.0f;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(map.texture(), 0, texelX, texelY, 0, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof depth,
+                         &depth);
+    return depth;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,43 @@
+#version 450 core
+// Min and max of the depths casters wrote (below 1) over the whole map, as float bits: non-negative floats order
+// like their bit patterns, so integer atomics find them. Each invocation reads a block of BLOCK x BLOCK texels
+// (BLOCK is defined by the renderer).
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(binding = 0) uniform sampler2D uDepth;
+layout(std430, binding = 0) buffer Range {
+    uint minBits;  // starts at 0xFFFFFFFF: still that when no caster wrote
+    uint maxBits;  // starts at 0
+};
+
+shared uint groupMin;
+shared uint groupMax;
+
+void main() {
+    if (gl_LocalInvocationIndex == 0u) {
+        groupMin = 0xFFFFFFFFu;
+        groupMax = 0u;
+    }
+    barrier();
+    ivec2 size = textureSize(uDepth, 0);
+    ivec2 base = ivec2(gl_GlobalInvocationID.xy) * BLOCK;
+    uint localMin = 0xFFFFFFFFu, localMax = 0u;
+    for (int y = 0; y < BLOCK; ++y)
+        for (int x = 0; x < BLOCK; ++x) {
+            ivec2 p = base + ivec2(x, y);
+            if (p.x >= size.x || p.y >= size.y) continue;
+            float d = texelFetch(uDepth, p, 0).r;
+            if (d < 1.0) {
+                uint bits = floatBitsToUint(max(d, 0.0));
+                localMin = min(localMin, bits);
+                localMax = max(localMax, bits);
+            }
+        }
+    atomicMin(groupMin, localMin);
+    atomicMax(groupMax, localMax);
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) {
+        atomicMin(minBits, groupMin);
+        atomicMax(maxBits, groupMax);
+    }
+}
