@@ -106,6 +106,28 @@ TEST_F(EditorFiles, ADroppedGltfLoadsWhileTheWindowKeepsDrawing) {
     EXPECT_TRUE(h.state().stats.ok);
 }
 
+TEST_F(EditorFiles, ABigSceneLoadsOnAThreadWhileFramesKeepComing) {
+    const std::string helmet =
+        std::string(SHADOWLAB_SOURCE_DIR) + "/../shared/scenes/FlightHelmet_geometry/FlightHelmet.gltf";
+    if (!std::filesystem::exists(helmet)) GTEST_SKIP() << helmet << " (the shared scenes) is not here";
+    EditorHarness h(testOptions(folder));
+    h.settle();
+    h.click("scene.path");
+    h.selectAllAndType(helmet);
+    int framesWhileLoading = 0;
+    for (int i = 0; i < 2000 && h.state().sceneSpec != helmet; ++i) {
+        h.frame();
+        framesWhileLoading += h.state().loading.has_value();
+        if (h.state().loading) {
+            EXPECT_TRUE(h.hasControl("scene.progress"));
+        }
+    }
+    EXPECT_EQ(h.state().sceneSpec, helmet);
+    EXPECT_GT(framesWhileLoading, 0) << "the load should not block the frame that asked for it";
+    h.settle();
+    EXPECT_GT(h.state().stats.sceneTriangles, 90000u);
+}
+
 TEST_F(EditorFiles, PickingABuiltInSceneLoadsIt) {
     EditorHarness h(testOptions(folder));
     h.settle();

@@ -162,6 +162,16 @@ TEST_F(EditorPanels, LightAnglesAndProjectionControlsReachTheSettings) {
     EXPECT_TRUE(h.state().stats.ok) << h.state().stats.error;
 }
 
+TEST_F(EditorPanels, DepthFormatComboReallocatesTheMapOnTheNextFrame) {
+    EditorHarness& h = *harness;
+    h.click("shadow.depthFormat");
+    h.click("shadow.depthFormat=d16");
+    EXPECT_EQ(h.state().settings.shadow.format, DepthFormat::D16);
+    h.frame();
+    EXPECT_EQ(h.editor().renderer().shadowMap().format(), DepthFormat::D16);
+    EXPECT_EQ(h.state().stats.shadowMapBytes, std::size_t(2048) * 2048 * 2);
+}
+
 TEST_F(EditorPanels, ViewModeComboShowsTheShadowFactor) {
     EditorHarness& h = *harness;
     h.click("view");

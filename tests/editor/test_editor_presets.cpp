@@ -97,6 +97,25 @@ TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
     EXPECT_EQ(h.state().preset.name(), "acne");
 }
 
+TEST_F(EditorPresets, QuittingWithNothingUnsavedDoesNotAsk) {
+    EditorHarness& h = *harness;
+    h.pressKey(keys::kQ, /*ctrl=*/true);
+    EXPECT_TRUE(h.editor().quitConfirmed()) << "nothing unsaved: Ctrl+Q quits at once";
+}
+
+TEST_F(EditorPresets, QuittingWithUnsavedChangesAsksAndCancelKeepsTheEditorOpen) {
+    EditorHarness& h = *harness;
+    h.click("shadow.resolution=4K");
+    h.editor().requestQuit();  // what the window's close button does
+    h.frame();
+    ASSERT_TRUE(h.hasControl("dialog.cancel"));
+    h.click("dialog.cancel");
+    EXPECT_FALSE(h.editor().quitConfirmed());
+    h.pressKey(keys::kQ, /*ctrl=*/true);
+    h.click("dialog.dontSave");
+    EXPECT_TRUE(h.editor().quitConfirmed());
+}
+
 TEST_F(EditorPresets, SaveAsRefusesToReplaceAnExistingFileUnlessAsked) {
     EditorHarness& h = *harness;
     h.click("preset.saveAs");
