@@ -205,6 +205,7 @@ void Editor::renderViewport() {
                                                                                  : 0.0f;
     state_.history.push(float(state_.lastFrameMs), shadowMs);
     mapPictureStale_ = mapPictureStale_ || stats.shadowPass.ran || stats.shadowMapReallocated;
+    if (stats.shadowPass.ran) state_.lastShadowPass = stats;
     state_.stats = std::move(stats);
     state_.haveStats = true;
     ++state_.renderedFrames;

@@ -68,6 +68,7 @@ struct EditorState {
 
     FrameStats stats;           // the newest frame the renderer drew
     bool haveStats = false;
+    FrameStats lastShadowPass;  // the newest frame whose shadow pass ran (its triangles, casters, time)
     FrameHistory history;
     long renderedFrames = 0;
     long idleFrames = 0;        // frames where nothing changed and no pass ran
