@@ -364,7 +364,9 @@ void Editor::dropFiles(const std::vector<std::string>& paths) {
 
 bool Editor::busy() const {
     if (loader_.busy() || state_.animateLight || screenshotRequested_ || windowScreenshotPath_) return true;
-    if (!lastRendered_ || !state_.scene || !orbit_) return true;
+    // Nothing to draw into (no scene yet, or a minimized window): wait for events rather than spin.
+    if (!state_.scene || !orbit_ || viewportRect_.z < 16.0f || viewportRect_.w < 16.0f) return false;
+    if (!lastRendered_) return true;
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
                         state_.showLightFrustum};
