@@ -27,8 +27,13 @@ protected:
 
 }  // namespace
 
-TEST_F(EditorPanels, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheScene) {
-    EditorHarness& h = *harness;
+class EditorLayout : public ::testing::TestWithParam<std::pair<int, int>> {};
+
+TEST_P(EditorLayout, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheScene) {
+    const auto [width, height] = GetParam();
+    const std::string name = "layout-" + std::to_string(width) + "x" + std::to_string(height);
+    EditorHarness h(testOptions(testFolder(name)), width, height);
+    h.settle();
     const std::vector<std::string> expected = {"Scene", "Presets", "Light", "Projection", "Shadow map",
                                                "Sampling", "Shadow map viewer", "Stats"};
     ASSERT_EQ(panels().size(), expected.size());
@@ -38,8 +43,8 @@ TEST_F(EditorPanels, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheS
         rects.push_back(h.rect("panel:" + title));
     }
     const ControlRect view = h.rect("viewport.image");
-    EXPECT_GT(view.w, 700.0f);
-    EXPECT_GT(view.h, 450.0f);
+    EXPECT_GT(view.w, 0.4f * float(width));
+    EXPECT_GT(view.h, 0.5f * float(height));
     for (std::size_t i = 0; i < rects.size(); ++i) {
         EXPECT_FALSE(overlap(rects[i], view)) << expected[i] << " covers the viewport";
         EXPECT_LE(rects[i].x + rects[i].w, float(h.width()) + 0.5f) << expected[i];
@@ -51,12 +56,18 @@ TEST_F(EditorPanels, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheS
     EXPECT_EQ(h.editor().viewportTarget().width(), int(view.w));
     EXPECT_EQ(h.editor().viewportTarget().height(), int(view.h));
     const std::vector<std::uint8_t> window = h.readWindow();
-    h.saveWindow("every-panel");
+    h.saveWindow(name);
     EXPECT_GT(variedFraction(window, h.width(), int(view.x), int(view.y), int(view.w), int(view.h)), 0.1);
     const ControlRect map = h.rect("viewer.image");
-    EXPECT_GT(map.w, 250.0f);
+    EXPECT_GT(map.w, 200.0f);
     EXPECT_GT(variedFraction(window, h.width(), int(map.x), int(map.y), int(map.w), int(map.h)), 0.05);
 }
+
+INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorLayout,
+                         ::testing::Values(std::pair{1600, 900}, std::pair{1280, 720}, std::pair{1920, 1080}),
+                         [](const auto& info) {
+                             return std::to_string(info.param.first) + "x" + std::to_string(info.param.second);
+                         });
 
 TEST_F(EditorPanels, DraggingDepthBiasRaisesItAndTheNextFrameRedrawsTheShadowMap) {
     EditorHarness& h = *harness;
