@@ -48,7 +48,8 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
     contrastControls(v, spot, state);
     ImGui::Checkbox("texel grid", &v.options.texelGrid);
     ImGui::SameLine();
-    ImGui::Text("zoom %.2gx", v.zoomPan.zoom());
+    const double zoom = v.zoomPan.zoom();
+    ImGui::Text(zoom >= 10.0 ? "zoom %.0fx" : "zoom %.2gx", zoom);
     ImGui::SameLine();
     if (ImGui::SmallButton("fit")) v.zoomPan.reset();
     state.controls.recordLastItem("viewer.fit");
