@@ -21,7 +21,7 @@ struct TuneStep {
     double faintAcnePercent = 0.0;
     std::size_t mismatched = 0;
     bool withinLimit = false;        // acnePercent <= maxAcnePercent
-    bool bestSoFar = false;          // the best candidate after this step
+    bool bestSoFar = false;          // this candidate became the best so far
 };
 
 struct TuneResult {
