@@ -68,7 +68,7 @@ struct AccuracyMeter::Impl {
 
     // Light space (map size, projection): the boundary in texels and each pixel's distance to it.
     std::optional<std::pair<glm::dmat4, int>> boundaryKey;
-    ShadowBoundary boundary;
+    std::optional<ShadowBoundary> boundary;
     double boundaryMs = 0.0;
 
     void dropScene() {
@@ -201,7 +201,11 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     if (!m.boundaryKey || *m.boundaryKey != boundaryKey) {
         setStage(progress, 0.85f, "finding the true shadow boundary");
         t = Clock::now();
-        m.boundary = ShadowBoundary(m.samples, m.visibility.classes, stats.light);
+        BoundaryProbe probe;
+        probe.bvh = m.bvh.get();
+        probe.light = light;
+        probe.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
+        m.boundary.emplace(m.samples, m.visibility.classes, stats.light, probe);
         m.boundaryKey = boundaryKey;
         report.cost.boundaryMs = msSince(t);
     }
@@ -215,10 +219,24 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     report.texelWorldSize = stats.light.texelWorldSize;
     // No boundary in view: distances are capped at the map's size (so every number stays finite).
     const double cap = double(stats.light.resolution);
-    MetricsResult metrics = computeMetrics(m.visibility.classes, shadowFactor, toolCovered, report.kTexels,
-                                           [&](std::size_t i) { return std::min(m.boundary.distance(i), cap); });
+    const double k = report.kTexels;
+    ShadowBoundary& boundary = *m.boundary;
+    // The pixels whose distance the metrics need (darkened lit ones, brightened shadowed ones), on all cores first.
+    std::vector<std::size_t> needDistance;
+    for (std::size_t i = 0; i < count; ++i) {
+        const PixelClass c = m.visibility.classes[i];
+        if (!isScored(c) || !toolCovered[i]) continue;
+        if (isLit(c) ? shadowFactor[i] < 1.0f : shadowFactor[i] > 0.5f) needDistance.push_back(i);
+    }
+    const std::size_t probedBefore = boundary.probedPixels();
+    const auto probeStart = Clock::now();
+    boundary.prepare(needDistance, k);
+    report.cost.probeMs = msSince(probeStart);
+    report.cost.probedPixels = boundary.probedPixels() - probedBefore;
+    MetricsResult metrics = computeMetrics(m.visibility.classes, shadowFactor, toolCovered, k,
+                                           [&](std::size_t i) { return std::min(boundary.distance(i, k), cap); });
     report.counts = metrics.counts;
-    for (std::size_t i = 0; i < count; ++i) report.counts.boundaryPixels += m.boundary.onBoundary(i) ? 1 : 0;
+    for (std::size_t i = 0; i < count; ++i) report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
     report.acnePercent = metrics.acnePercent;
     report.leakPercent = metrics.leakPercent;
     report.faintAcnePercent = metrics.faintAcnePercent;
@@ -226,7 +244,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     report.width = width;
     report.height = height;
     report.overlayRgba = makeOverlay(width, height, m.visibility.classes, shadowFactor, m.visibility.lambert,
-                                     metrics.marks, m.boundary, settings.light.ambient);
+                                     metrics.marks, boundary, settings.light.ambient);
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");

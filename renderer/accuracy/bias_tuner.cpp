@@ -109,6 +109,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
             result.error = report.error;
             return std::nullopt;
         }
+        if (result.path.empty()) result.referenceCost = report.cost;
         TuneStep step;
         step.index = int(result.path.size()) + 1;
         step.phase = phase;

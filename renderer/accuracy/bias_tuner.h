@@ -33,6 +33,7 @@ struct TuneResult {
     std::vector<TuneStep> path;      // every candidate measured, in order
     AccuracyReport report;           // the measurement of `best`
     double seconds = 0.0;            // wall time of the search
+    AccuracyCost referenceCost;      // what the first measurement (which built the reference) cost
 };
 
 TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& start, const Camera& camera, int width,

@@ -4,7 +4,9 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace shadowlab {
 
@@ -13,6 +15,36 @@ glm::dvec3 towardLight(const ReferenceLight& light, const glm::dvec3& point) {
     const glm::dvec3 d = light.position - point;
     const double length = glm::length(d);
     return length > 0.0 ? d / length : glm::dvec3(0.0);
+}
+
+namespace {
+
+// The shadow ray of a point that faces the light and lies inside the cone.
+bool occludedFrom(const EmbreeScene& bvh, const ReferenceLight& light, const glm::dvec3& p, const glm::dvec3& n,
+                  const glm::dvec3& l, double sceneRadius) {
+    // Off the surface along the normal (which faces the light here), far enough for float's rounding.
+    const double offset = 1e-5 * (glm::length(p) + sceneRadius);
+    const glm::dvec3 origin = p + n * offset;
+    glm::dvec3 direction = l;
+    float tFar = std::numeric_limits<float>::infinity();
+    if (light.spot) {
+        direction = light.position - origin;
+        tFar = 1.0f - 1e-6f;
+    }
+    return bvh.occluded(glm::vec3(origin), glm::vec3(direction), tFar);
+}
+
+bool outsideCone(const ReferenceLight& light, const glm::dvec3& l) {
+    return light.spot && glm::dot(-l, light.direction) < light.cosHalfCone;
+}
+
+}  // namespace
+
+bool litAt(const EmbreeScene& bvh, const ReferenceLight& light, const glm::dvec3& point, const glm::dvec3& normal,
+           double sceneRadius) {
+    const glm::dvec3 l = towardLight(light, point);
+    if (outsideCone(light, l) || !(glm::dot(normal, l) > 0.0)) return false;
+    return !occludedFrom(bvh, light, point, normal, l, sceneRadius);
 }
 
 VisibilityResult traceVisibility(const EmbreeScene& bvh, const SurfaceSamples& samples, const ReferenceLight& light,
@@ -37,7 +69,7 @@ VisibilityResult traceVisibility(const EmbreeScene& bvh, const SurfaceSamples& s
             const glm::dvec3 l = towardLight(light, p);
             const double nDotL = glm::dot(n, l);
             result.lambert[i] = float(std::max(nDotL, 0.0));
-            if (light.spot && glm::dot(-l, light.direction) < light.cosHalfCone) {
+            if (outsideCone(light, l)) {
                 result.classes[i] = PixelClass::OutsideCone;
                 continue;
             }
@@ -45,18 +77,8 @@ VisibilityResult traceVisibility(const EmbreeScene& bvh, const SurfaceSamples& s
                 result.classes[i] = PixelClass::FacingAway;
                 continue;
             }
-            // Off the surface along the normal (which faces the light here), far enough for float's rounding.
-            const double offset = 1e-5 * (glm::length(p) + sceneRadius);
-            const glm::dvec3 origin = p + n * offset;
-            glm::dvec3 direction = l;
-            float tFar = std::numeric_limits<float>::infinity();
-            if (light.spot) {
-                direction = light.position - origin;
-                tFar = 1.0f - 1e-6f;
-            }
             ++rowRays;
-            const bool blocked = bvh.occluded(glm::vec3(origin), glm::vec3(direction), tFar);
-            result.classes[i] = blocked ? PixelClass::Shadowed : PixelClass::Lit;
+            result.classes[i] = occludedFrom(bvh, light, p, n, l, sceneRadius) ? PixelClass::Shadowed : PixelClass::Lit;
         }
         rays += rowRays;
     });

@@ -42,6 +42,11 @@ struct VisibilityResult {
     bool cancelled = false;
 };
 
+// Exact visibility of one point with normal n facing the camera, by the same rules as traceVisibility: lit only
+// when it faces the light, lies inside a spot's cone and no opaque caster is in the way.
+bool litAt(const EmbreeScene& bvh, const ReferenceLight& light, const glm::dvec3& point, const glm::dvec3& normal,
+           double sceneRadius);
+
 // Unit vector from a point toward the light.
 glm::dvec3 towardLight(const ReferenceLight& light, const glm::dvec3& point);
 
