@@ -80,6 +80,13 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
     };
 }
 
+std::string checkOutputFolder(const std::string& path, const char* option) {
+    if (path.empty()) return {};
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (folder.empty() || std::filesystem::is_directory(folder)) return {};
+    return std::string(option) + " " + path + ": folder '" + folder.string() + "' does not exist";
+}
+
 std::string writeTextFile(const std::string& path, const std::string& text) {
     const std::string temporary = path + ".tmp";
     {

@@ -26,6 +26,8 @@ int runMeasure(const MeasureOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
         return fail("--width/--height must be in [1, 16384], got " + std::to_string(options.width) + "x" +
                     std::to_string(options.height));
+    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"}})
+        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
     SceneLoadResult loaded = loadScene(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;

@@ -37,6 +37,8 @@ int runTune(const TuneOptions& options) {
                     std::to_string(options.height));
     if (!(options.maxAcnePercent >= 0.0 && options.maxAcnePercent <= 100.0))
         return fail("--max-acne must be a percentage in [0, 100]");
+    for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.json, "--json"}})
+        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
     SceneLoadResult loaded = loadScene(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
