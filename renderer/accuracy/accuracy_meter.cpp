@@ -37,7 +37,7 @@ bool sameLight(const ReferenceLight& a, const ReferenceLight& b) {
 
 void setStage(AccuracyProgress* progress, float fraction, const char* stage) {
     if (!progress) return;
-    progress->fraction = fraction;
+    progress->fraction = progress->base + progress->span * fraction;
     progress->setStage(stage);
 }
 

@@ -22,6 +22,9 @@ namespace shadowlab {
 struct AccuracyProgress {
     std::atomic<float> fraction{0.0f};  // 0..1 of the current job (measure or tune)
     std::atomic<bool> cancel{false};    // set by the UI; the job stops soon after and reports "cancelled"
+    // A measurement inside a longer job (the tuner) reports fraction = base + span x its own progress.
+    float base = 0.0f;
+    float span = 1.0f;
 
     void setStage(std::string text) {
         std::lock_guard<std::mutex> lock(mutex_);

@@ -26,7 +26,8 @@ constexpr double kMaxDepthBiasUnits = 1e6;
 constexpr double kMaxSlope = 100.0;
 constexpr double kMaxNormalTexels = 16.0;
 constexpr int kBisections = 3;
-constexpr int kMaxSteps = 2 + 4 * (9 + kBisections);
+constexpr int kMaxSteps = 2 + 4 * (10 + kBisections);  // for the progress bar: start, zero bias, 4 families
+constexpr float kFirstShare = 0.3f;                    // of the progress bar: the first candidate's reference
 
 // One search direction: the bias grows with t along it.
 struct Family {
@@ -103,9 +104,16 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
             result.error = "cancelled";
             return std::nullopt;
         }
-        AccuracyReport report = meter.measure(scene, s, camera, width, height, nullptr);
+        // The first candidate builds the reference (the long part); the rest share what is left of the bar.
+        if (progress) {
+            const std::size_t done = result.path.size();
+            progress->base = done == 0 ? 0.0f : kFirstShare + (1.0f - kFirstShare) * float(done - 1) / kMaxSteps;
+            progress->span = done == 0 ? kFirstShare : (1.0f - kFirstShare) / kMaxSteps;
+        }
+        AccuracyReport report = meter.measure(scene, s, camera, width, height, progress);
         if (!report.ok) {
             stop = true;
+            result.cancelled = report.cancelled;
             result.error = report.error;
             return std::nullopt;
         }
@@ -130,7 +138,6 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         }
         result.path.push_back(step);
         if (progress) {
-            progress->fraction = std::min(1.0f, float(result.path.size()) / float(kMaxSteps));
             progress->setStage("candidate " + std::to_string(step.index) + ": " + phase);
         }
         if (onStep) onStep(step);
@@ -183,6 +190,8 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     result.reachedLimit = bestIndex && result.path[*bestIndex].withinLimit;
     result.ok = true;
     if (progress) {
+        progress->base = 0.0f;
+        progress->span = 1.0f;
         progress->fraction = 1.0f;
         progress->setStage(result.reachedLimit ? "done" : "done: no setting reached the acne limit");
     }

@@ -28,8 +28,15 @@ TEST_F(BiasTunerTest, FromZeroBiasEndsWithinTheAcneLimitWithLessLeakThanPeterPan
 
         AccuracyProgress progress;
         int steps = 0;
-        const TuneResult result =
-            tuneBias(meter, scene, start, camera, 480, 270, 0.1, &progress, [&](const TuneStep&) { ++steps; });
+        float lastFraction = 0.0f;
+        bool fractionRises = true;
+        const TuneResult result = tuneBias(meter, scene, start, camera, 480, 270, 0.1, &progress,
+                                           [&](const TuneStep&) {
+                                               ++steps;
+                                               fractionRises = fractionRises && progress.fraction > lastFraction;
+                                               lastFraction = progress.fraction;
+                                           });
+        EXPECT_TRUE(fractionRises) << "the progress bar only moves forward";
         ASSERT_TRUE(result.ok) << result.error;
         EXPECT_TRUE(result.reachedLimit);
         EXPECT_LE(result.report.acnePercent, 0.1);
