@@ -39,6 +39,7 @@ int runMeasure(const MeasureOptions& options) {
         const Camera camera = cameraFor(settings->camera, scene);
         const AccuracyReport report = meter.measure(scene, *settings, camera, options.width, options.height);
         if (!report.ok) return fail(report.error);
+        for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
         std::cout << "scene " << scene.name << " (" << scene.triangleCount() << " triangles)\n";
         printAccuracy(std::cout, report);
         printAccuracyCost(std::cout, report);

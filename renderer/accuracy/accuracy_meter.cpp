@@ -118,6 +118,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     if (std::string error = m.toolTarget.resize(width, height, GL_RGBA32F); !error.empty()) return fail(error);
     FrameStats stats = m.renderer.render(scene, toolSettings, camera, m.toolTarget);
     if (!stats.ok) return fail(stats.error);
+    report.warnings = stats.warnings;
     const std::size_t count = std::size_t(width) * std::size_t(height);
     std::vector<float> frame(count * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

@@ -82,6 +82,7 @@ struct AccuracyReport {
     bool ok = false;
     bool cancelled = false;
     std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
+    std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
 
     double acnePercent = 0.0;         // acne / lit * 100
     double leakPercent = 0.0;         // leak / shadowed * 100
