@@ -1,7 +1,9 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
 #include "cli/info_command.h"
+#include "cli/measure_command.h"
 #include "cli/render_command.h"
+#include "cli/tune_command.h"
 #include "editor_window/edit_command.h"
 #include "settings/settings_fields.h"
 
@@ -50,6 +52,27 @@ int main(int argc, char** argv) {
     editCmd->add_option("--height", edit.height, "window height")->capture_default_str()->check(CLI::Range(240, 16384));
     editCmd->add_option("--screenshot-dir", edit.screenshotDir, "where F12 writes screenshots")->capture_default_str();
 
+    cli::MeasureOptions measure;
+    CLI::App* measureCmd = app.add_subcommand("measure", "Measure acne, leak and edge error against the exact reference");
+    measureCmd->add_option("--scene", measure.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    measureCmd->add_option("--preset", measure.preset, "a preset JSON path, or the name of a shipped preset");
+    measureCmd->add_option("--set", measure.overrides, "override a setting: key=value (repeatable)");
+    measureCmd->add_option("--width", measure.width, "view width")->capture_default_str();
+    measureCmd->add_option("--height", measure.height, "view height")->capture_default_str();
+    measureCmd->add_option("--json", measure.json, "write the numbers, counts and cost as JSON");
+    measureCmd->add_option("--overlay", measure.overlay, "write the error overlay as PNG");
+
+    cli::TuneOptions tune;
+    CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest DepthBias / slope / normal offset: least leak, acne <= limit");
+    tuneCmd->add_option("--scene", tune.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    tuneCmd->add_option("--preset", tune.preset, "a preset JSON path, or the name of a shipped preset");
+    tuneCmd->add_option("--set", tune.overrides, "override a setting: key=value (repeatable)");
+    tuneCmd->add_option("--width", tune.width, "view width")->capture_default_str();
+    tuneCmd->add_option("--height", tune.height, "view height")->capture_default_str();
+    tuneCmd->add_option("--out", tune.out, "the tuned preset")->capture_default_str();
+    tuneCmd->add_option("--max-acne", tune.maxAcnePercent, "acne limit in percent")->capture_default_str();
+    tuneCmd->add_option("--json", tune.json, "write the search path and result as JSON");
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -63,6 +86,8 @@ int main(int argc, char** argv) {
     if (*renderCmd) return cli::runRender(render);
     if (*benchCmd) return cli::runBench(bench);
     if (*editCmd) return editor_window::runEdit(edit);
+    if (*measureCmd) return cli::runMeasure(measure);
+    if (*tuneCmd) return cli::runTune(tune);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

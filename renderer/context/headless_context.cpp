@@ -4,12 +4,25 @@
 
 #include <glad/egl.h>
 
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
 namespace shadowlab {
 
 namespace {
+
+// EGL hands every context on one device the same display, and eglTerminate ends all of them: two headless contexts
+// in one process (the editor's accuracy worker beside a test's) must share it, so it is terminated with the last.
+std::mutex& displayMutex() {
+    static std::mutex mutex;
+    return mutex;
+}
+std::map<void*, int>& displayUsers() {
+    static std::map<void*, int> users;
+    return users;
+}
 
 std::string eglErrorText(const char* step) {
     char code[16];
@@ -48,10 +61,12 @@ EGLDisplay openDisplay(std::string& platform) {
 }  // namespace
 
 HeadlessContext::HeadlessContext(bool debug) {
+    std::lock_guard<std::mutex> lock(displayMutex());
     // Before eglInitialize glad only sees EGL 1.0 plus client extensions: that is why the EXT entry points are used.
     if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) throw std::runtime_error("headless EGL: cannot load libEGL");
     EGLDisplay dpy = openDisplay(platform_);
     display_ = dpy;
+    ++displayUsers()[dpy];
     if (!gladLoaderLoadEGL(dpy)) throw std::runtime_error("headless EGL: cannot load EGL for the display");
     if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error(eglErrorText("eglBindAPI(EGL_OPENGL_API)"));
 
@@ -71,11 +86,17 @@ HeadlessContext::HeadlessContext(bool debug) {
 }
 
 HeadlessContext::~HeadlessContext() {
+    std::lock_guard<std::mutex> lock(displayMutex());
     auto dpy = static_cast<EGLDisplay>(display_);
     if (dpy != EGL_NO_DISPLAY && dpy != nullptr) {
-        eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        // Releases this thread's current context only if it is ours; another thread's context stays current.
+        if (eglGetCurrentContext() == static_cast<EGLContext>(context_))
+            eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
         if (context_) eglDestroyContext(dpy, static_cast<EGLContext>(context_));
-        eglTerminate(dpy);
+        if (--displayUsers()[dpy] <= 0) {
+            displayUsers().erase(dpy);
+            eglTerminate(dpy);
+        }
     }
 }
 

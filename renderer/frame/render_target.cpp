@@ -2,15 +2,15 @@
 
 namespace shadowlab {
 
-std::string RenderTarget::resize(int width, int height) {
-    if (width == width_ && height == height_ && framebuffer_) return {};
+std::string RenderTarget::resize(int width, int height, GLenum colorFormat) {
+    if (width == width_ && height == height_ && colorFormat == colorFormat_ && framebuffer_) return {};
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (width < 1 || height < 1 || width > maxSize || height > maxSize)
         return "view size " + std::to_string(width) + "x" + std::to_string(height) + " is outside [1, " +
                std::to_string(maxSize) + "]";
     gl::Texture color = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(color.id(), 1, GL_RGBA8, width, height);
+    glTextureStorage2D(color.id(), 1, colorFormat, width, height);
     glTextureParameteri(color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl::Renderbuffer depth = gl::createRenderbuffer();
@@ -25,6 +25,7 @@ std::string RenderTarget::resize(int width, int height) {
     framebuffer_ = std::move(framebuffer);
     width_ = width;
     height_ = height;
+    colorFormat_ = colorFormat;
     return {};
 }
 

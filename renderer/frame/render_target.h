@@ -11,8 +11,9 @@ namespace shadowlab {
 
 class RenderTarget {
 public:
-    // Returns "" or why it could not be made (size outside the GPU's limits).
-    std::string resize(int width, int height);
+    // Returns "" or why it could not be made (size outside the GPU's limits). colorFormat: GL_RGBA8 for pictures;
+    // GL_RGBA32F where exact values are read back (the accuracy meter's shadow factor).
+    std::string resize(int width, int height, GLenum colorFormat = GL_RGBA8);
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -28,6 +29,7 @@ private:
     gl::Framebuffer framebuffer_;
     int width_ = 0;
     int height_ = 0;
+    GLenum colorFormat_ = GL_RGBA8;
 };
 
 }  // namespace shadowlab

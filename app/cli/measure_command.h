@@ -1,0 +1,22 @@
+#pragma once
+// `shadowlab measure`: how wrong one view's shadows are against the exact reference (acne %, leak %, edge error,
+// the counts behind them, what the reference cost), optionally as JSON and as an overlay PNG.
+#include <string>
+#include <vector>
+
+namespace shadowlab::cli {
+
+struct MeasureOptions {
+    std::string scene = "builtin:textbook";
+    std::string preset;
+    std::vector<std::string> overrides;
+    int width = 1280;
+    int height = 720;
+    std::string json;     // optional
+    std::string overlay;  // optional PNG
+};
+
+// Exit code 0 unless it failed (bad input, no GL, a file that cannot be written).
+int runMeasure(const MeasureOptions& options);
+
+}  // namespace shadowlab::cli

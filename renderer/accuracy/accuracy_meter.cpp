@@ -1,0 +1,256 @@
+#include "accuracy/accuracy_meter.h"
+
+#include "accuracy/accuracy_metrics.h"
+#include "accuracy/accuracy_overlay.h"
+#include "accuracy/gbuffer_pass.h"
+#include "accuracy/shadow_boundary.h"
+#include "frame/renderer.h"
+#include "reference/embree_scene.h"
+#include "reference/visibility.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+namespace shadowlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// What the surface samples depend on.
+struct SurfaceKey {
+    glm::dvec3 position, target;
+    double fovYDeg, nearPlane, farPlane;
+    int width, height;
+    bool operator==(const SurfaceKey&) const = default;
+};
+
+bool sameLight(const ReferenceLight& a, const ReferenceLight& b) {
+    return a.spot == b.spot && a.direction == b.direction && (!a.spot || (a.position == b.position &&
+                                                                          a.cosHalfCone == b.cosHalfCone));
+}
+
+void setStage(AccuracyProgress* progress, float fraction, const char* stage) {
+    if (!progress) return;
+    progress->fraction = progress->base + progress->span * fraction;
+    progress->setStage(stage);
+}
+
+bool cancelled(const AccuracyProgress* progress) { return progress && progress->cancel.load(); }
+
+}  // namespace
+
+struct AccuracyMeter::Impl {
+    Renderer renderer;
+    RenderTarget toolTarget;
+    GBufferPass gbuffer;
+
+    // Scene: the BVH and the G-buffer's own upload, rebuilt only when the geometry changes.
+    const Scene* scene = nullptr;
+    std::size_t fingerprint = 0;
+    glm::dvec3 origin{0.0};
+    std::unique_ptr<GpuScene> gpuScene;
+    std::unique_ptr<EmbreeScene> bvh;
+
+    // Camera and size: the surface samples.
+    std::optional<SurfaceKey> surfaceKey;
+    SurfaceSamples samples;
+    double gbufferMs = 0.0;
+
+    // Light: exact visibility.
+    std::optional<ReferenceLight> visibilityLight;
+    VisibilityResult visibility;
+
+    // Light space (map size, projection): the boundary in texels and each pixel's distance to it.
+    std::optional<std::pair<glm::dmat4, int>> boundaryKey;
+    std::optional<ShadowBoundary> boundary;
+    double boundaryMs = 0.0;
+
+    void dropScene() {
+        scene = nullptr;
+        gpuScene.reset();
+        bvh.reset();
+        surfaceKey.reset();
+        visibilityLight.reset();
+        boundaryKey.reset();
+    }
+};
+
+AccuracyMeter::AccuracyMeter() : impl_(std::make_unique<Impl>()) {}
+AccuracyMeter::~AccuracyMeter() = default;
+
+void AccuracyMeter::sceneChanged() {
+    impl_->dropScene();
+    impl_->renderer.sceneChanged();
+}
+
+AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settings, const Camera& camera, int width,
+                                      int height, AccuracyProgress* progress) {
+    Impl& m = *impl_;
+    const auto start = Clock::now();
+    AccuracyReport report;
+    auto fail = [&](std::string error) {
+        report.ok = false;
+        report.error = std::move(error);
+        return report;
+    };
+    auto stop = [&] {
+        report.cancelled = true;
+        return fail("cancelled");
+    };
+    if (width < 1 || height < 1) return fail("view size must be at least 1x1");
+    if (std::vector<std::string> problems = settings.validate(); !problems.empty()) {
+        std::string text;
+        for (const std::string& p : problems) text += (text.empty() ? "" : "; ") + p;
+        return fail("invalid settings: " + text);
+    }
+
+    // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
+    setStage(progress, 0.0f, "rendering the tool's frame");
+    auto t = Clock::now();
+    Settings toolSettings = settings;
+    toolSettings.view = ViewMode::Shadow;
+    if (std::string error = m.toolTarget.resize(width, height, GL_RGBA32F); !error.empty()) return fail(error);
+    FrameStats stats = m.renderer.render(scene, toolSettings, camera, m.toolTarget);
+    if (!stats.ok) return fail(stats.error);
+    report.warnings = stats.warnings;
+    const std::size_t count = std::size_t(width) * std::size_t(height);
+    std::vector<float> frame(count * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(m.toolTarget.colorTexture(), 0, GL_RGBA, GL_FLOAT, GLsizei(frame.size() * sizeof(float)),
+                      frame.data());
+    std::vector<float> shadowFactor(count);
+    std::vector<std::uint8_t> toolCovered(count);
+    for (int row = 0; row < height; ++row) {
+        const std::size_t src = std::size_t(height - 1 - row) * std::size_t(width);
+        const std::size_t dst = std::size_t(row) * std::size_t(width);
+        for (std::size_t x = 0; x < std::size_t(width); ++x) {
+            const float* px = &frame[(src + x) * 4];
+            shadowFactor[dst + x] = px[0];
+            // The shadow view writes grey; the clear colour is not grey.
+            toolCovered[dst + x] = px[0] == px[1] && px[1] == px[2] ? 1 : 0;
+        }
+    }
+    report.cost.toolFrameMs = msSince(t);
+    if (cancelled(progress)) return stop();
+
+    // The BVH, once per scene geometry.
+    const std::size_t fingerprint = sceneFingerprint(scene);
+    report.cost.bvhReused = m.scene == &scene && m.fingerprint == fingerprint && m.bvh;
+    if (!report.cost.bvhReused) {
+        setStage(progress, 0.1f, "building the BVH");
+        m.dropScene();
+        m.origin = stats.renderOrigin;
+        m.gpuScene = std::make_unique<GpuScene>(scene, m.origin);
+        m.bvh = std::make_unique<EmbreeScene>(scene, m.origin);
+        m.scene = &scene;
+        m.fingerprint = fingerprint;
+        report.cost.bvhBuildMs = m.bvh->buildMilliseconds();
+    }
+    report.cost.triangles = m.bvh->triangles();
+    if (cancelled(progress)) return stop();
+
+    // Surface samples, once per camera and size.
+    const SurfaceKey surfaceKey{camera.position, camera.target, camera.fovYDeg, camera.nearPlane, camera.farPlane,
+                                width, height};
+    const bool surfaceReused = m.surfaceKey && *m.surfaceKey == surfaceKey;
+    if (!surfaceReused) {
+        setStage(progress, 0.3f, "G-buffer: rebuilding surface points");
+        t = Clock::now();
+        m.surfaceKey.reset();
+        m.visibilityLight.reset();
+        m.boundaryKey.reset();
+        if (std::string error = m.gbuffer.render(*m.gpuScene, stats.cameraViewProjection, width, height,
+                                                 camera.position - m.origin, m.samples);
+            !error.empty())
+            return fail(error);
+        m.gbufferMs = msSince(t);
+        m.surfaceKey = surfaceKey;
+        report.cost.gbufferMs = m.gbufferMs;
+    }
+    if (cancelled(progress)) return stop();
+
+    // Exact visibility, once per light.
+    ReferenceLight light;
+    light.spot = stats.light.perspective;
+    light.direction = stats.light.direction;
+    light.position = stats.light.position;
+    light.cosHalfCone = std::cos(std::atan(stats.light.tanHalfFov));
+    const bool visibilityReused = m.visibilityLight && sameLight(*m.visibilityLight, light);
+    if (!visibilityReused) {
+        setStage(progress, 0.45f, "tracing shadow rays");
+        m.visibilityLight.reset();
+        m.boundaryKey.reset();
+        const double radius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
+        m.visibility = traceVisibility(*m.bvh, m.samples, light, radius, progress ? &progress->cancel : nullptr);
+        if (m.visibility.cancelled) return stop();
+        m.visibilityLight = light;
+        report.cost.traceMs = m.visibility.milliseconds;
+        report.cost.rays = m.visibility.rays;
+        report.cost.raysPerSecond =
+            m.visibility.milliseconds > 0.0 ? double(m.visibility.rays) / (m.visibility.milliseconds * 1e-3) : 0.0;
+        report.cost.threads = m.visibility.threads;
+    }
+
+    // The true boundary in this light space's texels.
+    const std::pair<glm::dmat4, int> boundaryKey{stats.light.viewProjection(), stats.light.resolution};
+    if (!m.boundaryKey || *m.boundaryKey != boundaryKey) {
+        setStage(progress, 0.85f, "finding the true shadow boundary");
+        t = Clock::now();
+        BoundaryProbe probe;
+        probe.bvh = m.bvh.get();
+        probe.light = light;
+        probe.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
+        m.boundary.emplace(m.samples, m.visibility.classes, stats.light, probe);
+        m.boundaryKey = boundaryKey;
+        report.cost.boundaryMs = msSince(t);
+    }
+    report.cost.referenceReused = surfaceReused && visibilityReused;
+    if (cancelled(progress)) return stop();
+
+    // The numbers and the picture.
+    setStage(progress, 0.9f, "measuring");
+    t = Clock::now();
+    report.kTexels = acceptanceRadiusTexels(settings.filter);
+    report.texelWorldSize = stats.light.texelWorldSize;
+    // No boundary in view: distances are capped at the map's size (so every number stays finite).
+    const double cap = double(stats.light.resolution);
+    const double k = report.kTexels;
+    ShadowBoundary& boundary = *m.boundary;
+    // The pixels whose distance the metrics need (darkened lit ones, brightened shadowed ones), on all cores first.
+    std::vector<std::size_t> needDistance;
+    for (std::size_t i = 0; i < count; ++i) {
+        const PixelClass c = m.visibility.classes[i];
+        if (!isScored(c) || !toolCovered[i]) continue;
+        if (isLit(c) ? shadowFactor[i] < 1.0f : shadowFactor[i] > 0.5f) needDistance.push_back(i);
+    }
+    const std::size_t probedBefore = boundary.probedPixels();
+    const auto probeStart = Clock::now();
+    boundary.prepare(needDistance, k);
+    report.cost.probeMs = msSince(probeStart);
+    report.cost.probedPixels = boundary.probedPixels() - probedBefore;
+    MetricsResult metrics = computeMetrics(m.visibility.classes, shadowFactor, toolCovered, k,
+                                           [&](std::size_t i) { return std::min(boundary.distance(i, k), cap); });
+    report.counts = metrics.counts;
+    for (std::size_t i = 0; i < count; ++i) report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
+    report.acnePercent = metrics.acnePercent;
+    report.leakPercent = metrics.leakPercent;
+    report.faintAcnePercent = metrics.faintAcnePercent;
+    report.edgeErrorP95Texels = metrics.edgeErrorP95Texels;
+    report.width = width;
+    report.height = height;
+    report.overlayRgba = makeOverlay(width, height, m.visibility.classes, shadowFactor, m.visibility.lambert,
+                                     metrics.marks, boundary, settings.light.ambient);
+    report.cost.metricsMs = msSince(t);
+    report.cost.totalMs = msSince(start);
+    setStage(progress, 1.0f, "done");
+    report.ok = true;
+    return report;
+}
+
+}  // namespace shadowlab

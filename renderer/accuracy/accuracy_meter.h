@@ -1,0 +1,124 @@
+#pragma once
+// Measures how wrong the tool's shadows are against an exact reference (DESIGN.md, "Accuracy"): per main-view pixel,
+// the rasterized surface point and geometric normal (from a G-buffer pass with the same camera), exact visibility V by
+// a shadow ray (Embree), and the tool's shadow factor S. The reference depends only on scene, light, camera and size,
+// so it is cached: re-measuring after a bias / filter / resolution change costs one frame of the tool.
+// Knows no window, UI or CLI. Needs a current GL 4.5 context on the calling thread (one meter per context).
+#include "frame/camera.h"
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+// Shared between the measuring thread and a UI: how far it got, what it is doing, and a cancel request.
+struct AccuracyProgress {
+    std::atomic<float> fraction{0.0f};  // 0..1 of the current job (measure or tune)
+    std::atomic<bool> cancel{false};    // set by the UI; the job stops soon after and reports "cancelled"
+    // A measurement inside a longer job (the tuner) reports fraction = base + span x its own progress.
+    float base = 0.0f;
+    float span = 1.0f;
+
+    void setStage(std::string text) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stage_ = std::move(text);
+    }
+    std::string stage() const {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return stage_;
+    }
+
+private:
+    mutable std::mutex mutex_;
+    std::string stage_;
+};
+
+// The counts behind the percentages (DESIGN.md's sets), all in main-view pixels.
+struct AccuracyCounts {
+    std::size_t pixels = 0;            // width * height
+    std::size_t background = 0;        // no surface under the pixel
+    std::size_t facingAway = 0;        // geometric normal faces away from the light: unlit by the main pass, not scored
+    std::size_t outsideCone = 0;       // spot light: outside the cone (V = 0, S = 0 expected; scored as shadowed)
+    std::size_t nonFinite = 0;         // a non-finite point, normal or S (must stay 0)
+    std::size_t measured = 0;          // pixels scored for acne / leak
+    std::size_t lit = 0;               // measured with V = 1
+    std::size_t shadowed = 0;          // measured with V = 0
+    std::size_t acne = 0;              // V = 1, S < 0.5, dist > k
+    std::size_t faintAcne = 0;         // V = 1, 0.5 <= S < 1, dist > k (beyond DESIGN.md: visible moiré below acne)
+    std::size_t leak = 0;              // V = 0, S > 0.5, dist > k
+    std::size_t mismatched = 0;        // (V = 1, S < 0.5) or (V = 0, S > 0.5), at any distance
+    std::size_t mismatchedWithinK = 0; // mismatched, but within k texels of a true boundary (filter blur: not counted)
+    std::size_t boundaryPixels = 0;    // pixels on the true shadow boundary (drawn as the thin line)
+    std::size_t coverageMismatch = 0;  // G-buffer and tool frame disagree about whether a surface is there
+};
+
+// What the reference and the measurement cost (milliseconds unless named otherwise).
+struct AccuracyCost {
+    bool bvhReused = false;        // the scene's BVH came from the cache
+    bool referenceReused = false;  // G-buffer, visibility and boundary distances came from the cache
+    double bvhBuildMs = 0.0;
+    std::size_t triangles = 0;     // in the BVH
+    double gbufferMs = 0.0;        // G-buffer pass + read-back + double-precision surface rebuild
+    double traceMs = 0.0;          // shadow rays
+    std::size_t rays = 0;
+    double raysPerSecond = 0.0;
+    int threads = 0;
+    double boundaryMs = 0.0;       // true boundary + distance of every pixel to it
+    double probeMs = 0.0;          // extra rays probing boundaries the camera cannot see
+    std::size_t probedPixels = 0;
+    double toolFrameMs = 0.0;      // the tool's own frame (shadow pass + shadow-factor pass + read-back)
+    double metricsMs = 0.0;        // metrics + overlay
+    double totalMs = 0.0;
+};
+
+struct AccuracyReport {
+    bool ok = false;
+    bool cancelled = false;
+    std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
+    std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
+
+    double acnePercent = 0.0;         // acne / lit * 100
+    double leakPercent = 0.0;         // leak / shadowed * 100
+    double faintAcnePercent = 0.0;    // faintAcne / lit * 100
+    double edgeErrorP95Texels = 0.0;  // 95th percentile of dist over mismatched pixels (0 when none)
+    double kTexels = 1.0;             // filter radius + 1 texel
+    double texelWorldSize = 0.0;      // world size of one shadow-map texel (directional; spot: at the cone's centre)
+    AccuracyCounts counts;
+    AccuracyCost cost;
+
+    // Red = acne, blue = leak (darker within k of a boundary), yellow = the true boundary, the rest dimmed
+    // (the tool's S x Lambert, grey). RGBA8, width * height * 4 bytes, row 0 = TOP of the view (PNG order).
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> overlayRgba;
+};
+
+class AccuracyMeter {
+public:
+    // Needs a current GL 4.5 context; throws std::runtime_error if its shaders do not build.
+    AccuracyMeter();
+    ~AccuracyMeter();
+    AccuracyMeter(const AccuracyMeter&) = delete;
+    AccuracyMeter& operator=(const AccuracyMeter&) = delete;
+
+    // Measures one view. Invalid settings, a size the GPU refuses or a cancel give ok = false with a reason; nothing
+    // throws for user input. The scene must stay alive and unchanged while cached (call sceneChanged() after edits).
+    AccuracyReport measure(const Scene& scene, const Settings& settings, const Camera& camera, int width, int height,
+                           AccuracyProgress* progress = nullptr);
+
+    // Drops every cache (BVH, reference) — call after editing the scene in place.
+    void sceneChanged();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,68 @@
+#pragma once
+// The true shadow boundary and each pixel's distance to it, in shadow-map texels (the texel grid of the tool's
+// light space, so the distance is in "texels of p's footprint" and compares with the filter's radius).
+// - Visible boundary: midpoints between 4-neighbour pixels on one continuous surface whose visibility differs.
+// - Boundaries the view does not show (behind a fold, below pixel size): a pixel farther than k from the visible
+//   boundary is probed with shadow rays from rings of points on its own tangent plane, out to k texels; the
+//   distance drops to the radius where visibility flips. Both are cached per pixel.
+#include "accuracy/point_tree.h"
+#include "light/light_space.h"
+#include "reference/embree_scene.h"
+#include "reference/surface_samples.h"
+#include "reference/visibility.h"
+
+#include <glm/ext/vector_double2.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+namespace shadowlab {
+
+// Pixels i, j (neighbours) lie on one continuous surface: each lies near the other's tangent plane (a depth jump
+// from an object to what is behind it does not), so a change of V between them is a shadow edge, not an occlusion.
+bool sameSurface(const SurfaceSamples& samples, std::size_t i, std::size_t j);
+
+struct BoundaryProbe {
+    const EmbreeScene* bvh = nullptr;  // null: no probing (visible boundary only)
+    ReferenceLight light;
+    double sceneRadius = 1.0;
+};
+
+class ShadowBoundary {
+public:
+    ShadowBoundary() = default;
+    // samples and classes must outlive this object.
+    ShadowBoundary(const SurfaceSamples& samples, const std::vector<PixelClass>& classes, const LightSpace& light,
+                   const BoundaryProbe& probe);
+
+    // Distance of pixel i to the nearest true boundary in texels, exact enough to decide "> k" (+infinity when
+    // there is none). Not thread-safe for one pixel; distinct pixels may be asked from several threads.
+    double distance(std::size_t i, double k);
+    // Computes the distances of many pixels on all cores (then distance() answers from the cache).
+    void prepare(const std::vector<std::size_t>& pixels, double k);
+
+    std::size_t pointCount() const { return tree_.size(); }
+    bool onBoundary(std::size_t i) const { return !onBoundary_.empty() && onBoundary_[i] != 0; }
+    std::size_t probedPixels() const { return probedPixels_.load(); }
+    std::size_t probeRays() const { return probeRays_.load(); }
+
+private:
+    double probe(std::size_t i, double k);
+
+    const SurfaceSamples* samples_ = nullptr;
+    const std::vector<PixelClass>* classes_ = nullptr;
+    LightSpace light_;
+    BoundaryProbe probe_;
+    glm::dvec3 right_{1.0, 0.0, 0.0}, up_{0.0, 1.0, 0.0};  // the light's image axes in world space
+    std::vector<glm::dvec2> texel_;
+    std::vector<std::uint8_t> onBoundary_;  // the lit pixel of each boundary pair: the thin line in the overlay
+    std::vector<float> visibleDistance_;    // to the visible boundary; -1 = not yet computed
+    std::vector<float> probedTo_;           // rings probed out to this radius (texels)
+    std::vector<float> flipAt_;             // smallest probed radius where visibility flips; +inf = none yet
+    std::atomic<std::size_t> probedPixels_{0};
+    std::atomic<std::size_t> probeRays_{0};
+    PointTree tree_;
+};
+
+}  // namespace shadowlab

@@ -1,0 +1,105 @@
+#include "reference/embree_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <glm/ext/matrix_double4x4.hpp>
+
+#include <chrono>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace shadowlab {
+
+namespace {
+
+// Embree calls this for each candidate hit of an occlusion ray on a MASK geometry: a transparent texel is no hit.
+void alphaOcclusionFilter(const RTCFilterFunctionNArguments* args) {
+    const auto* mask = static_cast<const AlphaMask*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned primitive = RTCHitN_primID(args->hit, args->N, i);
+        const float u = RTCHitN_u(args->hit, args->N, i);
+        const float v = RTCHitN_v(args->hit, args->N, i);
+        if (!mask->opaqueAt(primitive, u, v)) args->valid[i] = 0;
+    }
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin) {
+    const auto start = std::chrono::steady_clock::now();
+    RTCDevice device = rtcNewDevice(nullptr);
+    if (!device) throw std::runtime_error("Embree: cannot create a device (error " +
+                                          std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    device_ = device;
+    RTCScene rtcScene = rtcNewScene(device);
+    scene_ = rtcScene;
+    rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_MEDIUM);
+
+    for (const Instance& instance : scene.instances) {
+        const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+        if (mesh.indices.empty()) continue;
+        RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Positions made relative to the render origin in double, then stored as float: exact for large worlds.
+        const glm::dmat4 model = glm::dmat4(instance.transform);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
+        for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+            const glm::dvec3 p = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0)) - origin;
+            vertices[3 * i] = float(p.x);
+            vertices[3 * i + 1] = float(p.y);
+            vertices[3 * i + 2] = float(p.z);
+        }
+        auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangleCount()));
+        std::memcpy(indices, mesh.indices.data(), mesh.triangleCount() * 3 * sizeof(unsigned));
+        triangles_ += mesh.triangleCount();
+
+        const Material* material = scene.materialOf(mesh);
+        if (material && material->alphaMode == AlphaMode::Mask) {
+            const Image* image = material->baseColorImage >= 0 &&
+                                         material->baseColorImage < int(scene.images.size())
+                                     ? &scene.images[std::size_t(material->baseColorImage)]
+                                     : nullptr;
+            masks_.push_back(std::make_unique<AlphaMask>(*material, image, mesh.uvs, mesh.indices));
+            rtcSetGeometryUserData(geometry, masks_.back().get());
+            rtcSetGeometryOccludedFilterFunction(geometry, alphaOcclusionFilter);
+        }
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(rtcScene, geometry);
+        rtcReleaseGeometry(geometry);
+    }
+    rtcCommitScene(rtcScene);
+    if (const RTCError error = rtcGetDeviceError(device); error != RTC_ERROR_NONE)
+        throw std::runtime_error("Embree: building the BVH failed (error " + std::to_string(int(error)) + ")");
+    buildMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+EmbreeScene::~EmbreeScene() {
+    if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
+    if (device_) rtcReleaseDevice(static_cast<RTCDevice>(device_));
+}
+
+bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float tFar) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray;
+    ray.org_x = origin.x;
+    ray.org_y = origin.y;
+    ray.org_z = origin.z;
+    ray.dir_x = direction.x;
+    ray.dir_y = direction.y;
+    ray.dir_z = direction.z;
+    ray.tnear = 0.0f;
+    ray.tfar = tFar;
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+    rtcOccluded1(static_cast<RTCScene>(scene_), &context, &ray);
+    return ray.tfar == -std::numeric_limits<float>::infinity();
+}
+
+}  // namespace shadowlab

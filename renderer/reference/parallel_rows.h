@@ -1,0 +1,13 @@
+#pragma once
+// Runs a function for every row of an image on all cores (std::thread; rows are handed out one at a time, so a
+// slow row does not hold up a thread's whole share).
+#include <functional>
+
+namespace shadowlab {
+
+int workerCount();  // hardware threads, at least 1
+
+// Calls work(row) for row in [0, rows) on workerCount() threads; returns when all are done.
+void parallelRows(int rows, const std::function<void(int row)>& work);
+
+}  // namespace shadowlab
