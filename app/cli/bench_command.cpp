@@ -1,5 +1,6 @@
 #include "cli/bench_command.h"
 
+#include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/renderer.h"
@@ -43,20 +44,14 @@ bool applyFilter(const std::string& name, Settings& settings) {
 int runBench(const BenchOptions& options) {
     std::optional<Settings> base = settingsFromCli(options.preset, options.overrides);
     if (!base) return 2;
-    SceneLoadResult loaded = loadScene(options.scene);
-    if (!loaded.scene) {
-        std::cerr << "error: " << loaded.error << "\n";
-        return 1;
-    }
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     try {
         HeadlessContext context;
         Renderer renderer;
         RenderTarget target;
-        if (std::string e = target.resize(options.width, options.height); !e.empty()) {
-            std::cerr << "error: " << e << "\n";
-            return 1;
-        }
+        if (std::string e = target.resize(options.width, options.height); !e.empty()) return fail(e);
         const GlInfo& info = renderer.glInfo();
         std::cout << "bench: " << scene.name << " (" << scene.triangleCount() << " triangles), view " << options.width
                   << "x" << options.height << ", " << options.frames << " frames per row, shadow pass every frame\n"

@@ -2,6 +2,7 @@
 
 #include "accuracy/accuracy_meter.h"
 #include "cli/accuracy_output.h"
+#include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
@@ -11,27 +12,15 @@
 
 namespace shadowlab::cli {
 
-namespace {
-
-int fail(const std::string& message) {
-    std::cerr << "error: " << message << "\n";
-    return 1;
-}
-
-}  // namespace
-
 int runMeasure(const MeasureOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
     if (!settings) return 2;
-    if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
-        return fail("--width/--height must be in [1, 16384], got " + std::to_string(options.width) + "x" +
-                    std::to_string(options.height));
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"}})
         if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadScene(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
-    for (const std::string& w : scene.warnings) std::cerr << "warning: " << scene.name << ": " << w << "\n";
 
     try {
         HeadlessContext context;

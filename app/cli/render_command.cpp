@@ -1,6 +1,7 @@
 #include "cli/render_command.h"
 
 #include "cli/frame_report.h"
+#include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/renderer.h"
@@ -14,28 +15,16 @@
 
 namespace shadowlab::cli {
 
-namespace {
-
-int fail(const std::string& message) {
-    std::cerr << "error: " << message << "\n";
-    return 1;
-}
-
-}  // namespace
-
 int runRender(const RenderOptions& options) {
     std::vector<std::string> overrides = options.overrides;
     if (!options.view.empty()) overrides.push_back("view=" + options.view);
     std::optional<Settings> settings = settingsFromCli(options.preset, overrides);
     if (!settings) return 2;
-    if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
-        return fail("--width/--height must be in [1, 16384], got " + std::to_string(options.width) + "x" +
-                    std::to_string(options.height));
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
 
-    SceneLoadResult loaded = loadScene(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
-    for (const std::string& w : scene.warnings) std::cerr << "warning: " << scene.name << ": " << w << "\n";
 
     try {
 #ifndef NDEBUG

@@ -2,6 +2,7 @@
 
 #include "accuracy/bias_tuner.h"
 #include "cli/accuracy_output.h"
+#include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "scene/scene_source.h"
@@ -13,11 +14,6 @@
 namespace shadowlab::cli {
 
 namespace {
-
-int fail(const std::string& message) {
-    std::cerr << "error: " << message << "\n";
-    return 1;
-}
 
 std::string stepLine(const TuneStep& s) {
     char line[256];
@@ -32,17 +28,14 @@ std::string stepLine(const TuneStep& s) {
 int runTune(const TuneOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
     if (!settings) return 2;
-    if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
-        return fail("--width/--height must be in [1, 16384], got " + std::to_string(options.width) + "x" +
-                    std::to_string(options.height));
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (!(options.maxAcnePercent >= 0.0 && options.maxAcnePercent <= 100.0))
         return fail("--max-acne must be a percentage in [0, 100]");
     for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.json, "--json"}})
         if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadScene(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
-    for (const std::string& w : scene.warnings) std::cerr << "warning: " << scene.name << ": " << w << "\n";
 
     try {
         HeadlessContext context;

@@ -1,0 +1,25 @@
+#include "cli/command_input.h"
+
+#include <iostream>
+
+namespace shadowlab::cli {
+
+int fail(const std::string& message) {
+    std::cerr << "error: " << message << "\n";
+    return 1;
+}
+
+std::string checkViewSize(int width, int height) {
+    if (width >= 1 && height >= 1 && width <= 16384 && height <= 16384) return "";
+    return "--width/--height must be in [1, 16384], got " + std::to_string(width) + "x" + std::to_string(height);
+}
+
+SceneLoadResult loadSceneForCommand(const std::string& spec) {
+    SceneLoadResult loaded = loadScene(spec);
+    if (loaded.scene)
+        for (const std::string& w : loaded.scene->warnings)
+            std::cerr << "warning: " << loaded.scene->name << ": " << w << "\n";
+    return loaded;
+}
+
+}  // namespace shadowlab::cli
