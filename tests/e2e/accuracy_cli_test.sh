@@ -6,21 +6,7 @@ set -uo pipefail
 : "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
 rm -rf "$OUT_DIR" && mkdir -p "$OUT_DIR" && cd "$OUT_DIR"
 unset DISPLAY WAYLAND_DISPLAY
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-pass() { echo "ok: $*"; }
-expect_ok() {
-  local name=$1; shift
-  if "$@" >"$name.out" 2>"$name.err"; then pass "$name"; else fail "$name (exit $?): $(cat "$name.err")"; fi
-}
-expect_error() {
-  local name=$1 pattern=$2; shift 2
-  "$@" >"$name.out" 2>"$name.err"
-  local rc=$?
-  if [ $rc -eq 0 ]; then fail "$name: exited 0"; return; fi
-  if grep -q -- "$pattern" "$name.err"; then pass "$name (exit $rc)"; else fail "$name: '$pattern' not in: $(cat "$name.err")"; fi
-}
-png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'; }
+. "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 # json_number FILE KEY -> the first "KEY": number in the file
 json_number() { grep -o "\"$2\": *[-0-9.eE+]*" "$1" | head -1 | sed 's/.*: *//'; }
 # less_than A B: A < B as numbers
@@ -73,5 +59,4 @@ expect_error bad-max-acne "max-acne" "$SHADOWLAB" tune --max-acne -1 --width 32 
 expect_error bad-tune-out "no-such-dir" "$SHADOWLAB" tune --width 32 --height 32 --out no-such-dir/t.json
 expect_error bad-tune-range "shadow.resolution" "$SHADOWLAB" tune --set shadow.resolution=0
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish

@@ -5,25 +5,7 @@ set -uo pipefail
 : "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
 rm -rf "$OUT_DIR" && mkdir -p "$OUT_DIR" && cd "$OUT_DIR"
 unset DISPLAY WAYLAND_DISPLAY
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-pass() { echo "ok: $*"; }
-
-# expect_ok NAME CMD...: exit 0
-expect_ok() {
-  local name=$1; shift
-  if "$@" >"$name.out" 2>"$name.err"; then pass "$name"; else fail "$name (exit $?): $(cat "$name.err")"; fi
-}
-# expect_error NAME PATTERN CMD...: non-zero exit and PATTERN in stderr
-expect_error() {
-  local name=$1 pattern=$2; shift 2
-  "$@" >"$name.out" 2>"$name.err"
-  local rc=$?
-  if [ $rc -eq 0 ]; then fail "$name: exited 0"; return; fi
-  if grep -q -- "$pattern" "$name.err"; then pass "$name (exit $rc)"; else fail "$name: '$pattern' not in: $(cat "$name.err")"; fi
-}
-# png_size FILE -> "W H" from the IHDR chunk
-png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4, $5*16777216+$6*65536+$7*256+$8}'; }
+. "$(dirname "${BASH_SOURCE[0]}")/e2e_lib.sh"
 
 expect_ok render "$SHADOWLAB" render --scene builtin:textbook --preset default --width 320 --height 200 \
   --out view.png --shadow-map map.exr --shadow-map-png map.png
@@ -83,5 +65,4 @@ expect_error broken-gltf "broken.gltf" "$SHADOWLAB" render --scene broken.gltf -
 # No command opens the editor; without a display it says so and exits non-zero (tests/e2e/editor_test.sh opens it).
 expect_error noargs "needs a display" "$SHADOWLAB"
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish
