@@ -46,9 +46,11 @@ void drawStatsPanel(PanelContext& ctx) {
     const bool cpu = s.timingSource.rfind("CPU", 0) == 0;
     const char* clock = cpu ? "CPU" : "GPU";
 
-    if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchSame)) {
+    // Beside the Accuracy panel the strip can be narrow: then the numbers get the whole width and the plots go.
+    const bool plots = ImGui::GetContentRegionAvail().x >= 520.0f;
+    if (ImGui::BeginTable("stats", plots ? 2 : 1, ImGuiTableFlags_SizingStretchSame)) {
         ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch, 0.6f);
-        ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch, 0.4f);
+        if (plots) ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch, 0.4f);
         ImGui::TableNextColumn();
         const FrameStats& shadow = state.lastShadowPass;
         passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
@@ -63,6 +65,10 @@ void drawStatsPanel(PanelContext& ctx) {
         ImGui::TextDisabled("frames rendered %ld, idle frames (no pass) %ld", state.renderedFrames, state.idleFrames);
         state.controls.recordLastItem("stats.frames");
 
+        if (!plots) {
+            ImGui::EndTable();
+            return;
+        }
         ImGui::TableNextColumn();
         const float w = ImGui::GetContentRegionAvail().x;
         const float h = std::max(30.0f, (ImGui::GetContentRegionAvail().y - 8.0f) * 0.5f);
