@@ -100,26 +100,48 @@ void costTab(const AccuracyState& a, const AccuracyReport& r) {
 void biasSearchTab(PanelContext& ctx) {
     EditorState& state = ctx.state;
     AccuracyState& a = state.accuracy;
-    ImGui::TextDisabled("least leak with acne <= %.1f %%", a.maxAcnePercent);
 
-    const float resultHeight = a.tune && a.tune->ok ? ImGui::GetFrameHeightWithSpacing() * 2.0f : 0.0f;
-    const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(),
-                                       ImGui::GetContentRegionAvail().y - resultHeight);
-    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_SizingFixedFit;
+    // The result first, so it is seen without scrolling; the path below follows the search.
+    if (a.tune && a.tune->ok) {
+        // One line: the values are the highlighted row below (and in the Shadow map panel).
+        const std::string text =
+            a.tune->reachedLimit
+                ? "applied: acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
+                      format("%.1f %%", a.maxAcnePercent) + ", leak " + format("%.3f %%", a.tune->report.leakPercent)
+                : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + "; applied the least acne, " +
+                      format("%.3f %%", a.tune->report.acnePercent);
+        ImGui::PushStyleColor(ImGuiCol_Text, a.tune->reachedLimit ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f)
+                                                                  : ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", text.c_str());
+        ImGui::PopStyleColor();
+        state.controls.recordLastItem("accuracy.result");
+        if (ImGui::IsItemHovered()) {
+            const ShadowMapSettings& best = a.tune->best.shadow;
+            ImGui::SetTooltip("DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels\n%zu candidates in %.1f s",
+                              double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
+                              a.tune->path.size(), a.tune->seconds);
+        }
+        if (ImGui::SmallButton("Save as preset...")) ctx.actions.openSaveAs();
+        state.controls.recordLastItem("accuracy.saveAs");
+        ImGui::SameLine();
+        ImGui::TextDisabled("%zu candidates, %.1f s", a.tune->path.size(), a.tune->seconds);
+    } else if (a.steps.empty()) {
+        ImGui::TextDisabled("Suggest bias: least leak with acne <= %.1f %%", a.maxAcnePercent);
+    }
+
+    const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
+    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
+                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
     if (ImGui::BeginTable("steps", 7, flags, ImVec2(0, tableHeight))) {
-        ImGui::TableSetupScrollFreeze(0, 1);
-        for (const char* h : {"#", "phase", "DepthBias", "slope", "normal", "acne %", "leak %"})
+        ImGui::TableSetupScrollFreeze(1, 1);
+        for (const char* h : {"#", "DepthBias", "slope", "normal", "acne %", "leak %", "phase"})
             ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         for (const TuneStep& s : a.steps) {
             ImGui::TableNextRow();
-            if (s.bestSoFar)
-                ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
+            if (s.bestSoFar) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
             ImGui::TableNextColumn();
             ImGui::Text("%d", s.index);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(s.phase.c_str());
             ImGui::TableNextColumn();
             ImGui::Text("%.6g", double(s.depthBias));
             ImGui::TableNextColumn();
@@ -130,6 +152,8 @@ void biasSearchTab(PanelContext& ctx) {
             ImGui::Text("%.3f", s.acnePercent);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", s.leakPercent);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(s.phase.c_str());
         }
         // Follow the search: a new candidate scrolls into view.
         if (a.steps.size() != a.stepsFollowed) {
@@ -139,27 +163,6 @@ void biasSearchTab(PanelContext& ctx) {
         ImGui::EndTable();
     }
     state.controls.recordLastItem("accuracy.steps");
-
-    if (a.tune && a.tune->ok) {
-        const ShadowMapSettings& best = a.tune->best.shadow;
-        char text[200];
-        std::snprintf(text, sizeof text, "DepthBias %g, slope %g, normal offset %g: acne %.3f %%, leak %.3f %%",
-                      double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
-                      a.tune->report.acnePercent, a.tune->report.leakPercent);
-        if (a.tune->reachedLimit) {
-            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.5f, 0.9f, 0.5f, 1.0f));
-            ImGui::Text("Applied (acne <= %.1f %% reached): %s", a.maxAcnePercent, text);
-            ImGui::PopStyleColor();
-        } else {
-            errorText("NO setting reached acne <= " + format("%.1f", a.maxAcnePercent) +
-                      " %; applied the least acne found: " + text);
-        }
-        state.controls.recordLastItem("accuracy.result");
-        if (ImGui::Button("Save as preset...")) ctx.actions.openSaveAs();
-        state.controls.recordLastItem("accuracy.saveAs");
-        ImGui::SameLine();
-        ImGui::TextDisabled("%zu candidates in %.1f s", a.tune->path.size(), a.tune->seconds);
-    }
 }
 
 }  // namespace
@@ -190,8 +193,6 @@ void drawAccuracyPanel(PanelContext& ctx) {
     if (ImGui::Button("Cancel")) ctx.actions.cancelAccuracy();
     state.controls.recordLastItem("accuracy.cancel");
     ImGui::EndDisabled();
-    ImGui::Checkbox("Auto (after edits, once the view is still)", &a.autoMeasure);
-    state.controls.recordLastItem("accuracy.auto");
 
     // Progress, or what the newest job did.
     char overlay[160];
@@ -205,8 +206,15 @@ void drawAccuracyPanel(PanelContext& ctx) {
                       a.reportSeconds);
     else
         std::snprintf(overlay, sizeof overlay, "not measured yet");
+    // Beside the buttons where there is room, else on its own line.
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < 220.0f) ImGui::NewLine();
+    ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.22f, 0.42f, 0.70f, 1.0f));
     ImGui::ProgressBar(a.running ? a.progress : (a.report ? 1.0f : 0.0f), ImVec2(-1, 0), overlay);
+    ImGui::PopStyleColor();
     state.controls.recordLastItem("accuracy.progress");
+    ImGui::Checkbox("Auto (after edits, once the view is still)", &a.autoMeasure);
+    state.controls.recordLastItem("accuracy.auto");
 
     if (!a.error.empty() && !a.running) {
         errorText(a.error);

@@ -21,7 +21,7 @@ const std::vector<Panel>& panels() {
 
 float leftColumnWidth(ImVec2 display) { return std::clamp(display.x * 0.23f, 300.0f, 400.0f); }
 float rightColumnWidth(ImVec2 display) { return std::clamp(display.x * 0.26f, 320.0f, 440.0f); }
-float bottomStripHeight(ImVec2 display) { return std::clamp(display.y * 0.28f, 190.0f, 290.0f); }
+float bottomStripHeight(ImVec2 display) { return std::clamp(display.y * 0.32f, 200.0f, 320.0f); }
 
 PanelRect firstRunRect(const Panel& panel, ImVec2 display) {
     const float left = leftColumnWidth(display);
