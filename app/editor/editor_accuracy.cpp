@@ -119,6 +119,13 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
         state_.say(text, !tune.reachedLimit || !applied);
         a.tune = std::move(result.tune);
     }
+    if (!result.tune) {
+        char text[160];
+        std::snprintf(text, sizeof text, "accuracy: acne %.3f %%, leak %.3f %%, faint acne %.3f %% (%dx%d, %.2f s)",
+                      result.report.acnePercent, result.report.leakPercent, result.report.faintAcnePercent,
+                      result.report.width, result.report.height, result.seconds);
+        state_.say(text);
+    }
     a.report = std::move(result.report);
     a.reportKey = std::move(key);
     a.reportSeconds = result.seconds;
