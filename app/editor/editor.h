@@ -153,6 +153,7 @@ private:
     std::optional<AccuracyViewKey> lastSeenAccuracyKey_;  // the view as of the newest change
     double lastAccuracyChange_ = 0.0;                     // when the view or settings last changed
     std::optional<AccuracyViewKey> autoMeasured_;         // the view Auto last measured (never twice)
+    bool autoDue_ = false;                                // Auto will measure this view once it is still
 };
 
 // Reads the bound framebuffer (width x height, GL rows) and writes it as PNG; "" or why it failed.

@@ -76,8 +76,8 @@ void Editor::pollAccuracy() {
     // Auto: once the view has been still for a moment, measure it, unless this exact view was already measured
     // (or attempted) — never twice for the same view and settings.
     const bool measuredAlready = (a.reportKey && *a.reportKey == *now) || (autoMeasured_ && *autoMeasured_ == *now);
-    if (a.autoMeasure && !a.running && !measuredAlready &&
-        state_.time - lastAccuracyChange_ >= AccuracyState::kAutoDelaySeconds) {
+    autoDue_ = a.autoMeasure && !measuredAlready;
+    if (autoDue_ && !a.running && state_.time - lastAccuracyChange_ >= AccuracyState::kAutoDelaySeconds) {
         autoMeasured_ = now;
         startAccuracyJob(AccuracyJobKind::Measure);
     }
@@ -152,9 +152,8 @@ void Editor::uploadAccuracyOverlay() {
 }
 
 double Editor::idleWaitSeconds() const {
-    const AccuracyState& a = state_.accuracy;
-    if (a.running || (a.autoMeasure && a.reportKey == std::nullopt) || (a.autoMeasure && !a.stale.empty()))
-        return 0.05;  // 20 redraws a second: progress shows, and the worker keeps the cores
+    // 20 redraws a second: progress shows, and the worker keeps the cores (flat out on llvmpipe starves it).
+    if (state_.accuracy.running || autoDue_) return 0.05;
     return 0.5;
 }
 
