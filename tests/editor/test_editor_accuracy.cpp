@@ -82,6 +82,11 @@ TEST_F(EditorAccuracy, MeasureGivesNumbersWhileTheUiKeepsDrawing) {
     EXPECT_FALSE(h.hasControl("accuracy.stale"));
     EXPECT_EQ(a.measurements, 1);
     h.saveWindow("accuracy-measured");
+    // The counts and the cost are one click away (pictures to look at).
+    h.click("accuracy.tab.counts");
+    h.saveWindow("accuracy-counts");
+    h.click("accuracy.tab.cost");
+    h.saveWindow("accuracy-cost");
 }
 
 TEST_F(EditorAccuracy, AnEditOrACameraMoveMakesTheNumbersStale) {
@@ -220,6 +225,12 @@ TEST_F(EditorAccuracy, OverlayViewShowsAcneInRed) {
     const double withOverlay = redFraction();
     h.saveWindow("accuracy-overlay");
     EXPECT_GT(withOverlay, 0.02) << "acne pixels are drawn red";
+    // An edit: the overlay stays (the newest measurement) with a stale note over it.
+    h.drag("shadow.slopeScaledDepthBias", 30.0f, 0.0f);
+    h.frame();
+    EXPECT_FALSE(a.stale.empty());
+    h.saveWindow("accuracy-overlay-stale");
+    EXPECT_GT(redFraction(), withOverlay * 0.8);
     // The lit view has no such red.
     h.click("view");
     h.click("view=lit");

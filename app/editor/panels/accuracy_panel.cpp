@@ -84,6 +84,7 @@ void countsTab(const AccuracyReport& r) {
 void costTab(const AccuracyState& a, const AccuracyReport& r) {
     const AccuracyCost& k = r.cost;
     if (ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
+        row("total", format("%.1f ms", k.totalMs) + format(" (job %.2f s)", a.reportSeconds));
         row("BVH", k.bvhReused ? "reused" : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
         row("rays", k.referenceReused ? "reused (" + grouped(k.rays) + ")"
                                       : grouped(k.rays) + format(" in %.1f ms", k.traceMs));
@@ -92,7 +93,6 @@ void costTab(const AccuracyState& a, const AccuracyReport& r) {
         row("G-buffer", k.referenceReused ? "reused" : format("%.1f ms", k.gbufferMs));
         row("boundary", format("%.1f ms", k.boundaryMs) + format(", probes %.1f ms", k.probeMs));
         row("tool frame", format("%.1f ms", k.toolFrameMs));
-        row("total", format("%.1f ms", k.totalMs) + format(" (job %.2f s)", a.reportSeconds));
         ImGui::EndTable();
     }
 }
