@@ -42,6 +42,7 @@ struct AccuracyState {
     std::optional<AccuracyReport> report;
     std::optional<AccuracyViewKey> reportKey;
     double reportSeconds = 0.0;  // wall time of the job that made it
+    bool reportFromSearch = false;  // made by Suggest bias (its best setting) rather than by Measure
     std::string stale;           // "" while the report matches the current view and settings
     std::string error;           // why the newest job failed ("cancelled", invalid settings, ...)
     long measurements = 0;       // finished jobs that produced a report (measures and searches)

@@ -129,6 +129,7 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
     a.report = std::move(result.report);
     a.reportKey = std::move(key);
     a.reportSeconds = result.seconds;
+    a.reportFromSearch = result.kind == AccuracyJobKind::SuggestBias;
     ++a.measurements;
     uploadAccuracyOverlay();
 }

@@ -202,8 +202,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
     else if (!a.error.empty())
         std::snprintf(overlay, sizeof overlay, "%s", a.stage.c_str());
     else if (a.report)
-        std::snprintf(overlay, sizeof overlay, "measured %dx%d in %.2f s", a.report->width, a.report->height,
-                      a.reportSeconds);
+        std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? "bias search at" : "measured",
+                      a.report->width, a.report->height, a.reportSeconds);
     else
         std::snprintf(overlay, sizeof overlay, "not measured yet");
     // Beside the buttons where there is room, else on its own line.
