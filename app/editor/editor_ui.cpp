@@ -196,7 +196,8 @@ void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
     const AccuracyState& a = state_.accuracy;
     std::string note;
     if (a.overlayTexture == 0)
-        note = a.running ? "accuracy overlay: measuring..." : "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
+        note = a.running ? "accuracy overlay: measuring..."
+                         : "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
     else if (!a.stale.empty())
         note = "Stale: " + a.stale;
     ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -219,8 +220,8 @@ void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
         const float y = imagePos.y + imageSize.y - h - 2 * pad;
         float width = 0.0f;
         for (const auto& k : keys) width += h + 4.0f + ImGui::CalcTextSize(k.text).x + 12.0f;
-        draw->AddRectFilled(ImVec2(x, y - pad * 0.5f), ImVec2(x + width + pad, y + h + pad * 0.5f), IM_COL32(0, 0, 0, 170),
-                            3.0f);
+        draw->AddRectFilled(ImVec2(x, y - pad * 0.5f), ImVec2(x + width + pad, y + h + pad * 0.5f),
+                            IM_COL32(0, 0, 0, 170), 3.0f);
         x += pad;
         for (const auto& k : keys) {
             draw->AddRectFilled(ImVec2(x, y + 2), ImVec2(x + h - 4, y + h - 2), k.colour);

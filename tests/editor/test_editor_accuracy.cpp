@@ -5,7 +5,9 @@
 #include "editor_harness.h"
 #include "settings/preset_io.h"
 
+#include <algorithm>
 #include <chrono>
+#include <functional>
 #include <thread>
 
 namespace shadowlab::editor::test {
@@ -27,13 +29,15 @@ protected:
         harness->settle();
     }
     // Frames at a host's modest rate until the running job ends; returns how many UI frames were built meanwhile.
-    int waitForJob(double maxSeconds = 120.0) {
+    // `eachFrame` sees the state after every frame built while the job still runs.
+    int waitForJob(double maxSeconds = 120.0, const std::function<void(const AccuracyState&)>& eachFrame = {}) {
         const auto start = std::chrono::steady_clock::now();
         int frames = 0;
         while (harness->state().accuracy.running) {
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
             harness->frame();
             ++frames;
+            if (eachFrame && harness->state().accuracy.running) eachFrame(harness->state().accuracy);
             if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > maxSeconds) {
                 ADD_FAILURE() << "the accuracy job did not finish in " << maxSeconds << " s";
                 break;
@@ -162,8 +166,15 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     EXPECT_GT(a.report->acnePercent, 1.0) << "zero bias should show acne";
 
     h.click("accuracy.suggest");
-    const int frames = waitForJob(300.0);
+    std::size_t liveSteps = 0;  // the path table fills while the search runs
+    float liveProgress = 0.0f;
+    const int frames = waitForJob(300.0, [&](const AccuracyState& s) {
+        liveSteps = std::max(liveSteps, s.steps.size());
+        liveProgress = std::max(liveProgress, s.progress);
+    });
     EXPECT_GE(frames, 1);
+    EXPECT_GT(liveSteps, 0u) << "no candidate reached the table while the search ran";
+    EXPECT_GT(liveProgress, 0.0f);
     ASSERT_TRUE(a.tune.has_value()) << a.error;
     ASSERT_TRUE(a.tune->ok) << a.tune->error;
     EXPECT_TRUE(a.tune->reachedLimit);
