@@ -285,4 +285,20 @@ TEST_F(EditorAccuracy, ASceneSwitchWhileMeasuringIsSafeAndMakesTheNumbersStale) 
     EXPECT_EQ(a.stale, "");
 }
 
+TEST_F(EditorAccuracy, ClosingTheEditorDuringASearchCancelsItAndEndsTheWorker) {
+    open("acne");
+    EditorHarness& h = *harness;
+    h.click("accuracy.suggest");
+    ASSERT_TRUE(h.state().accuracy.running);
+    // The editor goes while the worker is inside the search: it must cancel, join and free its GL context (a hang
+    // here ends in ctest's timeout), and this process's own context keeps working.
+    harness.reset();
+    open();
+    EXPECT_TRUE(harness->state().stats.ok);
+    harness->click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(harness->state().accuracy.report.has_value());
+    EXPECT_TRUE(harness->state().accuracy.report->ok);
+}
+
 }  // namespace shadowlab::editor::test
