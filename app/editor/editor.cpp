@@ -45,6 +45,7 @@ Editor::Editor(EditorOptions options) : options_(std::move(options)) {
     renderer_ = std::make_unique<Renderer>();
     frustum_ = std::make_unique<LightFrustumOverlay>();
     mapView_ = std::make_unique<ShadowMapView>();
+    accuracyWorker_ = std::make_unique<AccuracyWorker>();
     state_.limits.maxTextureSize = renderer_->glInfo().maxTextureSize;
     state_.time = secondsNow();
 
@@ -84,7 +85,10 @@ Editor::Editor(EditorOptions options) : options_(std::move(options)) {
     state_.loading = loader_.progress();
 }
 
-Editor::~Editor() = default;
+Editor::~Editor() {
+    accuracyWorker_.reset();  // cancels a running job and joins the worker
+    if (state_.accuracy.overlayTexture != 0) glDeleteTextures(1, &state_.accuracy.overlayTexture);
+}
 
 // ---------------------------------------------------------------------------------------------------------------
 // Frame work (before the UI)
@@ -98,6 +102,7 @@ void Editor::renderFrame() {
         state_.animatedAzimuthDeg = std::fmod(state_.animatedAzimuthDeg + state_.animateDegreesPerSecond * dt, 360.0);
     }
     renderViewport();
+    pollAccuracy();
     if (screenshotRequested_) takeScreenshot();
 }
 

@@ -4,6 +4,7 @@
 //   editor.renderFrame();   // passes for what changed last frame (idle frames run none), map picture, screenshots
 //   ImGui::NewFrame(); editor.buildUi(); ImGui::Render();   // then draws ImGui's draw data
 // Rendering before the UI keeps every texture the UI shows valid for the frame that draws it.
+#include "editor/accuracy_worker.h"
 #include "editor/editor_state.h"
 #include "frame/orbit_camera.h"
 #include "frame/render_target.h"
@@ -43,6 +44,9 @@ public:
     // True while frames must keep coming without input (a scene loading, the light animating, a change not yet
     // rendered); otherwise the host may sleep until the next event.
     bool busy() const;
+    // How long a host that is not busy() may sleep waiting for input: short while an accuracy job runs or an
+    // automatic measurement is due (a modest redraw rate leaves the cores to the worker), else long.
+    double idleWaitSeconds() const;
     // Ctrl+Q or the window's close button: asks about unsaved changes first. quitConfirmed() once it may close.
     void requestQuit();
     bool quitConfirmed() const { return quitConfirmed_; }
@@ -67,6 +71,9 @@ public:
     void revertPreset() override;
     void requestScreenshot(bool withShadowMap) override;
     void frameScene() override;
+    void measureAccuracy() override;
+    void suggestBias() override;
+    void cancelAccuracy() override;
 
 private:
     struct PendingSwitch {
@@ -91,10 +98,17 @@ private:
     void takeScreenshot();
     void refreshPresetList();
     Settings effectiveSettings() const;  // the edited settings plus the light animation's preview
+    std::optional<AccuracyViewKey> accuracyKey() const;  // what a measurement now would be made for
+    void startAccuracyJob(AccuracyJobKind kind);
+    void pollAccuracy();
+    void adoptAccuracyResult(AccuracyJobResult result);
+    void uploadAccuracyOverlay();
 
     void handleShortcuts();
     ImVec4 viewportWindowRect() const;
     void drawViewport();
+    void viewModeCombo();
+    void drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize);
     void viewportCameraInput(ImVec2 size);
     void drawPanels();
     void drawUnsavedChangesDialog();
@@ -131,6 +145,15 @@ private:
     ShadowMapViewOptions lastMapOptions_;
     int lastMapWidth_ = 0, lastMapHeight_ = 0;
     double lastRenderTime_ = 0.0;
+
+    // Accuracy: the worker (its thread and GL context start with the first job), what the running job measures,
+    // and the automatic measurement's bookkeeping.
+    std::unique_ptr<AccuracyWorker> accuracyWorker_;
+    std::optional<AccuracyViewKey> accuracyJobKey_;
+    std::optional<AccuracyViewKey> lastSeenAccuracyKey_;  // the view as of the newest change
+    double lastAccuracyChange_ = 0.0;                     // when the view or settings last changed
+    std::optional<AccuracyViewKey> autoMeasured_;         // the view Auto last measured (never twice)
+    bool autoDue_ = false;                                // Auto will measure this view once it is still
 };
 
 // Reads the bound framebuffer (width x height, GL rows) and writes it as PNG; "" or why it failed.

@@ -1,6 +1,7 @@
 #pragma once
 // What the editor's panels read and change: the edited Settings, the scene, the preset session, the last frame's
 // stats, messages and the named controls' rectangles. Panels change Settings only through edit().
+#include "editor/accuracy_state.h"
 #include "editor/control_rects.h"
 #include "editor/preset_session.h"
 #include "editor/settings_edit.h"
@@ -75,6 +76,7 @@ struct EditorState {
     double lastFrameMs = 0.0;   // wall time of the newest rendered frame (renderer + readiness)
 
     MapViewerState viewer;
+    AccuracyState accuracy;  // the Accuracy panel and the viewport's accuracy overlay
 
     // Scene panel
     std::optional<SceneLoadProgress> loading;  // while a scene loads
@@ -112,6 +114,10 @@ public:
     virtual void revertPreset() = 0;
     virtual void requestScreenshot(bool withShadowMap) = 0;
     virtual void frameScene() = 0;
+    // Accuracy: measure the current view, search for a bias (applied to the settings when done), cancel either.
+    virtual void measureAccuracy() = 0;
+    virtual void suggestBias() = 0;
+    virtual void cancelAccuracy() = 0;
 };
 
 }  // namespace shadowlab::editor

@@ -4,6 +4,7 @@
 #include "editor/editor_keys.h"
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "settings/settings_fields.h"
 
 #include <imgui_stdlib.h>
 
@@ -90,8 +91,8 @@ void Editor::drawViewport() {
 
     // Toolbar: what the view shows, the light's frustum, screenshots, framing.
     ImGui::SetCursorPos(ImVec2(8, 6));
-    ImGui::SetNextItemWidth(130.0f);
-    comboField(state_, "view", "##view");
+    ImGui::SetNextItemWidth(150.0f);
+    viewModeCombo();
     ImGui::SameLine();
     ImGui::Checkbox("light frustum", &state_.showLightFrustum);
     state_.controls.recordLastItem("viewport.frustum");
@@ -130,9 +131,17 @@ void Editor::drawViewport() {
         ImGui::InvisibleButton("##view", imageSize, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
         state_.controls.recordLastItem("viewport.image");
         ImDrawList* draw = ImGui::GetWindowDrawList();
-        if (target_.width() > 0 && state_.haveStats) {
+        const AccuracyState& a = state_.accuracy;
+        const ImVec2 imageEnd(imagePos.x + imageSize.x, imagePos.y + imageSize.y);
+        if (a.showOverlay && a.overlayTexture != 0) {
+            // The overlay's row 0 is the view's top, and so is its texture's row 0.
+            draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(a.overlayTexture)), imagePos,
+                           imageEnd, ImVec2(0, 0), ImVec2(1, 1));
+            drawOverlayNotes(imagePos, imageSize);
+        } else if (target_.width() > 0 && state_.haveStats) {
             draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(target_.colorTexture())), imagePos,
-                           ImVec2(imagePos.x + imageSize.x, imagePos.y + imageSize.y), ImVec2(0, 1), ImVec2(1, 0));
+                           imageEnd, ImVec2(0, 1), ImVec2(1, 0));
+            if (a.showOverlay) drawOverlayNotes(imagePos, imageSize);
         } else {
             draw->AddText(ImVec2(imagePos.x + 12, imagePos.y + 12), IM_COL32(200, 200, 200, 255),
                           state_.loading ? "loading the scene..." : "no frame yet");
@@ -153,6 +162,74 @@ void Editor::viewportCameraInput(ImVec2 size) {
             orbit_->orbit(io.MouseDelta.x, io.MouseDelta.y);
     }
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) orbit_->zoom(io.MouseWheel);
+}
+
+void Editor::viewModeCombo() {
+    // lit / shadow / light-depth are the renderer's view setting (saved in presets); the accuracy overlay is the
+    // editor's own view of the newest measurement and never a setting.
+    static constexpr const char* kOverlay = "accuracy overlay";
+    AccuracyState& a = state_.accuracy;
+    const SettingsField* field = findSettingsField("view");
+    const std::string current = field->get(state_.settings).get<std::string>();
+    if (ImGui::BeginCombo("##view", a.showOverlay ? kOverlay : current.c_str())) {
+        for (const std::string& choice : field->choices) {
+            const bool selected = !a.showOverlay && choice == current;
+            if (ImGui::Selectable(choice.c_str(), selected)) {
+                a.showOverlay = false;
+                if (choice != current) state_.edit("view", choice);
+            }
+            state_.controls.recordLastItem("view=" + choice);
+        }
+        if (ImGui::Selectable(kOverlay, a.showOverlay)) a.showOverlay = true;
+        state_.controls.recordLastItem(std::string("view=") + kOverlay);
+        ImGui::EndCombo();
+    }
+    state_.controls.recordLastItem("view");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("What the viewport shows: the lit scene, the shadow factor, the light's depth, or the "
+                          "accuracy overlay of the newest measurement (red acne, blue leak, orange faint acne, "
+                          "yellow true boundary)");
+    showFieldError(state_, "view");
+}
+
+void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
+    const AccuracyState& a = state_.accuracy;
+    std::string note;
+    if (a.overlayTexture == 0)
+        note = a.running ? "accuracy overlay: measuring..."
+                         : "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
+    else if (!a.stale.empty())
+        note = "Stale: " + a.stale;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float pad = 6.0f;
+    if (!note.empty()) {
+        const ImVec2 size = ImGui::CalcTextSize(note.c_str(), nullptr, false, imageSize.x - 4 * pad);
+        const ImVec2 at(imagePos.x + pad, imagePos.y + pad);
+        draw->AddRectFilled(at, ImVec2(at.x + size.x + 2 * pad, at.y + size.y + 2 * pad), IM_COL32(0, 0, 0, 190), 3.0f);
+        draw->AddText(nullptr, 0.0f, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 190, 80, 255), note.c_str(), nullptr,
+                      imageSize.x - 4 * pad);
+    }
+    if (a.overlayTexture != 0) {
+        // The legend, bottom left.
+        const struct { const char* text; ImU32 colour; } keys[] = {{"acne", IM_COL32(235, 40, 40, 255)},
+                                                                    {"leak", IM_COL32(50, 110, 255, 255)},
+                                                                    {"faint acne", IM_COL32(210, 130, 60, 255)},
+                                                                    {"true boundary", IM_COL32(255, 220, 0, 255)}};
+        float x = imagePos.x + pad;
+        const float h = ImGui::GetTextLineHeight();
+        const float y = imagePos.y + imageSize.y - h - 2 * pad;
+        float width = 0.0f;
+        for (const auto& k : keys) width += h + 4.0f + ImGui::CalcTextSize(k.text).x + 12.0f;
+        draw->AddRectFilled(ImVec2(x, y - pad * 0.5f), ImVec2(x + width + pad, y + h + pad * 0.5f),
+                            IM_COL32(0, 0, 0, 170), 3.0f);
+        x += pad;
+        for (const auto& k : keys) {
+            draw->AddRectFilled(ImVec2(x, y + 2), ImVec2(x + h - 4, y + h - 2), k.colour);
+            x += h;
+            draw->AddText(ImVec2(x, y), IM_COL32(230, 230, 230, 255), k.text);
+            x += ImGui::CalcTextSize(k.text).x + 12.0f + 4.0f;
+        }
+    }
 }
 
 void Editor::drawStatusBar() {

@@ -155,7 +155,9 @@ int runEdit(const EditOptions& options) {
                 if (ed.busy() || !host.keys.empty() || host.framesAfterInput > 0)
                     glfwPollEvents();
                 else
-                    glfwWaitEventsTimeout(0.5);  // idle: no pass runs, and the window sleeps until input
+                    // Idle: no pass runs, and the window sleeps until input; while an accuracy job runs it wakes
+                    // at a modest rate (redrawing flat out on a software rasterizer starves the worker).
+                    glfwWaitEventsTimeout(ed.idleWaitSeconds());
                 if (glfwWindowShouldClose(window)) {
                     glfwSetWindowShouldClose(window, GLFW_FALSE);
                     ed.requestQuit();

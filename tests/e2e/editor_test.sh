@@ -114,6 +114,13 @@ if wait_for grep -q "missing-scene.gltf" editor.err; then
   kill -0 "$app_pid" 2>/dev/null && pass "bad scene path: message, editor still running" || fail "editor died"
 else fail "no message for a bad scene path: $(tail -3 editor.err)"; fi
 
+# Measure in the Accuracy panel: the worker's numbers arrive while the window keeps running.
+click accuracy.measure
+if wait_for grep -q "accuracy: acne" editor.out; then
+  pass "Accuracy: Measure printed $(grep -m1 -o 'acne [0-9.]* %' editor.out)"
+else fail "no accuracy numbers: $(tail -3 editor.err)"; fi
+sleep 0.5
+
 # Ctrl+F12: the whole window.
 xdotool mousemove --window "$wid" 800 450 key ctrl+F12
 wait_for bash -c 'ls shots/shadowlab-window-*.png >/dev/null 2>&1' && sleep 0.5

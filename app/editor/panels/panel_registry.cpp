@@ -13,21 +13,29 @@ const std::vector<Panel>& panels() {
         {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel},
         {"Sampling", PanelColumn::Right, 0.17f, drawSamplingPanel},
         {"Shadow map viewer", PanelColumn::Right, 0.48f, drawShadowMapViewerPanel},
-        {"Stats", PanelColumn::Bottom, 1.0f, drawStatsPanel},
+        {"Stats", PanelColumn::Bottom, 0.5f, drawStatsPanel},
+        {"Accuracy", PanelColumn::Bottom, 0.5f, drawAccuracyPanel},
     };
     return all;
 }
 
 float leftColumnWidth(ImVec2 display) { return std::clamp(display.x * 0.23f, 300.0f, 400.0f); }
 float rightColumnWidth(ImVec2 display) { return std::clamp(display.x * 0.26f, 320.0f, 440.0f); }
-float bottomStripHeight(ImVec2 display) { return std::clamp(display.y * 0.24f, 170.0f, 240.0f); }
+float bottomStripHeight(ImVec2 display) { return std::clamp(display.y * 0.32f, 200.0f, 320.0f); }
 
 PanelRect firstRunRect(const Panel& panel, ImVec2 display) {
     const float left = leftColumnWidth(display);
     const float right = rightColumnWidth(display);
     if (panel.column == PanelColumn::Bottom) {
+        // Side by side under the viewport, in registry order.
         const float h = bottomStripHeight(display);
-        return {ImVec2(left, display.y - h), ImVec2(display.x - left - right, h)};
+        const float width = display.x - left - right;
+        float x = left;
+        for (const Panel& p : panels()) {
+            if (p.column != PanelColumn::Bottom) continue;
+            if (&p == &panel) return {ImVec2(x, display.y - h), ImVec2(panel.share * width, h)};
+            x += p.share * width;
+        }
     }
     // Stack the column's panels in registry order.
     float y = 0.0f;

@@ -20,7 +20,8 @@ enum class PanelColumn { Left, Right, Bottom };
 struct Panel {
     const char* title;      // the window's name: unique, and its imgui.ini key
     PanelColumn column;     // where it starts on first run
-    float share;            // its part of the column's height (Left / Right columns; shares add up to 1)
+    float share;            // its part of the column's height (Left / Right) or of the bottom strip's width (Bottom);
+                            // a column's shares add up to 1
     void (*draw)(PanelContext&);  // the window's contents (Begin/End are done by the editor)
 };
 
@@ -46,5 +47,6 @@ void drawShadowMapPanel(PanelContext&);
 void drawSamplingPanel(PanelContext&);
 void drawShadowMapViewerPanel(PanelContext&);
 void drawStatsPanel(PanelContext&);
+void drawAccuracyPanel(PanelContext&);
 
 }  // namespace shadowlab::editor

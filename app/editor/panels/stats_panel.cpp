@@ -46,9 +46,12 @@ void drawStatsPanel(PanelContext& ctx) {
     const bool cpu = s.timingSource.rfind("CPU", 0) == 0;
     const char* clock = cpu ? "CPU" : "GPU";
 
-    if (ImGui::BeginTable("stats", 2, ImGuiTableFlags_SizingStretchSame)) {
+    // Beside the Accuracy panel the strip is narrow: the numbers get the whole width and the plots go below them,
+    // side by side; a wide panel keeps them in a column on the right.
+    const bool plotsBeside = ImGui::GetContentRegionAvail().x >= 680.0f;
+    if (ImGui::BeginTable("stats", plotsBeside ? 2 : 1, ImGuiTableFlags_SizingStretchSame)) {
         ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch, 0.6f);
-        ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch, 0.4f);
+        if (plotsBeside) ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch, 0.4f);
         ImGui::TableNextColumn();
         const FrameStats& shadow = state.lastShadowPass;
         passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
@@ -56,13 +59,26 @@ void drawStatsPanel(PanelContext& ctx) {
         ImGui::Text("frame        %7.2f ms wall", state.lastFrameMs);
         ImGui::TextDisabled("timing: %s", s.timingSource.c_str());
         ImGui::Text("triangles: %zu scene, %zu in the shadow pass", s.sceneTriangles, shadow.shadowTriangles);
-        ImGui::Text("casters: %d drawn, %d outside the light's volume, %d alpha-tested", shadow.castersDrawn,
+        ImGui::Text("casters: %d drawn, %d outside the light, %d alpha-tested", shadow.castersDrawn,
                     shadow.castersSkipped, shadow.alphaTestedCasters);
         ImGui::Text("shadow map: %d² %s, %.1f MiB", s.shadowMapResolution, depthFormatName(s.shadowMapFormat),
                     double(s.shadowMapBytes) / (1024.0 * 1024.0));
         ImGui::TextDisabled("frames rendered %ld, idle frames (no pass) %ld", state.renderedFrames, state.idleFrames);
         state.controls.recordLastItem("stats.frames");
 
+        if (!plotsBeside) {
+            ImGui::EndTable();
+            const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
+            const float h = std::max(30.0f, ImGui::GetContentRegionAvail().y);
+            ImGui::PushID("frame");
+            plot("frame ms", state.history.frameMs, ImVec2(w, h));
+            ImGui::PopID();
+            ImGui::SameLine();
+            ImGui::PushID("shadow");
+            plot("shadow pass ms", state.history.shadowPassMs, ImVec2(w, h));
+            ImGui::PopID();
+            return;
+        }
         ImGui::TableNextColumn();
         const float w = ImGui::GetContentRegionAvail().x;
         const float h = std::max(30.0f, (ImGui::GetContentRegionAvail().y - 8.0f) * 0.5f);

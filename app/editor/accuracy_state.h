@@ -1,0 +1,61 @@
+#pragma once
+// What the Accuracy panel and the viewport's "accuracy overlay" view show: the newest measurement and what it was
+// measured for (so the panel can say when it is stale), the running job's progress, the bias search's path and
+// result. The editor fills it from its AccuracyWorker each frame; the panel reads it and asks through EditorActions.
+#include "accuracy/accuracy_meter.h"
+#include "accuracy/bias_tuner.h"
+#include "frame/camera.h"
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab::editor {
+
+// Everything a measurement depends on. The view mode (lit / shadow / light-depth) is not part of it: the numbers
+// do not depend on what the viewport shows.
+struct AccuracyViewKey {
+    Settings settings;
+    Camera camera;
+    const Scene* scene = nullptr;
+    int width = 0, height = 0;
+    bool operator==(const AccuracyViewKey& other) const;
+};
+
+// "" when `measured` still describes `now`; otherwise what changed, e.g. "shadow.depthBias, filter.kind changed".
+std::string staleReason(const AccuracyViewKey& measured, const AccuracyViewKey& now);
+
+struct AccuracyState {
+    bool autoMeasure = false;   // measure after edits, once the view has been still for kAutoDelaySeconds
+    bool showOverlay = false;   // the viewport shows the overlay (an editor view mode, never saved in presets)
+    static constexpr double kAutoDelaySeconds = 0.5;
+
+    // The running job (if any).
+    bool running = false;
+    bool runningTune = false;
+    float progress = 0.0f;
+    std::string stage;
+
+    // The newest measurement that finished (a Measure, or the bias search's best setting).
+    std::optional<AccuracyReport> report;
+    std::optional<AccuracyViewKey> reportKey;
+    double reportSeconds = 0.0;  // wall time of the job that made it
+    bool reportFromSearch = false;  // made by Suggest bias (its best setting) rather than by Measure
+    std::string stale;           // "" while the report matches the current view and settings
+    std::string error;           // why the newest job failed ("cancelled", invalid settings, ...)
+    long measurements = 0;       // finished jobs that produced a report (measures and searches)
+
+    // Suggest bias.
+    std::vector<TuneStep> steps;  // the search's path, live while it runs
+    std::optional<TuneResult> tune;  // the newest finished search (its report is also `report`)
+    double maxAcnePercent = 0.1;
+    std::size_t stepsFollowed = 0;   // the path table scrolled to its newest row when it grew
+
+    // The overlay picture on the GPU (uploaded once per report).
+    unsigned overlayTexture = 0;
+    int overlayWidth = 0, overlayHeight = 0;
+};
+
+}  // namespace shadowlab::editor

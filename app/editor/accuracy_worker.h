@@ -1,0 +1,85 @@
+#pragma once
+// Runs accuracy measurements and bias searches off the UI thread. The worker thread starts with the first job and
+// then owns, for the editor's lifetime, its own headless EGL context and AccuracyMeter (whose caches make the next
+// measurement of the same view cost one tool frame). The UI thread starts a job, reads its progress and the search's
+// path while it runs, and polls for the result; the scene travels as shared_ptr<const Scene>, so a scene switch on
+// the UI thread cannot free or change what the worker reads. Destruction cancels the job and joins the thread.
+#include "accuracy/accuracy_meter.h"
+#include "accuracy/bias_tuner.h"
+#include "frame/camera.h"
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace shadowlab::editor {
+
+enum class AccuracyJobKind { Measure, SuggestBias };
+
+struct AccuracyJob {
+    AccuracyJobKind kind = AccuracyJobKind::Measure;
+    std::shared_ptr<const Scene> scene;
+    Settings settings;
+    Camera camera;
+    int width = 0, height = 0;
+    double maxAcnePercent = 0.1;  // SuggestBias: the acne limit
+};
+
+struct AccuracyJobResult {
+    std::uint64_t id = 0;
+    AccuracyJobKind kind = AccuracyJobKind::Measure;
+    AccuracyReport report;            // Measure: the view; SuggestBias: the best setting's measurement
+    std::optional<TuneResult> tune;   // SuggestBias only
+    double seconds = 0.0;             // wall time of the job on the worker
+};
+
+class AccuracyWorker {
+public:
+    AccuracyWorker();
+    ~AccuracyWorker();  // cancels a running job and joins the thread (its GL context ends on it)
+    AccuracyWorker(const AccuracyWorker&) = delete;
+    AccuracyWorker& operator=(const AccuracyWorker&) = delete;
+
+    // Starts a job; returns its id, or 0 when a job is still running (one at a time).
+    std::uint64_t start(AccuracyJob job);
+    void cancel();                 // the running job stops soon and reports "cancelled"
+    bool running() const;          // a job was started and its result not yet polled
+    float progress() const { return progress_.fraction.load(); }
+    std::string stage() const { return progress_.stage(); }
+    AccuracyJobKind runningKind() const;
+    // The bias search's candidates so far (of the running or the newest search).
+    std::vector<TuneStep> steps() const;
+    // The finished job's result, once; then running() is false.
+    std::optional<AccuracyJobResult> poll();
+
+private:
+    void loop();
+    AccuracyJobResult run(const AccuracyJob& job, std::uint64_t id);
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::thread thread_;
+    bool quit_ = false;
+    std::optional<AccuracyJob> pending_;       // handed to the thread
+    std::uint64_t pendingId_ = 0, lastId_ = 0;
+    bool busy_ = false;                        // started and not yet polled
+    AccuracyJobKind kind_ = AccuracyJobKind::Measure;
+    std::optional<AccuracyJobResult> finished_;
+    std::vector<TuneStep> steps_;
+    AccuracyProgress progress_;
+
+    // Worker-thread only: created on the first job, kept until the thread ends.
+    struct Gl;
+    std::unique_ptr<Gl> gl_;
+    std::string glError_;                      // why the context or meter could not start (then every job fails)
+    std::shared_ptr<const Scene> measuredScene_;  // keeps the meter's cached scene alive and identifiable
+};
+
+}  // namespace shadowlab::editor

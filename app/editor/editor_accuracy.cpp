@@ -1,0 +1,161 @@
+// The editor's side of accuracy measuring: starting jobs on the worker, taking their results (a bias search's
+// result goes into the settings through the key table), knowing when the numbers are stale, measuring automatically
+// once the view has been still, and uploading the overlay picture once per report.
+#include "editor/editor.h"
+#include "gl/gl.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace shadowlab::editor {
+
+std::optional<AccuracyViewKey> Editor::accuracyKey() const {
+    if (!state_.scene || !orbit_) return std::nullopt;
+    const int w = int(viewportRect_.z), h = int(viewportRect_.w);
+    if (w < 16 || h < 16) return std::nullopt;
+    return AccuracyViewKey{effectiveSettings(), orbit_->toCamera(), state_.scene.get(), w, h};
+}
+
+void Editor::measureAccuracy() { startAccuracyJob(AccuracyJobKind::Measure); }
+void Editor::suggestBias() { startAccuracyJob(AccuracyJobKind::SuggestBias); }
+
+void Editor::cancelAccuracy() {
+    if (!accuracyWorker_->running()) return;
+    accuracyWorker_->cancel();
+    state_.accuracy.stage = "cancelling...";
+}
+
+void Editor::startAccuracyJob(AccuracyJobKind kind) {
+    AccuracyState& a = state_.accuracy;
+    const std::optional<AccuracyViewKey> key = accuracyKey();
+    if (!key) {
+        state_.say("accuracy: nothing to measure yet (no scene or no viewport)", true);
+        return;
+    }
+    AccuracyJob job;
+    job.kind = kind;
+    job.scene = state_.scene;  // shared: a scene switch meanwhile cannot free what the worker reads
+    job.settings = key->settings;
+    job.camera = key->camera;
+    job.width = key->width;
+    job.height = key->height;
+    job.maxAcnePercent = a.maxAcnePercent;
+    if (accuracyWorker_->start(std::move(job)) == 0) {
+        state_.say("accuracy: a job is still running (Cancel it first)", true);
+        return;
+    }
+    accuracyJobKey_ = key;
+    a.running = true;
+    a.runningTune = kind == AccuracyJobKind::SuggestBias;
+    a.progress = 0.0f;
+    a.stage = "starting";
+    a.error.clear();
+    if (a.runningTune) {
+        a.steps.clear();
+        a.tune.reset();
+    }
+}
+
+void Editor::pollAccuracy() {
+    AccuracyState& a = state_.accuracy;
+    if (a.running) {
+        a.progress = accuracyWorker_->progress();
+        if (a.stage != "cancelling...") a.stage = accuracyWorker_->stage();
+        if (a.runningTune) a.steps = accuracyWorker_->steps();
+        if (std::optional<AccuracyJobResult> done = accuracyWorker_->poll()) adoptAccuracyResult(std::move(*done));
+    }
+
+    const std::optional<AccuracyViewKey> now = accuracyKey();
+    if (!now) return;
+    if (!lastSeenAccuracyKey_ || !(*lastSeenAccuracyKey_ == *now)) {
+        lastSeenAccuracyKey_ = now;
+        lastAccuracyChange_ = state_.time;
+    }
+    a.stale = a.reportKey ? staleReason(*a.reportKey, *now) : std::string();
+
+    // Auto: once the view has been still for a moment, measure it, unless this exact view was already measured
+    // (or attempted) — never twice for the same view and settings.
+    const bool measuredAlready = (a.reportKey && *a.reportKey == *now) || (autoMeasured_ && *autoMeasured_ == *now);
+    autoDue_ = a.autoMeasure && !measuredAlready;
+    if (autoDue_ && !a.running && state_.time - lastAccuracyChange_ >= AccuracyState::kAutoDelaySeconds) {
+        autoMeasured_ = now;
+        startAccuracyJob(AccuracyJobKind::Measure);
+    }
+}
+
+void Editor::adoptAccuracyResult(AccuracyJobResult result) {
+    AccuracyState& a = state_.accuracy;
+    a.running = false;
+    a.progress = 1.0f;
+    std::optional<AccuracyViewKey> key = std::move(accuracyJobKey_);
+    accuracyJobKey_.reset();
+    if (result.tune) a.steps = accuracyWorker_->steps();
+    if (!result.report.ok) {
+        a.error = result.report.error.empty() ? "failed" : result.report.error;
+        a.stage = result.report.cancelled ? "cancelled" : "failed";
+        state_.say("accuracy: " + a.error, !result.report.cancelled);
+        return;
+    }
+    a.stage = "done";
+    for (const std::string& w : result.report.warnings) state_.say("accuracy: " + w, true);
+
+    if (result.tune) {
+        const TuneResult& tune = *result.tune;
+        const ShadowMapSettings& best = tune.best.shadow;
+        // The result goes into the edited settings through the key table, like a slider would (the preset shows
+        // its unsaved marker). The numbers then describe exactly these settings.
+        const bool applied = state_.edit("shadow.depthBias", best.depthBias) &&
+                             state_.edit("shadow.slopeScaledDepthBias", best.slopeScaledDepthBias) &&
+                             state_.edit("shadow.normalOffset", best.normalOffset);
+        if (key) key->settings = tune.best;
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "%s: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels (acne %.3f %%, leak %.3f %%, "
+                      "%zu candidates, %.1f s)%s",
+                      tune.reachedLimit ? "suggested bias" : "NO setting reached the acne limit; least acne",
+                      double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
+                      tune.report.acnePercent, tune.report.leakPercent, tune.path.size(), tune.seconds,
+                      applied ? ", applied" : ", NOT applied");
+        state_.say(text, !tune.reachedLimit || !applied);
+        a.tune = std::move(result.tune);
+    }
+    if (!result.tune) {
+        char text[160];
+        std::snprintf(text, sizeof text, "accuracy: acne %.3f %%, leak %.3f %%, faint acne %.3f %% (%dx%d, %.2f s)",
+                      result.report.acnePercent, result.report.leakPercent, result.report.faintAcnePercent,
+                      result.report.width, result.report.height, result.seconds);
+        state_.say(text);
+    }
+    a.report = std::move(result.report);
+    a.reportKey = std::move(key);
+    a.reportSeconds = result.seconds;
+    a.reportFromSearch = result.kind == AccuracyJobKind::SuggestBias;
+    ++a.measurements;
+    uploadAccuracyOverlay();
+}
+
+void Editor::uploadAccuracyOverlay() {
+    AccuracyState& a = state_.accuracy;
+    const AccuracyReport& r = *a.report;
+    if (r.width < 1 || r.height < 1 || r.overlayRgba.size() != std::size_t(r.width) * r.height * 4) return;
+    if (a.overlayTexture == 0 || a.overlayWidth != r.width || a.overlayHeight != r.height) {
+        if (a.overlayTexture != 0) glDeleteTextures(1, &a.overlayTexture);
+        glCreateTextures(GL_TEXTURE_2D, 1, &a.overlayTexture);
+        glTextureStorage2D(a.overlayTexture, 1, GL_RGBA8, r.width, r.height);
+        glTextureParameteri(a.overlayTexture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(a.overlayTexture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        a.overlayWidth = r.width;
+        a.overlayHeight = r.height;
+    }
+    // Row 0 of the picture is the view's top; it lands in the texture's row 0, which the UI maps to v = 0 (top).
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(a.overlayTexture, 0, 0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, r.overlayRgba.data());
+}
+
+double Editor::idleWaitSeconds() const {
+    // 20 redraws a second: progress shows, and the worker keeps the cores (flat out on llvmpipe starves it).
+    if (state_.accuracy.running || autoDue_) return 0.05;
+    return 0.5;
+}
+
+}  // namespace shadowlab::editor

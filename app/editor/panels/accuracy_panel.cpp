@@ -1,0 +1,256 @@
+// Accuracy: how wrong the shadows are against the exact reference (acne, leak, faint acne, edge error, k, the counts
+// behind them and what the reference cost), measured on demand or automatically once the view is still; a stale
+// line when the numbers no longer describe the view; and Suggest bias: the search's path, its result applied to the
+// settings, and Save as preset.
+#include "editor/field_widgets.h"
+#include "editor/panels/panel_registry.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+namespace shadowlab::editor {
+
+namespace {
+
+std::string grouped(std::size_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+void row(const char* name, const std::string& value, const char* tooltip = nullptr) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    if (tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(value.c_str());
+}
+
+std::string format(const char* fmt, double a, double b = 0.0) {
+    char text[128];
+    std::snprintf(text, sizeof text, fmt, a, b);
+    return text;
+}
+
+void numbersTab(EditorState& state, const AccuracyReport& r) {
+    const AccuracyCounts& c = r.counts;
+    if (ImGui::BeginTable("numbers", 2, ImGuiTableFlags_SizingFixedFit)) {
+        row("acne", format("%.3f %%", r.acnePercent) + "  (" + grouped(c.acne) + " of " + grouped(c.lit) + " lit)",
+            "truly lit pixels the tool shadows (S < 0.5) farther than k texels from the true shadow boundary");
+        state.controls.recordLastItem("accuracy.acne");
+        row("leak", format("%.3f %%", r.leakPercent) + "  (" + grouped(c.leak) + " of " + grouped(c.shadowed) +
+                        " shadowed)",
+            "Peter Panning / light leaking: truly shadowed pixels the tool lights (S > 0.5) beyond k texels");
+        row("faint acne", format("%.3f %%", r.faintAcnePercent) + "  (" + grouped(c.faintAcne) + ")",
+            "truly lit pixels the tool darkens partly (0.5 <= S < 1) beyond k: moire that is not acne");
+        row("edge error", format("%.2f texels (p95)", r.edgeErrorP95Texels),
+            "95th percentile of the distance to the true boundary over mismatched pixels");
+        row("k", format("%.1f texels", r.kTexels) + format(" (%.3g world)", r.kTexels * r.texelWorldSize),
+            "filter radius + 1 texel: mismatches closer than this to a true edge are filter blur, not counted");
+        ImGui::EndTable();
+    }
+}
+
+void countsTab(const AccuracyReport& r) {
+    const AccuracyCounts& c = r.counts;
+    if (ImGui::BeginTable("counts", 4, ImGuiTableFlags_SizingFixedFit)) {
+        auto pair = [](const char* a, std::size_t va, const char* b, std::size_t vb) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(a);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(grouped(va).c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(b);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(grouped(vb).c_str());
+        };
+        pair("pixels", c.pixels, "measured", c.measured);
+        pair("lit", c.lit, "shadowed", c.shadowed);
+        pair("acne", c.acne, "leak", c.leak);
+        pair("mismatched", c.mismatched, "within k", c.mismatchedWithinK);
+        pair("background", c.background, "facing away", c.facingAway);
+        pair("outside cone", c.outsideCone, "boundary", c.boundaryPixels);
+        pair("non-finite", c.nonFinite, "coverage diff", c.coverageMismatch);
+        ImGui::EndTable();
+    }
+}
+
+void costTab(const AccuracyState& a, const AccuracyReport& r) {
+    const AccuracyCost& k = r.cost;
+    if (ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
+        row("total", format("%.1f ms", k.totalMs) + format(" (job %.2f s)", a.reportSeconds));
+        row("BVH", k.bvhReused ? "reused" : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
+        row("rays", k.referenceReused ? "reused (" + grouped(k.rays) + ")"
+                                      : grouped(k.rays) + format(" in %.1f ms", k.traceMs));
+        row("rays/s", k.referenceReused ? "-" : format("%.2f M", k.raysPerSecond * 1e-6) +
+                                                    " on " + std::to_string(k.threads) + " threads");
+        row("G-buffer", k.referenceReused ? "reused" : format("%.1f ms", k.gbufferMs));
+        row("boundary", format("%.1f ms", k.boundaryMs) + format(", probes %.1f ms", k.probeMs));
+        row("tool frame", format("%.1f ms", k.toolFrameMs));
+        ImGui::EndTable();
+    }
+}
+
+void biasSearchTab(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    AccuracyState& a = state.accuracy;
+
+    // The result first, so it is seen without scrolling; the path below follows the search.
+    if (a.tune && a.tune->ok) {
+        // One line: the values are the highlighted row below (and in the Shadow map panel).
+        const std::string text =
+            a.tune->reachedLimit
+                ? "applied: acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
+                      format("%.1f %%", a.maxAcnePercent) + ", leak " + format("%.3f %%", a.tune->report.leakPercent)
+                : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + "; applied the least acne, " +
+                      format("%.3f %%", a.tune->report.acnePercent);
+        ImGui::PushStyleColor(ImGuiCol_Text, a.tune->reachedLimit ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f)
+                                                                  : ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+        ImGui::TextWrapped("%s", text.c_str());
+        ImGui::PopStyleColor();
+        state.controls.recordLastItem("accuracy.result");
+        if (ImGui::IsItemHovered()) {
+            const ShadowMapSettings& best = a.tune->best.shadow;
+            ImGui::SetTooltip("DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels\n%zu candidates in %.1f s",
+                              double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
+                              a.tune->path.size(), a.tune->seconds);
+        }
+        if (ImGui::SmallButton("Save as preset...")) ctx.actions.openSaveAs();
+        state.controls.recordLastItem("accuracy.saveAs");
+        ImGui::SameLine();
+        ImGui::TextDisabled("%zu candidates, %.1f s", a.tune->path.size(), a.tune->seconds);
+    } else if (a.steps.empty()) {
+        ImGui::TextDisabled("Suggest bias: least leak with acne <= %.1f %%", a.maxAcnePercent);
+    }
+
+    const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
+    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
+                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("steps", 7, flags, ImVec2(0, tableHeight))) {
+        ImGui::TableSetupScrollFreeze(1, 1);
+        for (const char* h : {"#", "DepthBias", "slope", "normal", "acne %", "leak %", "phase"})
+            ImGui::TableSetupColumn(h);
+        ImGui::TableHeadersRow();
+        for (const TuneStep& s : a.steps) {
+            ImGui::TableNextRow();
+            if (s.bestSoFar) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", s.index);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.6g", double(s.depthBias));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3g", double(s.slopeScaledDepthBias));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3g", double(s.normalOffset));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", s.acnePercent);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", s.leakPercent);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(s.phase.c_str());
+        }
+        // Follow the search: a new candidate scrolls into view.
+        if (a.steps.size() != a.stepsFollowed) {
+            ImGui::SetScrollHereY(1.0f);
+            a.stepsFollowed = a.steps.size();
+        }
+        ImGui::EndTable();
+    }
+    state.controls.recordLastItem("accuracy.steps");
+}
+
+}  // namespace
+
+void drawAccuracyPanel(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    AccuracyState& a = state.accuracy;
+
+    ImGui::BeginDisabled(a.running);
+    if (ImGui::Button("Measure")) ctx.actions.measureAccuracy();
+    state.controls.recordLastItem("accuracy.measure");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Measure this view against the exact reference (shadow rays)");
+    ImGui::SameLine();
+    bool startedSearch = false;
+    if (ImGui::Button("Suggest bias")) {
+        ctx.actions.suggestBias();
+        startedSearch = true;
+    }
+    state.controls.recordLastItem("accuracy.suggest");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Search DepthBias, slope and normal offset for the least leak with acne <= %.1f %%, and "
+                          "apply it",
+                          a.maxAcnePercent);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!a.running);
+    if (ImGui::Button("Cancel")) ctx.actions.cancelAccuracy();
+    state.controls.recordLastItem("accuracy.cancel");
+    ImGui::EndDisabled();
+
+    // Progress, or what the newest job did.
+    char overlay[160];
+    if (a.running)
+        std::snprintf(overlay, sizeof overlay, "%s %s (%.0f %%)", a.runningTune ? "bias search:" : "measure:",
+                      a.stage.c_str(), double(a.progress) * 100.0);
+    else if (!a.error.empty())
+        std::snprintf(overlay, sizeof overlay, "%s", a.stage.c_str());
+    else if (a.report)
+        std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? "bias search at" : "measured",
+                      a.report->width, a.report->height, a.reportSeconds);
+    else
+        std::snprintf(overlay, sizeof overlay, "not measured yet");
+    // Beside the buttons where there is room, else on its own line.
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < 220.0f) ImGui::NewLine();
+    ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.22f, 0.42f, 0.70f, 1.0f));
+    ImGui::ProgressBar(a.running ? a.progress : (a.report ? 1.0f : 0.0f), ImVec2(-1, 0), overlay);
+    ImGui::PopStyleColor();
+    state.controls.recordLastItem("accuracy.progress");
+    ImGui::Checkbox("Auto (after edits, once the view is still)", &a.autoMeasure);
+    state.controls.recordLastItem("accuracy.auto");
+
+    if (!a.error.empty() && !a.running) {
+        errorText(a.error);
+        state.controls.recordLastItem("accuracy.error");
+    }
+    if (!a.stale.empty()) {
+        warningText("Stale: " + a.stale);
+        state.controls.recordLastItem("accuracy.stale");
+    }
+
+    if (!ImGui::BeginTabBar("accuracyTabs")) return;
+    auto tab = [&](const char* label, const char* control, ImGuiTabItemFlags flags = 0) {
+        const bool open = ImGui::BeginTabItem(label, nullptr, flags);
+        state.controls.recordLastItem(control);
+        return open;
+    };
+    if (tab("Numbers", "accuracy.tab.numbers")) {
+        if (a.report)
+            numbersTab(state, *a.report);
+        else
+            ImGui::TextDisabled("Measure, or turn on Auto, to see how wrong the shadows are");
+        ImGui::EndTabItem();
+    }
+    if (tab("Counts", "accuracy.tab.counts")) {
+        if (a.report) countsTab(*a.report);
+        ImGui::EndTabItem();
+    }
+    if (tab("Cost", "accuracy.tab.cost")) {
+        if (a.report) costTab(a, *a.report);
+        ImGui::EndTabItem();
+    }
+    if (tab("Bias search", "accuracy.tab.search", startedSearch ? ImGuiTabItemFlags_SetSelected : 0)) {
+        biasSearchTab(ctx);
+        ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+}
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,304 @@
+// The Accuracy panel, driven through ImGui's IO at its real widgets: Measure gives numbers while UI frames keep being
+// built (the work runs on the editor's accuracy worker, in its own EGL context), an edit makes them stale, Auto
+// measures once after the view is still, Suggest bias finds and applies a bias, the overlay view shows acne in red,
+// Cancel stops a job, and a scene switch during a measurement is safe.
+#include "editor_harness.h"
+#include "settings/preset_io.h"
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <thread>
+
+namespace shadowlab::editor::test {
+
+namespace {
+
+// The smallest first-run layout: a viewport of about 650x450 keeps measurements quick on llvmpipe.
+constexpr int kWidth = 1280, kHeight = 720;
+
+class EditorAccuracy : public ::testing::Test {
+protected:
+    void SetUp() override {
+        folder = testFolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    }
+    void open(const std::string& preset = "default") {
+        EditorOptions options = testOptions(folder);
+        options.preset = preset;
+        harness = std::make_unique<EditorHarness>(options, kWidth, kHeight);
+        harness->settle();
+    }
+    // Frames at a host's modest rate until the running job ends; returns how many UI frames were built meanwhile.
+    // `eachFrame` sees the state after every frame built while the job still runs.
+    int waitForJob(double maxSeconds = 120.0, const std::function<void(const AccuracyState&)>& eachFrame = {}) {
+        const auto start = std::chrono::steady_clock::now();
+        int frames = 0;
+        while (harness->state().accuracy.running) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            harness->frame();
+            ++frames;
+            if (eachFrame && harness->state().accuracy.running) eachFrame(harness->state().accuracy);
+            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > maxSeconds) {
+                ADD_FAILURE() << "the accuracy job did not finish in " << maxSeconds << " s";
+                break;
+            }
+        }
+        harness->frame(2);
+        return frames;
+    }
+    // Frames for `seconds` of wall time.
+    void framesFor(double seconds) {
+        const auto start = std::chrono::steady_clock::now();
+        while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            harness->frame();
+        }
+    }
+    std::filesystem::path folder;
+    std::unique_ptr<EditorHarness> harness;
+};
+
+}  // namespace
+
+TEST_F(EditorAccuracy, MeasureGivesNumbersWhileTheUiKeepsDrawing) {
+    open();
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    EXPECT_FALSE(a.report.has_value());
+    h.click("accuracy.measure");
+    const long framesBefore = h.state().renderedFrames + h.state().idleFrames;
+    const int framesDuring = waitForJob();
+    EXPECT_GT(h.state().renderedFrames + h.state().idleFrames, framesBefore);
+    EXPECT_GE(framesDuring, 1) << "the UI thread must keep building frames while the worker measures";
+    ASSERT_TRUE(a.report.has_value()) << a.error;
+    EXPECT_TRUE(a.report->ok);
+    EXPECT_EQ(a.error, "");
+    const ControlRect view = h.rect("viewport.image");
+    EXPECT_EQ(a.report->width, int(view.w));
+    EXPECT_EQ(a.report->height, int(view.h));
+    EXPECT_EQ(a.report->counts.pixels, std::size_t(view.w) * std::size_t(view.h));
+    EXPECT_GT(a.report->counts.lit, 1000u);
+    EXPECT_GT(a.report->cost.rays, 0u);
+    // The default preset is free of acne on the textbook; the numbers are shown, and they are current.
+    EXPECT_LT(a.report->acnePercent, 0.1);
+    EXPECT_EQ(a.stale, "");
+    EXPECT_TRUE(h.hasControl("accuracy.acne"));
+    EXPECT_FALSE(h.hasControl("accuracy.stale"));
+    EXPECT_EQ(a.measurements, 1);
+    h.saveWindow("accuracy-measured");
+    // The counts and the cost are one click away (pictures to look at).
+    h.click("accuracy.tab.counts");
+    h.saveWindow("accuracy-counts");
+    h.click("accuracy.tab.cost");
+    h.saveWindow("accuracy-cost");
+}
+
+TEST_F(EditorAccuracy, AnEditOrACameraMoveMakesTheNumbersStale) {
+    open();
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    h.click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(a.report.has_value());
+    ASSERT_EQ(a.stale, "");
+    h.drag("shadow.depthBias", 60.0f, 0.0f);
+    h.frame();
+    EXPECT_NE(a.stale.find("shadow.depthBias changed"), std::string::npos) << a.stale;
+    EXPECT_TRUE(h.hasControl("accuracy.stale"));
+    h.drag("viewport.image", 60.0f, 10.0f);
+    EXPECT_NE(a.stale.find("the camera moved"), std::string::npos) << a.stale;
+    // The view mode is not part of what was measured.
+    h.click("accuracy.measure");
+    waitForJob();
+    EXPECT_EQ(a.stale, "");
+    h.click("view");
+    h.click("view=shadow");
+    EXPECT_EQ(a.stale, "");
+}
+
+TEST_F(EditorAccuracy, AutoMeasuresOnceTheViewIsStillAndNeverTwiceForTheSameView) {
+    open();
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    h.click("accuracy.auto");
+    ASSERT_TRUE(a.autoMeasure);
+    // The view has been still since it opened: the first measurement comes without a click.
+    framesFor(0.8);
+    waitForJob();
+    ASSERT_EQ(a.measurements, 1);
+    EXPECT_EQ(a.stale, "");
+
+    // An edit: nothing is measured while it is fresh, then once after the view has been still.
+    h.drag("shadow.depthBias", 60.0f, 0.0f);
+    h.frame();
+    EXPECT_FALSE(a.running) << "Auto waits until the view is still";
+    EXPECT_EQ(a.measurements, 1);
+    EXPECT_FALSE(a.stale.empty());
+    framesFor(0.8);
+    waitForJob();
+    EXPECT_EQ(a.measurements, 2);
+    EXPECT_EQ(a.stale, "");
+    // Still: never again for the same view and settings.
+    framesFor(1.2);
+    EXPECT_FALSE(a.running);
+    EXPECT_EQ(a.measurements, 2);
+}
+
+TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToThePreset) {
+    // A user preset with every bias off (and the default's other settings): opening it leaves nothing unsaved.
+    const PresetLoadResult base = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/default.json");
+    ASSERT_TRUE(base.settings.has_value());
+    Settings zero = *base.settings;
+    zero.shadow.depthBias = 0.0f;
+    zero.shadow.slopeScaledDepthBias = 0.0f;
+    zero.shadow.normalOffset = 0.0f;
+    const std::string path = (folder / "zero-bias.json").string();
+    ASSERT_EQ(savePresetFile(path, zero, "zero-bias"), "");
+    open(path);
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    ASSERT_EQ(h.state().settings.shadow.depthBias, 0.0f);
+    ASSERT_FALSE(h.state().preset.dirty(h.state().settings));
+
+    h.click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(a.report.has_value());
+    EXPECT_GT(a.report->acnePercent, 1.0) << "zero bias should show acne";
+
+    h.click("accuracy.suggest");
+    std::size_t liveSteps = 0;  // the path table fills while the search runs
+    float liveProgress = 0.0f;
+    const int frames = waitForJob(300.0, [&](const AccuracyState& s) {
+        liveSteps = std::max(liveSteps, s.steps.size());
+        liveProgress = std::max(liveProgress, s.progress);
+    });
+    EXPECT_GE(frames, 1);
+    EXPECT_GT(liveSteps, 0u) << "no candidate reached the table while the search ran";
+    EXPECT_GT(liveProgress, 0.0f);
+    ASSERT_TRUE(a.tune.has_value()) << a.error;
+    ASSERT_TRUE(a.tune->ok) << a.tune->error;
+    EXPECT_TRUE(a.tune->reachedLimit);
+    EXPECT_LE(a.report->acnePercent, 0.1);
+    EXPECT_GE(a.steps.size(), 3u);
+    EXPECT_EQ(a.steps.size(), a.tune->path.size());
+    // Applied through the key table: the settings carry the result and the preset shows unsaved changes.
+    const ShadowMapSettings& best = a.tune->best.shadow;
+    EXPECT_EQ(h.state().settings.shadow.depthBias, best.depthBias);
+    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, best.slopeScaledDepthBias);
+    EXPECT_EQ(h.state().settings.shadow.normalOffset, best.normalOffset);
+    EXPECT_GT(best.depthBias + best.slopeScaledDepthBias + best.normalOffset, 0.0f);
+    EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
+    EXPECT_NE(h.editor().windowTitle().find(" *"), std::string::npos);
+    EXPECT_EQ(a.stale, "") << "the numbers describe the applied settings";
+    EXPECT_TRUE(h.hasControl("accuracy.result"));
+    h.saveWindow("accuracy-suggested");
+
+    // Save as preset... opens the preset session's Save As, and the saved preset carries the bias.
+    h.click("accuracy.saveAs");
+    h.frame(2);
+    ASSERT_TRUE(h.hasControl("saveAs.name"));
+    h.selectAllAndType("suggested");
+    const std::filesystem::path saved = folder / "user-presets" / "suggested.json";
+    ASSERT_TRUE(std::filesystem::exists(saved));
+    const PresetLoadResult back = loadPresetFile(saved.string());
+    ASSERT_TRUE(back.settings.has_value());
+    EXPECT_EQ(back.settings->shadow.depthBias, best.depthBias);
+    EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
+}
+
+TEST_F(EditorAccuracy, OverlayViewShowsAcneInRed) {
+    open("acne");
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    h.click("view");
+    h.click("view=accuracy overlay");
+    EXPECT_TRUE(a.showOverlay);
+    EXPECT_EQ(h.state().settings.view, ViewMode::Lit) << "the overlay is not a renderer setting";
+    EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
+    h.click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(a.report.has_value());
+    EXPECT_GT(a.report->acnePercent, 1.0);
+    ASSERT_NE(a.overlayTexture, 0u);
+
+    const ControlRect view = h.rect("viewport.image");
+    auto redFraction = [&] {
+        const std::vector<std::uint8_t> window = h.readWindow();
+        long red = 0, all = 0;
+        for (int y = int(view.y); y < int(view.y + view.h); ++y)
+            for (int x = int(view.x); x < int(view.x + view.w); ++x) {
+                const std::uint8_t* p = &window[(std::size_t(y) * h.width() + x) * 4];
+                red += p[0] > 200 && p[1] < 70 && p[2] < 70;
+                ++all;
+            }
+        return double(red) / double(all);
+    };
+    const double withOverlay = redFraction();
+    h.saveWindow("accuracy-overlay");
+    EXPECT_GT(withOverlay, 0.02) << "acne pixels are drawn red";
+    // An edit: the overlay stays (the newest measurement) with a stale note over it.
+    h.drag("shadow.slopeScaledDepthBias", 30.0f, 0.0f);
+    h.frame();
+    EXPECT_FALSE(a.stale.empty());
+    h.saveWindow("accuracy-overlay-stale");
+    EXPECT_GT(redFraction(), withOverlay * 0.8);
+    // The lit view has no such red.
+    h.click("view");
+    h.click("view=lit");
+    EXPECT_FALSE(a.showOverlay);
+    EXPECT_LT(redFraction(), withOverlay * 0.1);
+}
+
+TEST_F(EditorAccuracy, CancelStopsABiasSearchAndKeepsTheSettings) {
+    open("acne");
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    const Settings before = h.state().settings;
+    h.click("accuracy.suggest");
+    ASSERT_TRUE(a.running) << "the search takes longer than a click";
+    h.click("accuracy.cancel");
+    waitForJob(60.0);
+    EXPECT_FALSE(a.running);
+    EXPECT_EQ(a.error, "cancelled");
+    EXPECT_TRUE(h.state().settings == before) << "a cancelled search applies nothing";
+    EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
+    // The worker takes the next job.
+    h.click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(a.report.has_value());
+    EXPECT_TRUE(a.report->ok);
+}
+
+TEST_F(EditorAccuracy, ASceneSwitchWhileMeasuringIsSafeAndMakesTheNumbersStale) {
+    open();
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    h.click("accuracy.measure");
+    h.editor().requestScene("builtin:grazing");
+    waitForJob();
+    h.settle();
+    ASSERT_EQ(h.state().sceneSpec, "builtin:grazing");
+    ASSERT_TRUE(a.report.has_value()) << a.error;
+    EXPECT_NE(a.stale.find("another scene"), std::string::npos) << a.stale;
+    h.click("accuracy.measure");
+    waitForJob();
+    EXPECT_EQ(a.stale, "");
+}
+
+TEST_F(EditorAccuracy, ClosingTheEditorDuringASearchCancelsItAndEndsTheWorker) {
+    open("acne");
+    EditorHarness& h = *harness;
+    h.click("accuracy.suggest");
+    ASSERT_TRUE(h.state().accuracy.running);
+    // The editor goes while the worker is inside the search: it must cancel, join and free its GL context (a hang
+    // here ends in ctest's timeout), and this process's own context keeps working.
+    harness.reset();
+    open();
+    EXPECT_TRUE(harness->state().stats.ok);
+    harness->click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(harness->state().accuracy.report.has_value());
+    EXPECT_TRUE(harness->state().accuracy.report->ok);
+}
+
+}  // namespace shadowlab::editor::test
