@@ -176,7 +176,13 @@ void Editor::renderViewport() {
     }
     RenderKey key{effectiveSettings(), orbit_->eye(), orbit_->target(), state_.scene.get(), w, h,
                   state_.showLightFrustum};
-    if (lastRendered_ && *lastRendered_ == key) {
+    // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
+    // it is stale); a settings or scene change still renders, so the shadow map, its viewer and Stats follow the edit.
+    const bool overlayHidesView = state_.accuracy.showOverlay && state_.accuracy.overlayTexture != 0;
+    const bool unchanged = lastRendered_ && (overlayHidesView ? lastRendered_->settings == key.settings &&
+                                                                      lastRendered_->scene == key.scene
+                                                                : *lastRendered_ == key);
+    if (unchanged) {
         ++state_.idleFrames;  // nothing changed: no pass runs, the viewport keeps its picture
         renderMapPicture(false);
         return;

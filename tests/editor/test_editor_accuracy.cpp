@@ -249,6 +249,37 @@ TEST_F(EditorAccuracy, OverlayViewShowsAcneInRed) {
     EXPECT_LT(redFraction(), withOverlay * 0.1);
 }
 
+TEST_F(EditorAccuracy, OverlayViewRunsNoPassForACameraMoveButFollowsAnEdit) {
+    open("default");
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    h.click("view");
+    h.click("view=accuracy overlay");
+    h.click("accuracy.measure");
+    waitForJob();
+    ASSERT_NE(a.overlayTexture, 0u);
+    // The overlay hides the main view: orbiting only makes the numbers stale, no pass renders a picture nobody sees.
+    const long rendered = h.state().renderedFrames;
+    h.drag("viewport.image", 60.0f, 10.0f);
+    h.frame();
+    EXPECT_FALSE(a.stale.empty());
+    EXPECT_EQ(h.state().renderedFrames, rendered);
+    // A bias edit still renders, so the shadow map (and its viewer) follow it.
+    h.drag("shadow.depthBias", 60.0f, 0.0f);
+    h.frame();
+    EXPECT_GT(h.state().renderedFrames, rendered);
+    EXPECT_TRUE(h.state().stats.shadowPass.ran) << h.state().stats.shadowPass.reason;
+    // Back to the lit view after another camera move: the moved camera is rendered then.
+    const long beforeLit = h.state().renderedFrames;
+    h.drag("viewport.image", -40.0f, 0.0f);
+    h.frame();
+    EXPECT_EQ(h.state().renderedFrames, beforeLit);
+    h.click("view");
+    h.click("view=lit");
+    h.frame();
+    EXPECT_GT(h.state().renderedFrames, beforeLit);
+}
+
 TEST_F(EditorAccuracy, CancelStopsABiasSearchAndKeepsTheSettings) {
     open("acne");
     EditorHarness& h = *harness;
