@@ -62,12 +62,16 @@ EGLDisplay openDisplay(std::string& platform) {
 
 HeadlessContext::HeadlessContext(bool debug) {
     std::lock_guard<std::mutex> lock(displayMutex());
+    // glad's entry points are process-wide: load them only for the first context, so that a second one (the editor's
+    // accuracy worker) never rewrites pointers another thread is calling through.
+    const bool firstContext = displayUsers().empty();
     // Before eglInitialize glad only sees EGL 1.0 plus client extensions: that is why the EXT entry points are used.
-    if (!gladLoaderLoadEGL(EGL_NO_DISPLAY)) throw std::runtime_error("headless EGL: cannot load libEGL");
+    if (firstContext && !gladLoaderLoadEGL(EGL_NO_DISPLAY)) throw std::runtime_error("headless EGL: cannot load libEGL");
     EGLDisplay dpy = openDisplay(platform_);
     display_ = dpy;
     ++displayUsers()[dpy];
-    if (!gladLoaderLoadEGL(dpy)) throw std::runtime_error("headless EGL: cannot load EGL for the display");
+    if (firstContext && !gladLoaderLoadEGL(dpy))
+        throw std::runtime_error("headless EGL: cannot load EGL for the display");
     if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error(eglErrorText("eglBindAPI(EGL_OPENGL_API)"));
 
     const EGLint attributes[] = {
@@ -81,7 +85,9 @@ HeadlessContext::HeadlessContext(bool debug) {
     if (ctx == EGL_NO_CONTEXT) throw std::runtime_error(eglErrorText("creating a GL 4.5 core context"));
     context_ = ctx;
     makeCurrent();
-    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)))
+    // GL entry points from libglvnd dispatch on the calling thread's current context, whichever API made it (GLX in
+    // the editor's window, EGL here): once loaded they serve every context.
+    if (!GLAD_GL_VERSION_4_5 && !gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)))
         throw std::runtime_error("headless EGL: cannot load the GL 4.5 functions");
 }
 
