@@ -42,6 +42,7 @@ public:
     void pressKey(int key, bool ctrl = false, bool shift = false);
     void typeText(const std::string& text);
     void selectAllAndType(const std::string& text);  // Ctrl+A then the text then Enter, in the focused field
+    static constexpr int kEnterKey = 257;  // GLFW_KEY_ENTER
 
     bool hasControl(const std::string& name) const { return state().controls.find(name) != nullptr; }
     ControlRect rect(const std::string& name) const;  // fails the test if the control was not drawn
@@ -56,8 +57,10 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
 
-private:
+    // A key held down or let go; the next frame() sees it (pressKey is the whole press).
     void setKey(int key, bool down);
+
+private:
 
     int width_, height_;
     unsigned fbo_ = 0, colorTexture_ = 0;
