@@ -8,9 +8,7 @@
 set -uo pipefail
 : "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
 rm -rf "$OUT_DIR" && mkdir -p "$OUT_DIR" && cd "$OUT_DIR"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-pass() { echo "ok: $*"; }
+. "$SOURCE_DIR/tests/e2e/e2e_lib.sh"
 png_check() { python3 "$SOURCE_DIR/tests/e2e/png_check.py" "$1"; }
 
 # Without a display: a clear message and a non-zero exit.
@@ -140,5 +138,4 @@ if kill -0 "$app_pid" 2>/dev/null; then fail "Ctrl+Q did not quit"; else
   [ -f config/imgui.ini ] && pass "panel layout saved in imgui.ini" || fail "no imgui.ini"
 fi
 
-echo "$failures failure(s)"
-[ "$failures" -eq 0 ]
+finish
