@@ -1,8 +1,6 @@
 #include "cli/accuracy_output.h"
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 
 namespace shadowlab::cli {
@@ -78,33 +76,6 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
           {"toolFrameMs", k.toolFrameMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
     };
-}
-
-std::string checkOutputFolder(const std::string& path, const char* option) {
-    if (path.empty()) return {};
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (folder.empty() || std::filesystem::is_directory(folder)) return {};
-    return std::string(option) + " " + path + ": folder '" + folder.string() + "' does not exist";
-}
-
-std::string writeTextFile(const std::string& path, const std::string& text) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        if (!file) return "cannot write " + path + " (cannot create " + temporary + ")";
-        file << text;
-        if (!file.flush()) {
-            std::remove(temporary.c_str());
-            return "cannot write " + path;
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::remove(temporary.c_str());
-        return "cannot write " + path + ": " + error.message();
-    }
-    return {};
 }
 
 }  // namespace shadowlab::cli

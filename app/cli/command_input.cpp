@@ -1,5 +1,6 @@
 #include "cli/command_input.h"
 
+#include <filesystem>
 #include <iostream>
 
 namespace shadowlab::cli {
@@ -20,6 +21,13 @@ SceneLoadResult loadSceneForCommand(const std::string& spec) {
         for (const std::string& w : loaded.scene->warnings)
             std::cerr << "warning: " << loaded.scene->name << ": " << w << "\n";
     return loaded;
+}
+
+std::string checkOutputFolder(const std::string& path, const char* option) {
+    if (path.empty()) return {};
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (folder.empty() || std::filesystem::is_directory(folder)) return {};
+    return std::string(option) + " " + path + ": folder '" + folder.string() + "' does not exist";
 }
 
 }  // namespace shadowlab::cli

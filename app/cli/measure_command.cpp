@@ -7,6 +7,7 @@
 #include "context/headless_context.h"
 #include "image/image_io.h"
 #include "scene/scene_source.h"
+#include "settings/atomic_file.h"
 
 #include <iostream>
 
@@ -36,7 +37,7 @@ int runMeasure(const MeasureOptions& options) {
             nlohmann::json json = accuracyToJson(report);
             json["scene"] = options.scene;
             json["preset"] = options.preset;
-            if (std::string error = writeTextFile(options.json, json.dump(2) + "\n"); !error.empty())
+            if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }

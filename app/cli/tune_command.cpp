@@ -6,6 +6,7 @@
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "scene/scene_source.h"
+#include "settings/atomic_file.h"
 #include "settings/preset_io.h"
 
 #include <cstdio>
@@ -86,7 +87,7 @@ int runTune(const TuneOptions& options) {
                                          {"best", presetToJson(result.best)},
                                          {"report", accuracyToJson(result.report)},
                                          {"path", path}};
-            if (std::string error = writeTextFile(options.json, json.dump(2) + "\n"); !error.empty())
+            if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }
