@@ -1,6 +1,5 @@
 #include "cli/accuracy_output.h"
 
-#include <cstdio>
 #include <iomanip>
 
 namespace shadowlab::cli {
