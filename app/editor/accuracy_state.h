@@ -5,6 +5,7 @@
 #include "accuracy/accuracy_meter.h"
 #include "accuracy/bias_tuner.h"
 #include "frame/camera.h"
+#include "gl/gl_objects.h"
 #include "scene/scene.h"
 #include "settings/settings.h"
 
@@ -54,7 +55,7 @@ struct AccuracyState {
     std::size_t stepsFollowed = 0;   // the path table scrolled to its newest row when it grew
 
     // The overlay picture on the GPU (uploaded once per report).
-    unsigned overlayTexture = 0;
+    gl::Texture overlayTexture;
     int overlayWidth = 0, overlayHeight = 0;
 };
 

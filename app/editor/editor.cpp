@@ -87,7 +87,6 @@ Editor::Editor(EditorOptions options) : options_(std::move(options)) {
 
 Editor::~Editor() {
     accuracyWorker_.reset();  // cancels a running job and joins the worker
-    if (state_.accuracy.overlayTexture != 0) glDeleteTextures(1, &state_.accuracy.overlayTexture);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -178,7 +177,7 @@ void Editor::renderViewport() {
                   state_.showLightFrustum};
     // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
     // it is stale); a settings or scene change still renders, so the shadow map, its viewer and Stats follow the edit.
-    const bool overlayHidesView = state_.accuracy.showOverlay && state_.accuracy.overlayTexture != 0;
+    const bool overlayHidesView = state_.accuracy.showOverlay && bool(state_.accuracy.overlayTexture);
     const bool unchanged = lastRendered_ && (overlayHidesView ? lastRendered_->settings == key.settings &&
                                                                       lastRendered_->scene == key.scene
                                                                 : *lastRendered_ == key);

@@ -138,18 +138,18 @@ void Editor::uploadAccuracyOverlay() {
     AccuracyState& a = state_.accuracy;
     const AccuracyReport& r = *a.report;
     if (r.width < 1 || r.height < 1 || r.overlayRgba.size() != std::size_t(r.width) * r.height * 4) return;
-    if (a.overlayTexture == 0 || a.overlayWidth != r.width || a.overlayHeight != r.height) {
-        if (a.overlayTexture != 0) glDeleteTextures(1, &a.overlayTexture);
-        glCreateTextures(GL_TEXTURE_2D, 1, &a.overlayTexture);
-        glTextureStorage2D(a.overlayTexture, 1, GL_RGBA8, r.width, r.height);
-        glTextureParameteri(a.overlayTexture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(a.overlayTexture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    if (!a.overlayTexture || a.overlayWidth != r.width || a.overlayHeight != r.height) {
+        a.overlayTexture = gl::createTexture(GL_TEXTURE_2D);
+        const GLuint id = a.overlayTexture.id();
+        glTextureStorage2D(id, 1, GL_RGBA8, r.width, r.height);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         a.overlayWidth = r.width;
         a.overlayHeight = r.height;
     }
     // Row 0 of the picture is the view's top; it lands in the texture's row 0, which the UI maps to v = 0 (top).
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(a.overlayTexture, 0, 0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, r.overlayRgba.data());
+    glTextureSubImage2D(a.overlayTexture.id(), 0, 0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, r.overlayRgba.data());
 }
 
 double Editor::idleWaitSeconds() const {

@@ -133,9 +133,9 @@ void Editor::drawViewport() {
         ImDrawList* draw = ImGui::GetWindowDrawList();
         const AccuracyState& a = state_.accuracy;
         const ImVec2 imageEnd(imagePos.x + imageSize.x, imagePos.y + imageSize.y);
-        if (a.showOverlay && a.overlayTexture != 0) {
+        if (a.showOverlay && a.overlayTexture) {
             // The overlay's row 0 is the view's top, and so is its texture's row 0.
-            draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(a.overlayTexture)), imagePos,
+            draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(a.overlayTexture.id())), imagePos,
                            imageEnd, ImVec2(0, 0), ImVec2(1, 1));
             drawOverlayNotes(imagePos, imageSize);
         } else if (target_.width() > 0 && state_.haveStats) {
@@ -195,7 +195,7 @@ void Editor::viewModeCombo() {
 void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
     const AccuracyState& a = state_.accuracy;
     std::string note;
-    if (a.overlayTexture == 0)
+    if (!a.overlayTexture)
         note = a.running ? "accuracy overlay: measuring..."
                          : "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
     else if (!a.stale.empty())
@@ -209,7 +209,7 @@ void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
         draw->AddText(nullptr, 0.0f, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 190, 80, 255), note.c_str(), nullptr,
                       imageSize.x - 4 * pad);
     }
-    if (a.overlayTexture != 0) {
+    if (a.overlayTexture) {
         // The legend, bottom left.
         const struct { const char* text; ImU32 colour; } keys[] = {{"acne", IM_COL32(235, 40, 40, 255)},
                                                                     {"leak", IM_COL32(50, 110, 255, 255)},

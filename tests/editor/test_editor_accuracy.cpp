@@ -219,7 +219,7 @@ TEST_F(EditorAccuracy, OverlayViewShowsAcneInRed) {
     waitForJob();
     ASSERT_TRUE(a.report.has_value());
     EXPECT_GT(a.report->acnePercent, 1.0);
-    ASSERT_NE(a.overlayTexture, 0u);
+    ASSERT_NE(a.overlayTexture.id(), 0u);
 
     const ControlRect view = h.rect("viewport.image");
     auto redFraction = [&] {
@@ -257,7 +257,7 @@ TEST_F(EditorAccuracy, OverlayViewRunsNoPassForACameraMoveButFollowsAnEdit) {
     h.click("view=accuracy overlay");
     h.click("accuracy.measure");
     waitForJob();
-    ASSERT_NE(a.overlayTexture, 0u);
+    ASSERT_NE(a.overlayTexture.id(), 0u);
     // The overlay hides the main view: orbiting only makes the numbers stale, no pass renders a picture nobody sees.
     const long rendered = h.state().renderedFrames;
     h.drag("viewport.image", 60.0f, 10.0f);
