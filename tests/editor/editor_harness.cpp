@@ -72,11 +72,7 @@ EditorHarness::EditorHarness(const EditorOptions& options, int width, int height
     applyEditorStyle();
     EXPECT_TRUE(ImGui_ImplOpenGL3_Init("#version 450 core"));
 
-    glCreateTextures(GL_TEXTURE_2D, 1, &colorTexture_);
-    glTextureStorage2D(colorTexture_, 1, GL_RGBA8, width, height);
-    glCreateFramebuffers(1, &fbo_);
-    glNamedFramebufferTexture(fbo_, GL_COLOR_ATTACHMENT0, colorTexture_, 0);
-    EXPECT_EQ(glCheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    EXPECT_EQ(window_.resize(width, height), "");
 
     editor_ = std::make_unique<Editor>(options);
 }
@@ -85,8 +81,6 @@ EditorHarness::~EditorHarness() {
     editor_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext(static_cast<ImGuiContext*>(imguiContext_));
-    glDeleteFramebuffers(1, &fbo_);
-    glDeleteTextures(1, &colorTexture_);
     for (const std::string& e : gl::takeDebugErrors()) ADD_FAILURE() << "GL debug error: " << e;
 }
 
@@ -97,7 +91,7 @@ void EditorHarness::frame(int count) {
         ImGui::NewFrame();
         editor_->buildUi();
         ImGui::Render();
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
+        glBindFramebuffer(GL_FRAMEBUFFER, window_.framebuffer());
         glViewport(0, 0, width_, height_);
         glClearColor(0.09f, 0.09f, 0.10f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
@@ -205,7 +199,7 @@ ControlRect EditorHarness::rect(const std::string& name) const {
 std::vector<std::uint8_t> EditorHarness::readWindow() const {
     std::vector<std::uint8_t> rgba(std::size_t(width_) * height_ * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glGetTextureImage(colorTexture_, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
+    glGetTextureImage(window_.colorTexture(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(rgba.size()), rgba.data());
     // GL rows are bottom first; callers think top first.
     std::vector<std::uint8_t> flipped(rgba.size());
     const std::size_t row = std::size_t(width_) * 4;

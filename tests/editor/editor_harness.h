@@ -4,6 +4,7 @@
 // buttons, wheel, keys, typed characters) at the real rectangles the widgets were drawn at.
 #include "editor/editor.h"
 #include "editor/editor_keys.h"
+#include "frame/render_target.h"
 
 #include <gtest/gtest.h>
 
@@ -61,9 +62,8 @@ public:
     void setKey(int key, bool down);
 
 private:
-
     int width_, height_;
-    unsigned fbo_ = 0, colorTexture_ = 0;
+    RenderTarget window_;  // the window the UI is drawn into
     void* imguiContext_ = nullptr;
     std::unique_ptr<Editor> editor_;
 };
