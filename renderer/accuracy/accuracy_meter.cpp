@@ -69,16 +69,18 @@ double AccuracyReport::causePercentOfWrong(MismatchCause cause) const {
 }
 
 MismatchCause AccuracyReport::mainCause() const {
+    // Beyond k first: the blur next to true edges is in every picture and rarely what to fix.
     MismatchCause best = MismatchCause::None;
-    std::pair<std::size_t, std::size_t> bestCount{0, 0};
+    std::size_t most = 0;
     for (MismatchCause cause : allCauses()) {
-        const std::pair<std::size_t, std::size_t> n{counts.causeWrong[std::size_t(cause)],
-                                                    counts.causePixels[std::size_t(cause)]};
-        if (n > bestCount) {
-            bestCount = n;
+        const std::size_t n = counts.causePixels[std::size_t(cause)];
+        if (cause != MismatchCause::NearEdge && n > most) {
+            most = n;
             best = cause;
         }
     }
+    if (best == MismatchCause::None && counts.causePixels[std::size_t(MismatchCause::NearEdge)] > 0)
+        best = MismatchCause::NearEdge;
     return best;
 }
 

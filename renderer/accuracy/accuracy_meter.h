@@ -114,7 +114,8 @@ struct AccuracyReport {
     std::vector<std::uint8_t> causeOverlayRgba;
 
     double causePercentOfWrong(MismatchCause cause) const;  // share of wrong pixels this cause explains
-    MismatchCause mainCause() const;  // the cause of the most wrong pixels (else of the most mismatched); None if none
+    // The cause of the most mismatched pixels beyond k (else "within k of a true edge"; None when nothing mismatches).
+    MismatchCause mainCause() const;
 };
 
 // The share of shadowed pixels within k of a true edge above which acne and leak cannot judge (coarse map).
