@@ -78,25 +78,23 @@ void causesTab(EditorState& state, const AccuracyReport& r) {
     }
     ImGui::TextDisabled("%s wrong, %s visibly mismatched pixels", grouped(c.wrong).c_str(),
                         grouped(c.mismatched).c_str());
-    if (ImGui::BeginTable("causes", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
-        for (MismatchCause cause : allCauses()) {
-            const std::size_t n = c.causePixels[std::size_t(cause)];
-            if (n == 0) continue;
-            const CauseInfo& info = causeInfo(cause);
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::ColorButton(info.key, ImVec4(info.red / 255.0f, info.green / 255.0f, info.blue / 255.0f, 1.0f),
-                               ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
-            ImGui::SameLine();
-            ImGui::TextUnformatted(info.name);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted((format("%.1f %% of wrong", r.causePercentOfWrong(cause)) + "  (" +
-                                    grouped(n) + " px)").c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(info.remedy);
-        }
-        ImGui::EndTable();
+    // One line per cause (colour, name, share), its remedy wrapped below: the panel is often narrow.
+    ImGui::BeginGroup();
+    for (MismatchCause cause : allCauses()) {
+        const std::size_t n = c.causePixels[std::size_t(cause)];
+        if (n == 0) continue;
+        const CauseInfo& info = causeInfo(cause);
+        ImGui::ColorButton(info.key, ImVec4(info.red / 255.0f, info.green / 255.0f, info.blue / 255.0f, 1.0f),
+                           ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
+        ImGui::SameLine();
+        ImGui::Text("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
+        ImGui::Indent();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", info.remedy);
+        ImGui::PopStyleColor();
+        ImGui::Unindent();
     }
+    ImGui::EndGroup();
     state.controls.recordLastItem("accuracy.causes");
 }
 
