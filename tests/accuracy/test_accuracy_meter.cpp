@@ -91,6 +91,30 @@ TEST_F(AccuracyMeterTest, CoarseMapShowsInWrongPixelsAndWarns) {
     }
 }
 
+// HARD_CASES 12: a near plane past the floating box with depth clamp off drops its shadow; the cause says why, and
+// depth clamp on brings it back.
+TEST_F(AccuracyMeterTest, CasterBeforeTheNearPlaneIsNamedWhenDepthClampIsOff) {
+    const Scene scene = loadBuiltin("textbook");
+    AccuracyMeter meter;
+    Settings settings = loadShippedPreset("default");
+    settings.projection.autoFit = false;
+    settings.projection.orthoSize = 30.0f;
+    settings.projection.nearPlane = 13.0f;
+    settings.projection.farPlane = 40.0f;
+    settings.projection.depthClamp = false;
+    const Camera camera = cameraFor(settings.camera, scene);
+    const AccuracyReport clipped = meter.measure(scene, settings, camera, kWidth, kHeight);
+    ASSERT_TRUE(clipped.ok) << clipped.error;
+    saveOverlay(clipped, "textbook-near-clipped");
+    EXPECT_EQ(clipped.mainCause(), MismatchCause::NearPlaneClip);
+    EXPECT_GT(clipped.causePercentOfWrong(MismatchCause::NearPlaneClip), 80.0);
+    settings.projection.depthClamp = true;
+    const AccuracyReport clamped = meter.measure(scene, settings, camera, kWidth, kHeight);
+    ASSERT_TRUE(clamped.ok) << clamped.error;
+    EXPECT_EQ(clamped.counts.causePixels[std::size_t(MismatchCause::NearPlaneClip)], 0u);
+    EXPECT_LT(clamped.counts.wrong, clipped.counts.wrong / 4);
+}
+
 // The cause overlay paints exactly the pixels of each cause in that cause's colour.
 TEST_F(AccuracyMeterTest, CauseOverlayColoursEachMismatchedPixelByItsCause) {
     const Scene scene = loadBuiltin("roof");
