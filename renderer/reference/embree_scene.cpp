@@ -53,6 +53,23 @@ bool culledByShadowPass(const EmbreeScene::GeometryInfo& g, unsigned primitive, 
     return rules.cullMode == CullMode::Back ? !facesLight : facesLight;
 }
 
+RTCRay makeRay(const glm::vec3& origin, const glm::vec3& direction, float tFar) {
+    RTCRay ray;
+    ray.org_x = origin.x;
+    ray.org_y = origin.y;
+    ray.org_z = origin.z;
+    ray.dir_x = direction.x;
+    ray.dir_y = direction.y;
+    ray.dir_z = direction.z;
+    ray.tnear = 0.0f;
+    ray.tfar = tFar;
+    ray.time = 0.0f;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+    return ray;
+}
+
 void cullingFilter(const RTCFilterFunctionNArguments* args) {
     const auto* query = reinterpret_cast<const QueryContext*>(args->context);
     if (!query->rules || !query->rules->shadowPassCulling) return;
@@ -135,19 +152,7 @@ bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& direction, 
     rtcInitIntersectContext(&query.base);
     query.scene = this;
     RTCIntersectContext& context = query.base;
-    RTCRay ray;
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.dir_x = direction.x;
-    ray.dir_y = direction.y;
-    ray.dir_z = direction.z;
-    ray.tnear = 0.0f;
-    ray.tfar = tFar;
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
+    RTCRay ray = makeRay(origin, direction, tFar);
     rtcOccluded1(static_cast<RTCScene>(scene_), &context, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
 }
@@ -164,19 +169,8 @@ RayHit EmbreeScene::firstHit(const glm::vec3& origin, const glm::vec3& direction
     query.rules = &rules;
     if (rules.shadowPassCulling) query.base.filter = cullingFilter;
     RTCRayHit rayHit;
-    RTCRay& ray = rayHit.ray;
-    ray.org_x = origin.x;
-    ray.org_y = origin.y;
-    ray.org_z = origin.z;
-    ray.dir_x = direction.x;
-    ray.dir_y = direction.y;
-    ray.dir_z = direction.z;
-    ray.tnear = 0.0f;
-    ray.tfar = tFar;
-    ray.time = 0.0f;
-    ray.mask = 0xFFFFFFFFu;
-    ray.id = 0;
-    ray.flags = 0;
+    rayHit.ray = makeRay(origin, direction, tFar);
+    const RTCRay& ray = rayHit.ray;
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(static_cast<RTCScene>(scene_), &query.base, &rayHit);
