@@ -115,6 +115,32 @@ TEST_F(AccuracyMeterTest, CasterBeforeTheNearPlaneIsNamedWhenDepthClampIsOff) {
     EXPECT_LT(clamped.counts.wrong, clipped.counts.wrong / 4);
 }
 
+// HARD_CASES 13: mirrored instances reverse the winding; the shadow pass flips its front face for them, and so does
+// the culled-caster cause. The roof mirrored in z (the same geometry) measures and explains as the plain one.
+TEST_F(AccuracyMeterTest, MirroredRoofIsCulledAndExplainedLikeThePlainOne) {
+    Scene mirrored = loadBuiltin("roof");
+    for (Instance& instance : mirrored.instances)
+        instance.transform = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 1.0f, -1.0f)) * instance.transform;
+    mirrored.computeBounds();
+    ASSERT_TRUE(mirrored.instances.front().mirrored());
+    AccuracyMeter meter;
+    Settings settings = loadShippedPreset("default");
+    settings.light.direction = glm::vec3(-0.4f, -1.0f, 0.3f);  // the plain roof's light, mirrored too
+    const Camera camera = cameraFor(settings.camera, mirrored);
+    const AccuracyReport back = meter.measure(mirrored, settings, camera, kWidth, kHeight);
+    ASSERT_TRUE(back.ok) << back.error;
+    saveOverlay(back, "roof-mirrored-cull-back");
+    EXPECT_GT(back.leakPercent, 50.0);
+    EXPECT_EQ(back.mainCause(), MismatchCause::CasterCulled);
+    settings.shadow.cullMode = CullMode::Front;  // keeps the roof: its front looks away from the light
+    const AccuracyReport front = meter.measure(mirrored, settings, camera, kWidth, kHeight);
+    ASSERT_TRUE(front.ok) << front.error;
+    EXPECT_LT(front.leakPercent, 5.0);
+    const std::size_t culled = std::size_t(MismatchCause::CasterCulled);
+    EXPECT_LT(front.counts.causePixels[culled], back.counts.causePixels[culled] / 100)
+        << "only rays grazing the box's edges remain";
+}
+
 // The cause overlay paints exactly the pixels of each cause in that cause's colour.
 TEST_F(AccuracyMeterTest, CauseOverlayColoursEachMismatchedPixelByItsCause) {
     const Scene scene = loadBuiltin("roof");
