@@ -42,6 +42,9 @@ private:
     std::string stage_;
 };
 
+// Which of DESIGN.md's definitions the numbers follow (reports and JSON carry it).
+inline constexpr int kMetricsVersion = 2;
+
 // The counts behind the percentages (DESIGN.md's sets, version 2; e = 1/255), all in main-view pixels.
 struct AccuracyCounts {
     std::size_t pixels = 0;            // width * height
@@ -90,7 +93,7 @@ struct AccuracyReport {
     std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
     std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
 
-    int metricsVersion = 2;           // DESIGN.md's definitions these numbers follow
+    int metricsVersion = kMetricsVersion;
     double acnePercent = 0.0;         // acne / lit * 100
     double acneSeverity = 0.0;        // mean 1-S over acne pixels (0..1)
     double leakPercent = 0.0;         // leak / shadowed * 100

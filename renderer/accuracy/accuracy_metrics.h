@@ -15,7 +15,6 @@
 
 namespace shadowlab {
 
-inline constexpr int kMetricsVersion = 2;
 inline constexpr float kVisibleStep = 1.0f / 255.0f;  // e: one 8-bit step
 
 // How far a filter reads from the lookup position, in texels: point 0, hardware 2x2 1 (bilinear neighbours),
