@@ -320,7 +320,6 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
         if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
             ++report.counts.shadowedNearEdge;
     }
-    report.metricsVersion = kMetricsVersion;
     report.acnePercent = metrics.acnePercent;
     report.acneSeverity = metrics.acneSeverity;
     report.leakPercent = metrics.leakPercent;

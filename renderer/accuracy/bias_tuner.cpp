@@ -120,10 +120,12 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         // The first candidate builds the reference (the long part); the rest share what is left of the bar.
         if (progress) {
             const std::size_t done = result.path.size();
+            // What is left of the bar is shared by the steps still planned, so it only moves forward when the
+            // cull-mode search adds steps.
             plannedSteps = std::max(plannedSteps, int(done) + 1);
-            progress->base =
-                done == 0 ? 0.0f : kFirstShare + (1.0f - kFirstShare) * float(done - 1) / float(plannedSteps);
-            progress->span = done == 0 ? kFirstShare : (1.0f - kFirstShare) / float(plannedSteps);
+            progress->base = done == 0 ? 0.0f : progress->base + progress->span;
+            progress->span = done == 0 ? kFirstShare
+                                       : (1.0f - progress->base) / float(std::max(1, plannedSteps - int(done) + 1));
         }
         AccuracyReport report = meter.measure(scene, s, camera, width, height, progress);
         if (!report.ok) {

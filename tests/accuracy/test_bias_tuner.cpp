@@ -138,9 +138,16 @@ TEST_F(BiasTunerTest, RoofLeakIsACulledCasterAndTheTunerPicksACullModeThatFixesI
     EXPECT_EQ(culled.mainCause(), MismatchCause::CasterCulled);
     EXPECT_GT(culled.causePercentOfWrong(MismatchCause::CasterCulled), 90.0);
 
-    const TuneResult result = tuneBias(meter, scene, start, camera, 480, 270, 0.1);
+    AccuracyProgress progress;
+    float lastFraction = 0.0f;
+    bool fractionRises = true;
+    const TuneResult result = tuneBias(meter, scene, start, camera, 480, 270, 0.1, &progress, [&](const TuneStep&) {
+        fractionRises = fractionRises && progress.fraction > lastFraction && progress.fraction <= 1.0f;
+        lastFraction = progress.fraction;
+    });
     ASSERT_TRUE(result.ok) << result.error;
     ASSERT_TRUE(result.reachedLimit);
+    EXPECT_TRUE(fractionRises) << "the progress bar only moves forward while the cull-mode search adds steps";
     EXPECT_NE(result.best.shadow.cullMode, CullMode::Back);
     const AccuracyReport fixed = meter.measure(scene, result.best, camera, 480, 270);
     ASSERT_TRUE(fixed.ok) << fixed.error;
