@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     editCmd->add_option("--screenshot-dir", edit.screenshotDir, "where F12 writes screenshots")->capture_default_str();
 
     cli::MeasureOptions measure;
-    CLI::App* measureCmd = app.add_subcommand("measure", "Measure acne, leak and edge error against the exact reference");
+    CLI::App* measureCmd = app.add_subcommand("measure", "Measure acne, leak, wrong pixels, edge error and their causes against the exact reference");
     measureCmd->add_option("--scene", measure.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
     measureCmd->add_option("--preset", measure.preset, "a preset JSON path, or the name of a shipped preset");
     measureCmd->add_option("--set", measure.overrides, "override a setting: key=value (repeatable)");
@@ -61,9 +61,11 @@ int main(int argc, char** argv) {
     measureCmd->add_option("--height", measure.height, "view height")->capture_default_str();
     measureCmd->add_option("--json", measure.json, "write the numbers, counts and cost as JSON");
     measureCmd->add_option("--overlay", measure.overlay, "write the error overlay as PNG");
+    measureCmd->add_option("--cause-overlay", measure.causeOverlay,
+                           "write the overlay coloured by cause (why each mismatched pixel is wrong) as PNG");
 
     cli::TuneOptions tune;
-    CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest DepthBias / slope / normal offset: least leak, acne <= limit");
+    CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");
     tuneCmd->add_option("--scene", tune.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
     tuneCmd->add_option("--preset", tune.preset, "a preset JSON path, or the name of a shipped preset");
     tuneCmd->add_option("--set", tune.overrides, "override a setting: key=value (repeatable)");

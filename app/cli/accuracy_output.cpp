@@ -1,5 +1,6 @@
 #include "cli/accuracy_output.h"
 
+#include <cstdio>
 #include <iomanip>
 
 namespace shadowlab::cli {
@@ -7,22 +8,49 @@ namespace shadowlab::cli {
 void printAccuracy(std::ostream& out, const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
     out << std::fixed << std::setprecision(3);
-    out << "accuracy (" << r.width << "x" << r.height << ", k = " << std::setprecision(1) << r.kTexels
-        << " texels = filter radius + 1):\n"
-        << std::setprecision(3);
-    out << "  acne        " << std::setw(8) << r.acnePercent << " %   (" << c.acne << " of " << c.lit
-        << " truly lit pixels shadowed, farther than k from a true edge)\n";
-    out << "  leak        " << std::setw(8) << r.leakPercent << " %   (" << c.leak << " of " << c.shadowed
-        << " truly shadowed pixels lit, farther than k from a true edge)\n";
-    out << "  faint acne  " << std::setw(8) << r.faintAcnePercent << " %   (" << c.faintAcne
-        << " lit pixels darkened but S >= 0.5)\n";
-    out << "  edge error  " << std::setw(8) << r.edgeErrorP95Texels << " texels (95th percentile over "
-        << c.mismatched << " mismatched pixels; " << c.mismatchedWithinK << " of them within k)\n";
+    out << "accuracy, metrics version " << r.metricsVersion << " (" << r.width << "x" << r.height << ", k = "
+        << std::setprecision(1) << r.kTexels << " texels = filter radius + 1 = " << std::setprecision(3)
+        << r.kTexels * r.texelWorldSize << " world units; e = 1/255):\n";
+    out << "  acne         " << std::setw(8) << r.acnePercent << " %   (" << c.acne << " of " << c.lit
+        << " truly lit pixels visibly darkened, S < 1-e, farther than k from a true edge; severity: mean 1-S = "
+        << r.acneSeverity << ")\n";
+    out << "  leak         " << std::setw(8) << r.leakPercent << " %   (" << c.leak << " of " << c.shadowed
+        << " truly shadowed pixels visibly lit, S > e, farther than k from a true edge)\n";
+    out << "  wrong pixels " << std::setw(8) << r.wrongPercent << " %   (" << c.wrong << " of " << c.measured
+        << " measured pixels with |S-V| >= 0.5, edges included; " << c.wrongBeyondK << " beyond k)\n";
+    out << "  mean error   " << std::setw(8) << std::setprecision(4) << r.meanError << "     (mean |S-V| over measured "
+        << "pixels, edges included)\n" << std::setprecision(3);
+    out << "  edge error   " << std::setw(8) << r.edgeErrorP95Texels << " texels = " << r.edgeErrorP95World
+        << " world units = " << std::setprecision(1) << r.edgeErrorP95ScreenPixels << " screen pixels"
+        << std::setprecision(3) << " (95th percentile over " << c.mismatched << " mismatched pixels; "
+        << c.mismatchedWithinK << " of them within k)\n";
+    if (!r.coarseMapWarning.empty()) out << "  WARNING: " << r.coarseMapWarning << "\n";
+    out << "  causes of the " << c.mismatched << " mismatched pixels (" << c.wrong << " wrong):\n";
+    for (MismatchCause cause : allCauses()) {
+        const std::size_t n = c.causePixels[std::size_t(cause)];
+        if (n == 0) continue;
+        const CauseInfo& info = causeInfo(cause);
+        out << "    " << std::left << std::setw(42) << info.name << std::right << std::setw(8) << n << " pixels, "
+            << std::setw(8) << c.causeWrong[std::size_t(cause)] << " wrong (" << std::setprecision(1)
+            << std::setw(5) << r.causePercentOfWrong(cause) << " % of wrong)  -> " << info.remedy << "\n"
+            << std::setprecision(3);
+    }
     out << "  pixels " << c.pixels << ": measured " << c.measured << ", background " << c.background
         << ", facing away " << c.facingAway << ", outside the cone " << c.outsideCone << ", non-finite "
         << c.nonFinite << ", coverage mismatch " << c.coverageMismatch << ", true boundary " << c.boundaryPixels
         << "\n";
     out.unsetf(std::ios::floatfield);
+}
+
+std::string legendText(OverlayKind kind) {
+    std::string text;
+    for (const LegendEntry& e : kind == OverlayKind::Error ? errorLegend() : causeLegend()) {
+        char entry[120];
+        std::snprintf(entry, sizeof entry, "%s#%02x%02x%02x = %s", text.empty() ? "" : ", ", e.red, e.green, e.blue,
+                      e.name);
+        text += entry;
+    }
+    return text;
 }
 
 void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
@@ -53,20 +81,34 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
 nlohmann::json accuracyToJson(const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
     const AccuracyCost& k = r.cost;
+    nlohmann::json causes = nlohmann::json::object();
+    for (MismatchCause cause : allCauses())
+        causes[causeInfo(cause).key] = {{"pixels", c.causePixels[std::size_t(cause)]},
+                                        {"wrong", c.causeWrong[std::size_t(cause)]},
+                                        {"percentOfWrong", r.causePercentOfWrong(cause)}};
     return {
+        {"metricsVersion", r.metricsVersion},
         {"width", r.width},
         {"height", r.height},
         {"acnePercent", r.acnePercent},
+        {"acneSeverity", r.acneSeverity},
         {"leakPercent", r.leakPercent},
-        {"faintAcnePercent", r.faintAcnePercent},
+        {"wrongPixelsPercent", r.wrongPercent},
+        {"meanError", r.meanError},
         {"edgeErrorP95Texels", r.edgeErrorP95Texels},
+        {"edgeErrorP95World", r.edgeErrorP95World},
+        {"edgeErrorP95ScreenPixels", r.edgeErrorP95ScreenPixels},
+        {"coarseMap", !r.coarseMapWarning.empty()},
+        {"coarseMapWarning", r.coarseMapWarning},
+        {"causes", causes},
         {"kTexels", r.kTexels},
         {"texelWorldSize", r.texelWorldSize},
         {"counts",
          {{"pixels", c.pixels}, {"background", c.background}, {"facingAway", c.facingAway},
           {"outsideCone", c.outsideCone}, {"nonFinite", c.nonFinite}, {"measured", c.measured}, {"lit", c.lit},
-          {"shadowed", c.shadowed}, {"acne", c.acne}, {"faintAcne", c.faintAcne}, {"leak", c.leak},
-          {"mismatched", c.mismatched}, {"mismatchedWithinK", c.mismatchedWithinK},
+          {"shadowed", c.shadowed}, {"acne", c.acne}, {"leak", c.leak}, {"wrong", c.wrong},
+          {"wrongBeyondK", c.wrongBeyondK}, {"mismatched", c.mismatched}, {"mismatchedWithinK", c.mismatchedWithinK},
+          {"shadowedNearEdge", c.shadowedNearEdge},
           {"boundaryPixels", c.boundaryPixels}, {"coverageMismatch", c.coverageMismatch}}},
         {"reference",
          {{"bvhReused", k.bvhReused}, {"referenceReused", k.referenceReused}, {"bvhBuildMs", k.bvhBuildMs},

@@ -17,7 +17,8 @@ int runMeasure(const MeasureOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"}})
+    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"},
+                                       std::pair{options.causeOverlay, "--cause-overlay"}})
         if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
@@ -41,14 +42,14 @@ int runMeasure(const MeasureOptions& options) {
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }
-        if (!options.overlay.empty()) {
-            if (std::string error = writePng(options.overlay, report.width, report.height, 4,
-                                             report.overlayRgba.data(), false);
-                !error.empty())
+        for (const auto& [path, kind] : {std::pair{options.overlay, OverlayKind::Error},
+                                         std::pair{options.causeOverlay, OverlayKind::Cause}}) {
+            if (path.empty()) continue;
+            const std::vector<std::uint8_t>& rgba =
+                kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba;
+            if (std::string error = writePng(path, report.width, report.height, 4, rgba.data(), false); !error.empty())
                 return fail(error);
-            std::cout << "wrote " << options.overlay
-                      << " (red = acne, blue = leak, darker = within k of a true edge, orange = faint acne, "
-                         "yellow = true boundary)\n";
+            std::cout << "wrote " << path << " (" << legendText(kind) << "; the rest dimmed)\n";
         }
     } catch (const std::exception& e) {
         return fail(e.what());

@@ -1,6 +1,7 @@
 #pragma once
 // `shadowlab measure`: how wrong one view's shadows are against the exact reference (acne %, leak %, edge error,
-// the counts behind them, what the reference cost), optionally as JSON and as an overlay PNG.
+// the counts behind them, the cause of every mismatched pixel, what the reference cost), optionally as JSON and as
+// overlay PNGs (by error, by cause).
 #include <string>
 #include <vector>
 
@@ -13,7 +14,8 @@ struct MeasureOptions {
     int width = 1280;
     int height = 720;
     std::string json;     // optional
-    std::string overlay;  // optional PNG
+    std::string overlay;       // optional PNG: red acne, blue leak, yellow true boundary
+    std::string causeOverlay;  // optional PNG: every mismatched pixel in its cause's colour
 };
 
 // Exit code 0 unless it failed (bad input, no GL, a file that cannot be written).

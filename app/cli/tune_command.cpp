@@ -18,9 +18,11 @@ namespace {
 
 std::string stepLine(const TuneStep& s) {
     char line[256];
-    std::snprintf(line, sizeof line, "%3d  %-28s %12.6g %7.3g %7.3g  %8.3f %8.3f %8.3f %8zu%s", s.index,
+    std::snprintf(line, sizeof line, "%3d  %-34s %12.6g %7.3g %7.3g %-5s %8.3f %8.3f %8.3f %8zu %7.2f%s", s.index,
                   s.phase.c_str(), double(s.depthBias), double(s.slopeScaledDepthBias), double(s.normalOffset),
-                  s.acnePercent, s.leakPercent, s.faintAcnePercent, s.mismatched, s.bestSoFar ? "  <- best" : "");
+                  cullModeName(s.cullMode).c_str(),
+                  s.acnePercent, s.leakPercent, s.wrongPercent, s.wrongBeyondK, s.edgeErrorTexels,
+                  s.bestSoFar ? "  <- best" : "");
     return line;
 }
 
@@ -43,54 +45,70 @@ int runTune(const TuneOptions& options) {
         AccuracyMeter meter;
         const Camera camera = cameraFor(settings->camera, scene);
         std::cout << "tuning bias for " << scene.name << " at " << options.width << "x" << options.height
-                  << ": least leak with acne <= " << options.maxAcnePercent << " %\n";
-        std::cout << "  #  phase                           DepthBias   slope  normal    acne %   leak %  faint %"
-                     "  mismatch\n";
+                  << ": acne <= " << options.maxAcnePercent
+                  << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
+        std::cout << "  #  phase                                 DepthBias   slope  normal cull    acne %   leak %"
+                     "  wrong %  wrong>k edge tx\n";
         const TuneResult result =
             tuneBias(meter, scene, *settings, camera, options.width, options.height, options.maxAcnePercent, nullptr,
                      [&](const TuneStep& step) { std::cout << stepLine(step) << std::endl; });
         if (!result.ok) return fail(result.error);
 
-        const ShadowMapSettings& best = result.best.shadow;
-        std::cout << "\n" << (result.reachedLimit ? "result" : "NO setting reached acne <= " +
-                                                                   std::to_string(options.maxAcnePercent) +
-                                                                   " %; least acne found")
-                  << ": DepthBias " << best.depthBias << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias
-                  << ", normal offset " << best.normalOffset << " texels (" << result.path.size()
-                  << " candidates in " << result.seconds << " s)\n";
+        const ShadowMapSettings& best = result.closest.shadow;
+        const std::string cull = cullModeName(best.cullMode);
+        if (result.reachedLimit) {
+            std::cout << "\nresult: DepthBias " << best.depthBias << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias
+                      << ", normal offset " << best.normalOffset << " texels, cullMode " << cull << " ("
+                      << result.path.size() << " candidates in " << result.seconds << " s)\n";
+        } else {
+            const CauseInfo& blocking = causeInfo(result.blockingCause);
+            std::cout << "\nNO setting reached acne <= " << options.maxAcnePercent << " %: stopped by "
+                      << blocking.name << " (" << blocking.remedy << "). Least acne: "
+                      << result.report.acnePercent << " % at DepthBias " << best.depthBias << ", SlopeScaledDepthBias "
+                      << best.slopeScaledDepthBias << ", normal offset " << best.normalOffset << " texels, cullMode "
+                      << cull << " (" << result.path.size() << " candidates in " << result.seconds
+                      << " s). No preset written.\n";
+        }
         printAccuracy(std::cout, result.report);
         AccuracyReport first;
         first.cost = result.referenceCost;
         std::cout << "the first candidate built the reference; later ones cost one tool frame each.\n";
         printAccuracyCost(std::cout, first);
 
-        const std::string description =
-            "Suggested by `shadowlab tune` for " + options.scene + " at " + std::to_string(options.width) + "x" +
-            std::to_string(options.height) + ": acne " + std::to_string(result.report.acnePercent) + " %, leak " +
-            std::to_string(result.report.leakPercent) + " %" +
-            (result.reachedLimit ? "" : " (no setting reached the acne limit)") + ".";
-        if (std::string error = savePresetFile(options.out, result.best, "tuned", description); !error.empty())
-            return fail(error);
-        std::cout << "wrote " << options.out << "\n";
+        if (result.reachedLimit) {
+            const std::string description =
+                "Suggested by `shadowlab tune` for " + options.scene + " at " + std::to_string(options.width) + "x" +
+                std::to_string(options.height) + ": acne " + std::to_string(result.report.acnePercent) +
+                " %, leak " + std::to_string(result.report.leakPercent) + " %, wrong pixels " +
+                std::to_string(result.report.wrongPercent) + " % (metrics version 2).";
+            if (std::string error = savePresetFile(options.out, result.best, "tuned", description); !error.empty())
+                return fail(error);
+            std::cout << "wrote " << options.out << "\n";
+        }
 
         if (!options.json.empty()) {
             nlohmann::json path = nlohmann::json::array();
             for (const TuneStep& s : result.path)
                 path.push_back({{"index", s.index}, {"phase", s.phase}, {"depthBias", s.depthBias},
                                 {"slopeScaledDepthBias", s.slopeScaledDepthBias}, {"normalOffset", s.normalOffset},
+                                {"cullMode", cullModeName(s.cullMode)},
                                 {"acnePercent", s.acnePercent}, {"leakPercent", s.leakPercent},
-                                {"faintAcnePercent", s.faintAcnePercent}, {"mismatched", s.mismatched},
+                                {"wrongPixelsPercent", s.wrongPercent}, {"wrongBeyondK", s.wrongBeyondK},
+                                {"meanError", s.meanError}, {"edgeErrorP95Texels", s.edgeErrorTexels},
                                 {"withinLimit", s.withinLimit}, {"bestSoFar", s.bestSoFar}});
             const nlohmann::json json = {{"scene", options.scene},
                                          {"reachedLimit", result.reachedLimit},
+                                         {"blockingCause", causeInfo(result.blockingCause).key},
                                          {"seconds", result.seconds},
-                                         {"best", presetToJson(result.best)},
+                                         {"best", result.reachedLimit ? presetToJson(result.best) : nullptr},
+                                         {"closest", presetToJson(result.closest)},
                                          {"report", accuracyToJson(result.report)},
                                          {"path", path}};
             if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }
+        if (!result.reachedLimit) return kNoSettingReachedLimit;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

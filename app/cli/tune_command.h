@@ -1,6 +1,8 @@
 #pragma once
-// `shadowlab tune`: searches DepthBias, SlopeScaledDepthBias and normal offset for the least leak with acne at most
-// --max-acne percent, prints progress, the path and the result, and writes the result as a preset.
+// `shadowlab tune`: searches DepthBias, SlopeScaledDepthBias, normal offset (and the cull mode when culled casters
+// cause wrong pixels) for acne at most --max-acne percent with the fewest wrong pixels beyond k, prints the path and
+// the result, and writes the result as a preset. When no setting reaches the limit it names the cause that stops it
+// and writes no preset.
 #include <string>
 #include <vector>
 
@@ -17,7 +19,9 @@ struct TuneOptions {
     std::string json;  // optional: the path and the result as JSON
 };
 
-// Exit code 0 unless it failed; reaching no setting within the acne limit is reported, not a failure.
+// Exit code: 0 with a result, kNoSettingReachedLimit when no setting reached the limit (no preset written), other
+// non-zero codes for bad input or failures.
+inline constexpr int kNoSettingReachedLimit = 3;
 int runTune(const TuneOptions& options);
 
 }  // namespace shadowlab::cli

@@ -3,6 +3,7 @@
 // measured for (so the panel can say when it is stale), the running job's progress, the bias search's path and
 // result. The editor fills it from its AccuracyWorker each frame; the panel reads it and asks through EditorActions.
 #include "accuracy/accuracy_meter.h"
+#include "accuracy/accuracy_overlay.h"
 #include "accuracy/bias_tuner.h"
 #include "frame/camera.h"
 #include "gl/gl_objects.h"
@@ -31,6 +32,7 @@ std::string staleReason(const AccuracyViewKey& measured, const AccuracyViewKey& 
 struct AccuracyState {
     bool autoMeasure = false;   // measure after edits, once the view has been still for kAutoDelaySeconds
     bool showOverlay = false;   // the viewport shows the overlay (an editor view mode, never saved in presets)
+    OverlayKind overlayKind = OverlayKind::Error;  // coloured by error (acne / leak) or by cause
     static constexpr double kAutoDelaySeconds = 0.5;
 
     // The running job (if any).
@@ -57,6 +59,7 @@ struct AccuracyState {
     // The overlay picture on the GPU (uploaded once per report).
     gl::Texture overlayTexture;
     int overlayWidth = 0, overlayHeight = 0;
+    OverlayKind uploadedKind = OverlayKind::Error;
 };
 
 }  // namespace shadowlab::editor

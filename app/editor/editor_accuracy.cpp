@@ -102,28 +102,43 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
     if (result.tune) {
         const TuneResult& tune = *result.tune;
         const ShadowMapSettings& best = tune.best.shadow;
-        // The result goes into the edited settings through the key table, like a slider would (the preset shows
-        // its unsaved marker). The numbers then describe exactly these settings.
-        const bool applied = state_.edit("shadow.depthBias", best.depthBias) &&
-                             state_.edit("shadow.slopeScaledDepthBias", best.slopeScaledDepthBias) &&
-                             state_.edit("shadow.normalOffset", best.normalOffset);
-        if (key) key->settings = tune.best;
-        char text[256];
-        std::snprintf(text, sizeof text,
-                      "%s: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels (acne %.3f %%, leak %.3f %%, "
-                      "%zu candidates, %.1f s)%s",
-                      tune.reachedLimit ? "suggested bias" : "NO setting reached the acne limit; least acne",
-                      double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
-                      tune.report.acnePercent, tune.report.leakPercent, tune.path.size(), tune.seconds,
-                      applied ? ", applied" : ", NOT applied");
+        // A result goes into the edited settings through the key table, like a slider would (the preset shows
+        // its unsaved marker); the numbers then describe exactly these settings. No result within the acne limit:
+        // nothing is applied, and the settings keep what the user had.
+        const ShadowMapSettings& closest = tune.closest.shadow;
+        bool applied = false;
+        if (tune.reachedLimit) {
+            applied = state_.edit("shadow.depthBias", best.depthBias) &&
+                      state_.edit("shadow.slopeScaledDepthBias", best.slopeScaledDepthBias) &&
+                      state_.edit("shadow.normalOffset", best.normalOffset) &&
+                      state_.edit("shadow.cullMode", cullModeName(best.cullMode));
+            if (key) key->settings = tune.best;
+        } else if (key) {
+            key->settings = tune.closest;  // the report describes the closest candidate, not the view: stale
+        }
+        char text[320];
+        if (tune.reachedLimit)
+            std::snprintf(text, sizeof text,
+                          "suggested: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s (acne "
+                          "%.3f %%, wrong pixels %.3f %%, %zu candidates, %.1f s)%s",
+                          double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
+                          cullModeName(best.cullMode).c_str(), tune.report.acnePercent, tune.report.wrongPercent,
+                          tune.path.size(), tune.seconds, applied ? ", applied" : ", NOT applied");
+        else
+            std::snprintf(text, sizeof text,
+                          "NO setting reached the acne limit (stopped by %s; least acne %.3f %% at DepthBias %g, slope "
+                          "%g, normal offset %g); nothing applied",
+                          causeInfo(tune.blockingCause).name, tune.report.acnePercent, double(closest.depthBias),
+                          double(closest.slopeScaledDepthBias), double(closest.normalOffset));
         state_.say(text, !tune.reachedLimit || !applied);
         a.tune = std::move(result.tune);
     }
     if (!result.tune) {
-        char text[160];
-        std::snprintf(text, sizeof text, "accuracy: acne %.3f %%, leak %.3f %%, faint acne %.3f %% (%dx%d, %.2f s)",
-                      result.report.acnePercent, result.report.leakPercent, result.report.faintAcnePercent,
-                      result.report.width, result.report.height, result.seconds);
+        char text[220];
+        std::snprintf(text, sizeof text,
+                      "accuracy: acne %.3f %%, leak %.3f %%, wrong pixels %.3f %%, mean error %.4f (%dx%d, %.2f s)",
+                      result.report.acnePercent, result.report.leakPercent, result.report.wrongPercent,
+                      result.report.meanError, result.report.width, result.report.height, result.seconds);
         state_.say(text);
     }
     a.report = std::move(result.report);
@@ -149,7 +164,10 @@ void Editor::uploadAccuracyOverlay() {
     }
     // Row 0 of the picture is the view's top; it lands in the texture's row 0, which the UI maps to v = 0 (top).
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTextureSubImage2D(a.overlayTexture.id(), 0, 0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, r.overlayRgba.data());
+    const std::vector<std::uint8_t>& rgba = a.overlayKind == OverlayKind::Cause ? r.causeOverlayRgba : r.overlayRgba;
+    if (rgba.size() != r.overlayRgba.size()) return;
+    glTextureSubImage2D(a.overlayTexture.id(), 0, 0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    a.uploadedKind = a.overlayKind;
 }
 
 double Editor::idleWaitSeconds() const {

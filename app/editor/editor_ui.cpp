@@ -168,10 +168,12 @@ void Editor::viewModeCombo() {
     // lit / shadow / light-depth are the renderer's view setting (saved in presets); the accuracy overlay is the
     // editor's own view of the newest measurement and never a setting.
     static constexpr const char* kOverlay = "accuracy overlay";
+    static constexpr const char* kCauseOverlay = "accuracy overlay by cause";
     AccuracyState& a = state_.accuracy;
     const SettingsField* field = findSettingsField("view");
     const std::string current = field->get(state_.settings).get<std::string>();
-    if (ImGui::BeginCombo("##view", a.showOverlay ? kOverlay : current.c_str())) {
+    const char* shown = !a.showOverlay ? current.c_str() : a.overlayKind == OverlayKind::Cause ? kCauseOverlay : kOverlay;
+    if (ImGui::BeginCombo("##view", shown)) {
         for (const std::string& choice : field->choices) {
             const bool selected = !a.showOverlay && choice == current;
             if (ImGui::Selectable(choice.c_str(), selected)) {
@@ -180,15 +182,21 @@ void Editor::viewModeCombo() {
             }
             state_.controls.recordLastItem("view=" + choice);
         }
-        if (ImGui::Selectable(kOverlay, a.showOverlay)) a.showOverlay = true;
-        state_.controls.recordLastItem(std::string("view=") + kOverlay);
+        for (const auto& [label, kind] : {std::pair{kOverlay, OverlayKind::Error}, std::pair{kCauseOverlay, OverlayKind::Cause}}) {
+            if (ImGui::Selectable(label, a.showOverlay && a.overlayKind == kind)) {
+                a.showOverlay = true;
+                a.overlayKind = kind;
+                if (a.report) uploadAccuracyOverlay();
+            }
+            state_.controls.recordLastItem(std::string("view=") + label);
+        }
         ImGui::EndCombo();
     }
     state_.controls.recordLastItem("view");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("What the viewport shows: the lit scene, the shadow factor, the light's depth, or the "
-                          "accuracy overlay of the newest measurement (red acne, blue leak, orange faint acne, "
-                          "yellow true boundary)");
+                          "accuracy overlay of the newest measurement (red acne, blue leak, yellow true boundary; or "
+                          "each wrong pixel coloured by its cause)");
     showFieldError(state_, "view");
 }
 
@@ -211,23 +219,30 @@ void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
     }
     if (a.overlayTexture) {
         // The legend, bottom left.
-        const struct { const char* text; ImU32 colour; } keys[] = {{"acne", IM_COL32(235, 40, 40, 255)},
-                                                                    {"leak", IM_COL32(50, 110, 255, 255)},
-                                                                    {"faint acne", IM_COL32(210, 130, 60, 255)},
-                                                                    {"true boundary", IM_COL32(255, 220, 0, 255)}};
-        float x = imagePos.x + pad;
+        // The legend, bottom left, wrapping onto more lines when the view is narrow.
+        const std::vector<LegendEntry>& keys = a.uploadedKind == OverlayKind::Cause ? causeLegend() : errorLegend();
         const float h = ImGui::GetTextLineHeight();
-        const float y = imagePos.y + imageSize.y - h - 2 * pad;
-        float width = 0.0f;
-        for (const auto& k : keys) width += h + 4.0f + ImGui::CalcTextSize(k.text).x + 12.0f;
-        draw->AddRectFilled(ImVec2(x, y - pad * 0.5f), ImVec2(x + width + pad, y + h + pad * 0.5f),
+        const float maxX = imagePos.x + imageSize.x - pad;
+        std::vector<std::pair<ImVec2, const LegendEntry*>> placed;
+        float x = imagePos.x + 2 * pad, y = 0.0f, right = x;
+        for (const LegendEntry& k : keys) {
+            const float w = h + ImGui::CalcTextSize(k.name).x + 16.0f;
+            if (x + w > maxX && !placed.empty()) {
+                x = imagePos.x + 2 * pad;
+                y += h + 2.0f;
+            }
+            placed.push_back({ImVec2(x, y), &k});
+            x += w;
+            right = std::max(right, x);
+        }
+        const float top = imagePos.y + imageSize.y - pad - (y + h) - pad;
+        draw->AddRectFilled(ImVec2(imagePos.x + pad, top - pad * 0.5f), ImVec2(right + pad, top + y + h + pad * 0.5f),
                             IM_COL32(0, 0, 0, 170), 3.0f);
-        x += pad;
-        for (const auto& k : keys) {
-            draw->AddRectFilled(ImVec2(x, y + 2), ImVec2(x + h - 4, y + h - 2), k.colour);
-            x += h;
-            draw->AddText(ImVec2(x, y), IM_COL32(230, 230, 230, 255), k.text);
-            x += ImGui::CalcTextSize(k.text).x + 12.0f + 4.0f;
+        for (const auto& [at, k] : placed) {
+            const ImVec2 p(at.x, top + at.y);
+            draw->AddRectFilled(ImVec2(p.x, p.y + 2), ImVec2(p.x + h - 4, p.y + h - 2),
+                                IM_COL32(k->red, k->green, k->blue, 255));
+            draw->AddText(ImVec2(p.x + h, p.y), IM_COL32(230, 230, 230, 255), k->name);
         }
     }
 }

@@ -6,11 +6,16 @@
 #include "accuracy/shadow_boundary.h"
 #include "frame/renderer.h"
 #include "reference/embree_scene.h"
+#include "reference/parallel_rows.h"
 #include "reference/visibility.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace shadowlab {
@@ -43,7 +48,41 @@ void setStage(AccuracyProgress* progress, float fraction, const char* stage) {
 
 bool cancelled(const AccuracyProgress* progress) { return progress && progress->cancel.load(); }
 
+// The coarse-map warning: when most shadowed pixels lie within k texels of a true edge, acne and leak (which skip
+// them) read near 0 whatever the map does.
+std::string coarseMapWarning(const AccuracyReport& r) {
+    const AccuracyCounts& c = r.counts;
+    if (c.shadowed == 0 || double(c.shadowedNearEdge) <= kCoarseMapShare * double(c.shadowed)) return "";
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "coarse map: %.0f %% of the shadowed pixels lie within k = %.1f texels (%.3g world units) of a true "
+                  "edge, so acne and leak cannot judge this map; read wrong pixels (%.2f %%) and mean error (%.4f)",
+                  100.0 * double(c.shadowedNearEdge) / double(c.shadowed), r.kTexels, r.kTexels * r.texelWorldSize,
+                  r.wrongPercent, r.meanError);
+    return text;
+}
+
 }  // namespace
+
+double AccuracyReport::causePercentOfWrong(MismatchCause cause) const {
+    return counts.wrong ? 100.0 * double(counts.causeWrong[std::size_t(cause)]) / double(counts.wrong) : 0.0;
+}
+
+MismatchCause AccuracyReport::mainCause() const {
+    // Beyond k first: the blur next to true edges is in every picture and rarely what to fix.
+    MismatchCause best = MismatchCause::None;
+    std::size_t most = 0;
+    for (MismatchCause cause : allCauses()) {
+        const std::size_t n = counts.causePixels[std::size_t(cause)];
+        if (cause != MismatchCause::NearEdge && n > most) {
+            most = n;
+            best = cause;
+        }
+    }
+    if (best == MismatchCause::None && counts.causePixels[std::size_t(MismatchCause::NearEdge)] > 0)
+        best = MismatchCause::NearEdge;
+    return best;
+}
 
 struct AccuracyMeter::Impl {
     Renderer renderer;
@@ -222,30 +261,80 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     const double cap = double(stats.light.resolution);
     const double k = report.kTexels;
     ShadowBoundary& boundary = *m.boundary;
-    // The pixels whose distance the metrics need (darkened lit ones, brightened shadowed ones), on all cores first.
-    std::vector<std::size_t> needDistance;
+    // The pixels whose distance and cause the metrics need (the visibly wrong ones), on all cores first.
+    std::vector<std::size_t> mismatched;
     for (std::size_t i = 0; i < count; ++i) {
         const PixelClass c = m.visibility.classes[i];
-        if (!isScored(c) || !toolCovered[i]) continue;
-        if (isLit(c) ? shadowFactor[i] < 1.0f : shadowFactor[i] > 0.5f) needDistance.push_back(i);
+        if (!isScored(c) || !toolCovered[i] || !std::isfinite(shadowFactor[i])) continue;
+        if (visiblyWrong(isLit(c), shadowFactor[i])) mismatched.push_back(i);
     }
     const std::size_t probedBefore = boundary.probedPixels();
     const auto probeStart = Clock::now();
-    boundary.prepare(needDistance, k);
+    boundary.prepare(mismatched, k);
     report.cost.probeMs = msSince(probeStart);
     report.cost.probedPixels = boundary.probedPixels() - probedBefore;
-    MetricsResult metrics = computeMetrics(m.visibility.classes, shadowFactor, toolCovered, k,
-                                           [&](std::size_t i) { return std::min(boundary.distance(i, k), cap); });
+    auto distance = [&](std::size_t i) { return std::min(boundary.distance(i, k), cap); };
+
+    // A cause for each of them (shadow rays toward the light under the shadow pass's rules), on all cores.
+    CauseContext causeContext;
+    causeContext.bvh = m.bvh.get();
+    causeContext.light = light;
+    causeContext.lightSpace = stats.light;
+    causeContext.cullMode = settings.shadow.cullMode;
+    causeContext.depthClamp = settings.projection.depthClamp;
+    causeContext.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
+    std::vector<MismatchCause> causes(count, MismatchCause::None);
+    const int chunks = int((mismatched.size() + 63) / 64);
+    parallelRows(chunks, [&](int chunk) {
+        const std::size_t end = std::min(mismatched.size(), std::size_t(chunk + 1) * 64);
+        for (std::size_t j = std::size_t(chunk) * 64; j < end; ++j) {
+            const std::size_t i = mismatched[j];
+            causes[i] = decideCause(causeContext, m.samples.point[i], m.samples.normal[i], m.visibility.classes[i],
+                                    distance(i), k);
+        }
+    });
+
+    // Per-pixel unit conversions for the edge error: texel size at p, and a main-view pixel's size at p's depth.
+    const glm::dvec3 eye = camera.position - m.origin;
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+    const double pixelPerDepth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) / double(height);
+    const LightSpace& lightSpace = stats.light;
+    MetricsInput input;
+    input.classes = &m.visibility.classes;
+    input.shadowFactor = &shadowFactor;
+    input.toolCovered = &toolCovered;
+    input.k = k;
+    input.distance = distance;
+    input.cause = [&](std::size_t i, double) { return causes[i]; };
+    input.worldPerTexel = [&](std::size_t i) {
+        return lightSpace.perspective
+                   ? lightSpace.texelSizeAt(glm::dot(m.samples.point[i] - lightSpace.position, lightSpace.direction))
+                   : lightSpace.texelWorldSize;
+    };
+    input.worldPerPixel = [&](std::size_t i) { return glm::dot(m.samples.point[i] - eye, forward) * pixelPerDepth; };
+    const MetricsResult metrics = computeMetrics(input);
     report.counts = metrics.counts;
-    for (std::size_t i = 0; i < count; ++i) report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
+        const PixelClass c = m.visibility.classes[i];
+        if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
+            ++report.counts.shadowedNearEdge;
+    }
     report.acnePercent = metrics.acnePercent;
+    report.acneSeverity = metrics.acneSeverity;
     report.leakPercent = metrics.leakPercent;
-    report.faintAcnePercent = metrics.faintAcnePercent;
+    report.wrongPercent = metrics.wrongPercent;
+    report.meanError = metrics.meanError;
     report.edgeErrorP95Texels = metrics.edgeErrorP95Texels;
+    report.edgeErrorP95World = metrics.edgeErrorP95World;
+    report.edgeErrorP95ScreenPixels = metrics.edgeErrorP95ScreenPixels;
+    report.coarseMapWarning = coarseMapWarning(report);
     report.width = width;
     report.height = height;
-    report.overlayRgba = makeOverlay(width, height, m.visibility.classes, shadowFactor, m.visibility.lambert,
-                                     metrics.marks, boundary, settings.light.ambient);
+    for (OverlayKind kind : {OverlayKind::Error, OverlayKind::Cause})
+        (kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba) =
+            makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
+                        boundary, settings.light.ambient);
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");

@@ -4,10 +4,12 @@
 // a shadow ray (Embree), and the tool's shadow factor S. The reference depends only on scene, light, camera and size,
 // so it is cached: re-measuring after a bias / filter / resolution change costs one frame of the tool.
 // Knows no window, UI or CLI. Needs a current GL 4.5 context on the calling thread (one meter per context).
+#include "accuracy/mismatch_cause.h"
 #include "frame/camera.h"
 #include "scene/scene.h"
 #include "settings/settings.h"
 
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -40,23 +42,30 @@ private:
     std::string stage_;
 };
 
-// The counts behind the percentages (DESIGN.md's sets), all in main-view pixels.
+// Which of DESIGN.md's definitions the numbers follow (reports and JSON carry it).
+inline constexpr int kMetricsVersion = 2;
+
+// The counts behind the percentages (DESIGN.md's sets, version 2; e = 1/255), all in main-view pixels.
 struct AccuracyCounts {
     std::size_t pixels = 0;            // width * height
     std::size_t background = 0;        // no surface under the pixel
     std::size_t facingAway = 0;        // geometric normal faces away from the light: unlit by the main pass, not scored
     std::size_t outsideCone = 0;       // spot light: outside the cone (V = 0, S = 0 expected; scored as shadowed)
     std::size_t nonFinite = 0;         // a non-finite point, normal or S (must stay 0)
-    std::size_t measured = 0;          // pixels scored for acne / leak
+    std::size_t measured = 0;          // pixels scored
     std::size_t lit = 0;               // measured with V = 1
     std::size_t shadowed = 0;          // measured with V = 0
-    std::size_t acne = 0;              // V = 1, S < 0.5, dist > k
-    std::size_t faintAcne = 0;         // V = 1, 0.5 <= S < 1, dist > k (beyond DESIGN.md: visible moiré below acne)
-    std::size_t leak = 0;              // V = 0, S > 0.5, dist > k
-    std::size_t mismatched = 0;        // (V = 1, S < 0.5) or (V = 0, S > 0.5), at any distance
-    std::size_t mismatchedWithinK = 0; // mismatched, but within k texels of a true boundary (filter blur: not counted)
+    std::size_t acne = 0;              // V = 1, S < 1-e, dist > k
+    std::size_t leak = 0;              // V = 0, S > e, dist > k
+    std::size_t wrong = 0;             // |S - V| >= 0.5, at any distance
+    std::size_t wrongBeyondK = 0;      // wrong and farther than k from a true boundary
+    std::size_t mismatched = 0;        // visibly different: (V = 1, S < 1-e) or (V = 0, S > e), at any distance
+    std::size_t mismatchedWithinK = 0; // mismatched, but within k texels of a true boundary (filter blur: not acne/leak)
+    std::size_t shadowedNearEdge = 0;  // shadowed pixels within k of a visible true boundary (coarse-map check)
     std::size_t boundaryPixels = 0;    // pixels on the true shadow boundary (drawn as the thin line)
     std::size_t coverageMismatch = 0;  // G-buffer and tool frame disagree about whether a surface is there
+    std::array<std::size_t, kCauseCount> causePixels{};  // mismatched pixels per MismatchCause
+    std::array<std::size_t, kCauseCount> causeWrong{};   // wrong pixels per MismatchCause
 };
 
 // What the reference and the measurement cost (milliseconds unless named otherwise).
@@ -84,21 +93,36 @@ struct AccuracyReport {
     std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
     std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
 
+    int metricsVersion = kMetricsVersion;
     double acnePercent = 0.0;         // acne / lit * 100
+    double acneSeverity = 0.0;        // mean 1-S over acne pixels (0..1)
     double leakPercent = 0.0;         // leak / shadowed * 100
-    double faintAcnePercent = 0.0;    // faintAcne / lit * 100
+    double wrongPercent = 0.0;        // wrong / measured * 100
+    double meanError = 0.0;           // mean |S-V| over measured pixels (0..1)
     double edgeErrorP95Texels = 0.0;  // 95th percentile of dist over mismatched pixels (0 when none)
+    double edgeErrorP95World = 0.0;   // the same in world units (each pixel's texel size)
+    double edgeErrorP95ScreenPixels = 0.0;  // the same in main-view pixels (at each pixel's depth)
     double kTexels = 1.0;             // filter radius + 1 texel
     double texelWorldSize = 0.0;      // world size of one shadow-map texel (directional; spot: at the cone's centre)
+    // "" unless k covers most of the shadowed area (a coarse map): then acne and leak cannot judge (see the text).
+    std::string coarseMapWarning;
     AccuracyCounts counts;
     AccuracyCost cost;
 
-    // Red = acne, blue = leak (darker within k of a boundary), yellow = the true boundary, the rest dimmed
-    // (the tool's S x Lambert, grey). RGBA8, width * height * 4 bytes, row 0 = TOP of the view (PNG order).
+    // The error overlay (accuracy_overlay.h) and the same view coloured by cause. RGBA8, width * height * 4 bytes,
+    // row 0 = TOP of the view (PNG order).
     int width = 0;
     int height = 0;
     std::vector<std::uint8_t> overlayRgba;
+    std::vector<std::uint8_t> causeOverlayRgba;
+
+    double causePercentOfWrong(MismatchCause cause) const;  // share of wrong pixels this cause explains
+    // The cause of the most mismatched pixels beyond k (else "within k of a true edge"; None when nothing mismatches).
+    MismatchCause mainCause() const;
 };
+
+// The share of shadowed pixels within k of a true edge above which acne and leak cannot judge (coarse map).
+inline constexpr double kCoarseMapShare = 0.5;
 
 class AccuracyMeter {
 public:

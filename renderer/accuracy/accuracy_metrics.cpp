@@ -23,14 +23,18 @@ double percentile(std::vector<double>& values, double p) {
     return values[index];
 }
 
-MetricsResult computeMetrics(const std::vector<PixelClass>& classes, const std::vector<float>& shadowFactor,
-                             const std::vector<std::uint8_t>& toolCovered, double k,
-                             const std::function<double(std::size_t)>& distance) {
+MetricsResult computeMetrics(const MetricsInput& in) {
+    const std::vector<PixelClass>& classes = *in.classes;
+    const std::vector<float>& shadowFactor = *in.shadowFactor;
+    const std::vector<std::uint8_t>& toolCovered = *in.toolCovered;
+    const double k = in.k;
     MetricsResult r;
     AccuracyCounts& c = r.counts;
     c.pixels = classes.size();
     r.marks.assign(classes.size(), PixelMark::None);
-    std::vector<double> mismatchDistances;
+    r.causes.assign(classes.size(), MismatchCause::None);
+    std::vector<double> texels, world, screen;
+    double errorSum = 0.0, severitySum = 0.0;
     for (std::size_t i = 0; i < classes.size(); ++i) {
         const PixelClass cls = classes[i];
         const bool surface = cls != PixelClass::Background;
@@ -49,43 +53,47 @@ MetricsResult computeMetrics(const std::vector<PixelClass>& classes, const std::
             continue;
         }
         ++c.measured;
-        if (isLit(cls)) {
-            ++c.lit;
-            if (s < 0.5f) {
-                ++c.mismatched;
-                const double d = distance(i);
-                mismatchDistances.push_back(d);
-                if (d > k) {
-                    ++c.acne;
-                    r.marks[i] = PixelMark::Acne;
-                } else {
-                    ++c.mismatchedWithinK;
-                    r.marks[i] = PixelMark::AcneNearEdge;
-                }
-            } else if (s < 1.0f && distance(i) > k) {
-                ++c.faintAcne;
-                r.marks[i] = PixelMark::FaintAcne;
-            }
-        } else {
-            ++c.shadowed;
-            if (s > 0.5f) {
-                ++c.mismatched;
-                const double d = distance(i);
-                mismatchDistances.push_back(d);
-                if (d > k) {
-                    ++c.leak;
-                    r.marks[i] = PixelMark::Leak;
-                } else {
-                    ++c.mismatchedWithinK;
-                    r.marks[i] = PixelMark::LeakNearEdge;
-                }
-            }
+        const bool lit = isLit(cls);
+        ++(lit ? c.lit : c.shadowed);
+        const double error = std::abs(double(s) - (lit ? 1.0 : 0.0));
+        errorSum += error;
+        const bool wrong = error >= 0.5;
+        c.wrong += wrong;
+        if (!visiblyWrong(lit, s)) continue;
+        ++c.mismatched;
+        const double d = in.distance(i);
+        const bool beyondK = d > k;
+        texels.push_back(d);
+        if (in.worldPerTexel) world.push_back(d * in.worldPerTexel(i));
+        if (in.worldPerTexel && in.worldPerPixel) {
+            const double perPixel = in.worldPerPixel(i);
+            screen.push_back(perPixel > 0.0 ? d * in.worldPerTexel(i) / perPixel : 0.0);
         }
+        if (wrong && beyondK) ++c.wrongBeyondK;
+        if (!beyondK) ++c.mismatchedWithinK;
+        if (lit && beyondK) {
+            ++c.acne;
+            severitySum += 1.0 - double(s);
+        }
+        if (!lit && beyondK) ++c.leak;
+        r.marks[i] = lit ? (beyondK ? PixelMark::Acne : PixelMark::AcneNearEdge)
+                         : (beyondK ? PixelMark::Leak : PixelMark::LeakNearEdge);
+        const MismatchCause cause = in.cause ? in.cause(i, d)
+                                    : !beyondK ? MismatchCause::NearEdge
+                                    : lit      ? MismatchCause::SelfShadowing
+                                               : MismatchCause::BiasOverGap;
+        r.causes[i] = cause;
+        ++c.causePixels[std::size_t(cause)];
+        if (wrong) ++c.causeWrong[std::size_t(cause)];
     }
     r.acnePercent = c.lit ? 100.0 * double(c.acne) / double(c.lit) : 0.0;
-    r.faintAcnePercent = c.lit ? 100.0 * double(c.faintAcne) / double(c.lit) : 0.0;
+    r.acneSeverity = c.acne ? severitySum / double(c.acne) : 0.0;
     r.leakPercent = c.shadowed ? 100.0 * double(c.leak) / double(c.shadowed) : 0.0;
-    r.edgeErrorP95Texels = percentile(mismatchDistances, 95.0);
+    r.wrongPercent = c.measured ? 100.0 * double(c.wrong) / double(c.measured) : 0.0;
+    r.meanError = c.measured ? errorSum / double(c.measured) : 0.0;
+    r.edgeErrorP95Texels = percentile(texels, 95.0);
+    r.edgeErrorP95World = percentile(world, 95.0);
+    r.edgeErrorP95ScreenPixels = percentile(screen, 95.0);
     return r;
 }
 

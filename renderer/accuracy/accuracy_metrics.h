@@ -1,9 +1,13 @@
 #pragma once
-// DESIGN.md's accuracy measures from per-pixel buffers (no GL: unit-testable on synthetic buffers).
-//   acne = #{V=1, S<0.5, dist>k} / #{V=1}      leak = #{V=0, S>0.5, dist>k} / #{V=0}
-//   edge error = 95th percentile of dist over mismatched pixels, k = filter radius + 1 texel.
-// Beyond DESIGN.md: faint acne = #{V=1, 0.5<=S<1, dist>k} / #{V=1} (visible moiré that is not acne by definition).
+// DESIGN.md's accuracy measures, version 2, from per-pixel buffers (no GL: unit-testable on synthetic buffers).
+// e = one 8-bit step (1/255), k = filter radius + 1 texel, dist = distance to the true shadow boundary in texels.
+//   acne  = #{V=1, S<1-e, dist>k} / #{V=1}   (severity: mean 1-S over them)
+//   leak  = #{V=0, S>e,   dist>k} / #{V=0}
+//   wrong pixels = #{|S-V| >= 0.5} / #measured,  mean error = mean |S-V| over measured (edges included)
+//   edge error = 95th percentile of dist over mismatched pixels (|S-V| > e), in texels, world units, screen pixels
+// Every mismatched pixel gets a cause (mismatch_cause.h).
 #include "accuracy/accuracy_meter.h"
+#include "accuracy/mismatch_cause.h"
 #include "reference/visibility.h"
 
 #include <functional>
@@ -11,28 +15,49 @@
 
 namespace shadowlab {
 
+inline constexpr float kVisibleStep = 1.0f / 255.0f;  // e: one 8-bit step
+
 // How far a filter reads from the lookup position, in texels: point 0, hardware 2x2 1 (bilinear neighbours),
 // N x N PCF (N-1)/2, Poisson its radius + 1 (its taps are bilinear).
 double filterRadiusTexels(const FilterSettings& filter);
 inline double acceptanceRadiusTexels(const FilterSettings& filter) { return filterRadiusTexels(filter) + 1.0; }
 
-enum class PixelMark : std::uint8_t { None, Acne, AcneNearEdge, Leak, LeakNearEdge, FaintAcne };
+// Is the tool's S visibly different from the reference (one 8-bit step or more toward the wrong side)?
+inline bool visiblyWrong(bool lit, float s) { return lit ? s < 1.0f - kVisibleStep : s > kVisibleStep; }
+
+enum class PixelMark : std::uint8_t { None, Acne, AcneNearEdge, Leak, LeakNearEdge };
+
+struct MetricsInput {
+    const std::vector<PixelClass>* classes = nullptr;  // the reference's verdict per pixel
+    const std::vector<float>* shadowFactor = nullptr;  // the tool's S per pixel
+    const std::vector<std::uint8_t>* toolCovered = nullptr;  // the tool's frame drew a surface there
+    double k = 1.0;
+    // Pixel i's distance to the true boundary in texels (asked only for mismatched pixels).
+    std::function<double(std::size_t)> distance;
+    // Optional: pixel i's cause (asked only for mismatched pixels, with its distance); NearEdge / SelfShadowing /
+    // BiasOverGap by distance and side when absent.
+    std::function<MismatchCause(std::size_t, double)> cause;
+    // Optional: world units per texel and per screen pixel at pixel i (edge error in those units; 0 when absent).
+    std::function<double(std::size_t)> worldPerTexel;
+    std::function<double(std::size_t)> worldPerPixel;
+};
 
 struct MetricsResult {
     AccuracyCounts counts;
     double acnePercent = 0.0;
+    double acneSeverity = 0.0;  // mean 1-S over acne pixels (0..1)
     double leakPercent = 0.0;
-    double faintAcnePercent = 0.0;
+    double wrongPercent = 0.0;
+    double meanError = 0.0;  // mean |S-V| over measured pixels (0..1)
     double edgeErrorP95Texels = 0.0;
-    std::vector<PixelMark> marks;  // per pixel, for the overlay
+    double edgeErrorP95World = 0.0;
+    double edgeErrorP95ScreenPixels = 0.0;
+    std::vector<PixelMark> marks;        // per pixel, for the error overlay
+    std::vector<MismatchCause> causes;   // per pixel, for the cause overlay
 };
 
-// classes: the reference's verdict per pixel; shadowFactor: the tool's S per pixel; toolCovered: whether the tool's
-// frame drew a surface there; distance(i): pixel i's distance to the true boundary in texels (only asked for pixels
-// that need it). counts.boundaryPixels is left for the caller.
-MetricsResult computeMetrics(const std::vector<PixelClass>& classes, const std::vector<float>& shadowFactor,
-                             const std::vector<std::uint8_t>& toolCovered, double k,
-                             const std::function<double(std::size_t)>& distance);
+// counts.boundaryPixels and counts.shadowedNearEdge are left for the caller.
+MetricsResult computeMetrics(const MetricsInput& input);
 
 // The p-th percentile (0..100) by nearest rank; 0 for an empty list. Reorders values.
 double percentile(std::vector<double>& values, double p);

@@ -5,35 +5,68 @@
 
 namespace shadowlab {
 
-std::vector<std::uint8_t> makeOverlay(int width, int height, const std::vector<PixelClass>& classes,
+namespace {
+
+constexpr LegendEntry kAcne{"acne", 235, 40, 40};
+constexpr LegendEntry kAcneNearEdge{"acne within k", 120, 45, 45};
+constexpr LegendEntry kLeak{"leak", 50, 110, 255};
+constexpr LegendEntry kLeakNearEdge{"leak within k", 40, 60, 125};
+constexpr LegendEntry kBoundary{"true boundary", 255, 220, 0};
+
+}  // namespace
+
+const std::vector<LegendEntry>& errorLegend() {
+    static const std::vector<LegendEntry> legend = {kAcne, kLeak, kAcneNearEdge, kLeakNearEdge, kBoundary};
+    return legend;
+}
+
+const std::vector<LegendEntry>& causeLegend() {
+    static const std::vector<LegendEntry> legend = [] {
+        std::vector<LegendEntry> l;
+        for (MismatchCause cause : allCauses()) {
+            const CauseInfo& info = causeInfo(cause);
+            l.push_back({info.name, info.red, info.green, info.blue});
+        }
+        l.push_back(kBoundary);
+        return l;
+    }();
+    return legend;
+}
+
+std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, const std::vector<PixelClass>& classes,
                                       const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
-                                      const std::vector<PixelMark>& marks, const ShadowBoundary& boundary,
-                                      float ambient) {
+                                      const MetricsResult& metrics, const ShadowBoundary& boundary, float ambient) {
     const std::size_t count = std::size_t(width) * std::size_t(height);
     std::vector<std::uint8_t> rgba(count * 4, 255);
-    auto put = [&](std::size_t i, int r, int g, int b) {
-        rgba[i * 4] = std::uint8_t(r);
-        rgba[i * 4 + 1] = std::uint8_t(g);
-        rgba[i * 4 + 2] = std::uint8_t(b);
+    auto put = [&](std::size_t i, const LegendEntry& e) {
+        rgba[i * 4] = e.red;
+        rgba[i * 4 + 1] = e.green;
+        rgba[i * 4 + 2] = e.blue;
     };
     for (std::size_t i = 0; i < count; ++i) {
         if (classes[i] == PixelClass::Background) {
-            put(i, 20, 22, 26);
+            put(i, {"", 20, 22, 26});
             continue;
         }
         const float s = std::isfinite(shadowFactor[i]) ? std::clamp(shadowFactor[i], 0.0f, 1.0f) : 0.0f;
         const float light = ambient + (1.0f - ambient) * s * lambert[i];
-        const int grey = int(45.0f + 95.0f * std::clamp(light, 0.0f, 1.0f));
-        switch (marks[i]) {
-            case PixelMark::Acne: put(i, 235, 40, 40); break;
-            case PixelMark::AcneNearEdge: put(i, 120, 45, 45); break;
-            case PixelMark::Leak: put(i, 50, 110, 255); break;
-            case PixelMark::LeakNearEdge: put(i, 40, 60, 125); break;
-            case PixelMark::FaintAcne: put(i, 210, 130, 60); break;
-            case PixelMark::None: put(i, grey, grey, grey); break;
+        const auto grey = std::uint8_t(45.0f + 95.0f * std::clamp(light, 0.0f, 1.0f));
+        const PixelMark mark = metrics.marks[i];
+        bool counted = mark == PixelMark::Acne || mark == PixelMark::Leak;
+        if (kind == OverlayKind::Cause && metrics.causes[i] != MismatchCause::None) {
+            const CauseInfo& info = causeInfo(metrics.causes[i]);
+            put(i, {"", info.red, info.green, info.blue});
+            counted = metrics.causes[i] != MismatchCause::NearEdge;
+        } else {
+            switch (mark) {
+                case PixelMark::Acne: put(i, kAcne); break;
+                case PixelMark::AcneNearEdge: put(i, kAcneNearEdge); break;
+                case PixelMark::Leak: put(i, kLeak); break;
+                case PixelMark::LeakNearEdge: put(i, kLeakNearEdge); break;
+                case PixelMark::None: put(i, {"", grey, grey, grey}); break;
+            }
         }
-        const bool counted = marks[i] == PixelMark::Acne || marks[i] == PixelMark::Leak;
-        if (boundary.onBoundary(i) && !counted) put(i, 255, 220, 0);
+        if (boundary.onBoundary(i) && !counted) put(i, kBoundary);
     }
     return rgba;
 }

@@ -1,7 +1,9 @@
 #pragma once
-// The error overlay: red = acne (false shadow on a lit receiver), blue = leak (light where the reference is in
-// shadow), both darker within k texels of a true boundary (the filter's legitimate blur, not counted), orange =
-// faint acne, yellow = the true shadow boundary as a thin line; everything else dimmed (grey: the tool's S x Lambert).
+// The accuracy overlays. Error: red = acne (a truly lit receiver visibly darkened), blue = leak (light where the
+// reference is in shadow), both darker within k texels of a true boundary (the filter's blur, not counted), yellow =
+// the true shadow boundary as a thin line; everything else dimmed (grey: the tool's S x Lambert). Cause: every
+// mismatched pixel in its cause's colour (mismatch_cause.h), the rest as in the error overlay.
+// The legends are the one source of these colours for the CLI and the editor.
 #include "accuracy/accuracy_metrics.h"
 #include "accuracy/shadow_boundary.h"
 
@@ -10,10 +12,18 @@
 
 namespace shadowlab {
 
+struct LegendEntry {
+    const char* name;
+    std::uint8_t red, green, blue;
+};
+const std::vector<LegendEntry>& errorLegend();
+const std::vector<LegendEntry>& causeLegend();  // every cause, then the true boundary
+
+enum class OverlayKind { Error, Cause };
+
 // RGBA8, row 0 = top (the buffers' order).
-std::vector<std::uint8_t> makeOverlay(int width, int height, const std::vector<PixelClass>& classes,
+std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, const std::vector<PixelClass>& classes,
                                       const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
-                                      const std::vector<PixelMark>& marks, const ShadowBoundary& boundary,
-                                      float ambient);
+                                      const MetricsResult& metrics, const ShadowBoundary& boundary, float ambient);
 
 }  // namespace shadowlab

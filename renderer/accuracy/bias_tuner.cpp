@@ -2,6 +2,7 @@
 
 #include "accuracy/bias_units.h"
 #include "light/light_space.h"
+#include "settings/settings_fields.h"
 
 #include <algorithm>
 #include <chrono>
@@ -27,6 +28,7 @@ constexpr double kMaxSlope = 100.0;
 constexpr double kMaxNormalTexels = 16.0;
 constexpr int kBisections = 3;
 constexpr int kMaxSteps = 2 + 4 * (10 + kBisections);  // for the progress bar: start, zero bias, 4 families
+                                                       // (cull mode candidates extend it; the bar then rescales)
 constexpr float kFirstShare = 0.3f;                    // of the progress bar: the first candidate's reference
 
 // One search direction: the bias grows with t along it.
@@ -36,18 +38,26 @@ struct Family {
     double tMax;
 };
 
-// Is step a better suggestion than b? Within the acne limit first, then least leak, least faint acne, fewest
-// mismatched pixels and the smallest bias; outside the limit, least acne first.
-bool better(const TuneStep& a, double aMagnitude, const TuneStep& b, double bMagnitude) {
-    if (a.withinLimit != b.withinLimit) return a.withinLimit;
-    if (!a.withinLimit && a.acnePercent != b.acnePercent) return a.acnePercent < b.acnePercent;
-    if (a.leakPercent != b.leakPercent) return a.leakPercent < b.leakPercent;
-    if (a.faintAcnePercent != b.faintAcnePercent) return a.faintAcnePercent < b.faintAcnePercent;
-    if (a.mismatched != b.mismatched) return a.mismatched < b.mismatched;
-    return aMagnitude < bMagnitude;
+}  // namespace
+
+std::string cullModeName(CullMode mode) {
+    Settings s;
+    s.shadow.cullMode = mode;
+    return findSettingsField("shadow.cullMode")->get(s).get<std::string>();
 }
 
-}  // namespace
+bool betterCandidate(const TuneStep& a, const TuneStep& b) {
+    if (a.withinLimit != b.withinLimit) return a.withinLimit;
+    if (!a.withinLimit) {
+        if (a.acnePercent != b.acnePercent) return a.acnePercent < b.acnePercent;
+        if (a.wrongBeyondK != b.wrongBeyondK) return a.wrongBeyondK < b.wrongBeyondK;
+        return a.biasTexels < b.biasTexels;
+    }
+    if (a.wrongBeyondK != b.wrongBeyondK) return a.wrongBeyondK < b.wrongBeyondK;
+    if (a.edgeErrorTexels != b.edgeErrorTexels) return a.edgeErrorTexels < b.edgeErrorTexels;
+    if (a.biasTexels != b.biasTexels) return a.biasTexels < b.biasTexels;
+    return a.acnePercent < b.acnePercent;
+}
 
 TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& start, const Camera& camera, int width,
                     int height, double maxAcnePercent, AccuracyProgress* progress,
@@ -55,6 +65,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     const auto started = std::chrono::steady_clock::now();
     TuneResult result;
     result.best = start;
+    result.closest = start;
     auto finish = [&] {
         result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
         return result;
@@ -84,8 +95,9 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         return finish();
     }
 
-    auto settingsFor = [&](const Candidate& c) {
+    auto settingsFor = [&](const Candidate& c, CullMode cull) {
         Settings s = start;
+        s.shadow.cullMode = cull;
         s.shadow.depthBias = float(std::min(c.constantTexels / unitTexels, kMaxDepthBiasUnits));
         s.shadow.slopeScaledDepthBias = float(std::min(c.slope, kMaxSlope));
         s.shadow.normalOffset = float(std::min(c.normal, kMaxNormalTexels));
@@ -93,10 +105,11 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     };
 
     std::optional<std::size_t> bestIndex;  // into result.path
-    double bestMagnitude = 0.0;
+    std::size_t lastCulled = 0;            // wrong pixels the last candidate's culled casters cause
     bool stop = false;
+    int plannedSteps = kMaxSteps;
     // Measures one candidate; returns whether its acne is within the limit (nullopt: failed or cancelled).
-    auto measure = [&](const char* phase, const Settings& s, double magnitude) -> std::optional<bool> {
+    auto measure = [&](const std::string& phase, const Settings& s, double magnitude) -> std::optional<bool> {
         if (stop) return std::nullopt;
         if (progress && progress->cancel.load()) {
             stop = true;
@@ -107,8 +120,12 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         // The first candidate builds the reference (the long part); the rest share what is left of the bar.
         if (progress) {
             const std::size_t done = result.path.size();
-            progress->base = done == 0 ? 0.0f : kFirstShare + (1.0f - kFirstShare) * float(done - 1) / kMaxSteps;
-            progress->span = done == 0 ? kFirstShare : (1.0f - kFirstShare) / kMaxSteps;
+            // What is left of the bar is shared by the steps still planned, so it only moves forward when the
+            // cull-mode search adds steps.
+            plannedSteps = std::max(plannedSteps, int(done) + 1);
+            progress->base = done == 0 ? 0.0f : progress->base + progress->span;
+            progress->span = done == 0 ? kFirstShare
+                                       : (1.0f - progress->base) / float(std::max(1, plannedSteps - int(done) + 1));
         }
         AccuracyReport report = meter.measure(scene, s, camera, width, height, progress);
         if (!report.ok) {
@@ -124,16 +141,20 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         step.depthBias = s.shadow.depthBias;
         step.slopeScaledDepthBias = s.shadow.slopeScaledDepthBias;
         step.normalOffset = s.shadow.normalOffset;
+        step.cullMode = s.shadow.cullMode;
+        step.biasTexels = magnitude;
         step.acnePercent = report.acnePercent;
         step.leakPercent = report.leakPercent;
-        step.faintAcnePercent = report.faintAcnePercent;
-        step.mismatched = report.counts.mismatched;
+        step.wrongPercent = report.wrongPercent;
+        step.wrongBeyondK = report.counts.wrongBeyondK;
+        step.meanError = report.meanError;
+        step.edgeErrorTexels = report.edgeErrorP95Texels;
         step.withinLimit = report.acnePercent <= maxAcnePercent;
-        if (!bestIndex || better(step, magnitude, result.path[*bestIndex], bestMagnitude)) {
+        lastCulled = report.counts.causeWrong[std::size_t(MismatchCause::CasterCulled)];
+        if (!bestIndex || betterCandidate(step, result.path[*bestIndex])) {
             step.bestSoFar = true;
             bestIndex = result.path.size();
-            bestMagnitude = magnitude;
-            result.best = s;
+            result.closest = s;
             result.report = std::move(report);
         }
         result.path.push_back(step);
@@ -147,11 +168,29 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     // 1. The given preset, and no bias at all.
     const Candidate given{double(start.shadow.depthBias) * unitTexels, start.shadow.slopeScaledDepthBias,
                           start.shadow.normalOffset};
+    const CullMode startCull = start.shadow.cullMode;
     measure("start (the given settings)", start, given.magnitude());
-    const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}), 0.0);
+    std::size_t culled = lastCulled;
+    const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}, startCull), 0.0);
     if (stop) return finish();
+    culled = std::max(culled, lastCulled);
 
-    // 2. Along each direction: double until acne is within the limit, then bisect back toward the smallest bias
+    // 2. Culled casters cause wrong pixels: the other cull modes join the search when they cull less.
+    std::vector<std::pair<CullMode, bool>> modes = {{startCull, zeroPasses.value_or(false)}};
+    if (culled > 0) {
+        for (CullMode mode : {CullMode::None, CullMode::Back, CullMode::Front}) {
+            if (mode == startCull) continue;
+            const std::optional<bool> passes =
+                measure(std::string("zero bias, cull ") + cullModeName(mode), settingsFor({}, mode), 0.0);
+            if (stop) return finish();
+            if (lastCulled < culled) {
+                modes.emplace_back(mode, passes.value_or(false));
+                plannedSteps += 4 * (10 + kBisections);
+            }
+        }
+    }
+
+    // 3. Along each direction: double until acne is within the limit, then bisect back toward the smallest bias
     //    that still is (leak only grows with bias, so that is the family's least-leak setting).
     const double kRide = 0.02;  // a hair of constant bias: slope alone does nothing on receivers facing the light
     const std::vector<Family> families = {
@@ -160,13 +199,15 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         {"slope + normal offset", [&](double t) { return Candidate{kRide, t, t / 2.0}; }, kMaxSlope},
         {"constant", [](double t) { return Candidate{t, 0.0, 0.0}; }, kMaxDepthBiasUnits * unitTexels},
     };
-    if (!zeroPasses.value_or(false)) {
+    for (const auto& [mode, passesAtZero] : modes) {
+        if (passesAtZero) continue;
+        const std::string suffix = mode == startCull ? "" : std::string(", cull ") + cullModeName(mode);
         for (const Family& family : families) {
             double failing = 0.0, passing = -1.0;
             for (double t = 0.25;; t = std::min(t * 2.0, family.tMax)) {
                 const Candidate c = family.at(t);
-                const std::string phase = std::string("grow ") + family.name;
-                const std::optional<bool> ok = measure(phase.c_str(), settingsFor(c), c.magnitude());
+                const std::optional<bool> ok =
+                    measure(std::string("grow ") + family.name + suffix, settingsFor(c, mode), c.magnitude());
                 if (stop) return finish();
                 if (*ok) {
                     passing = t;
@@ -179,8 +220,8 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
             for (int i = 0; i < kBisections; ++i) {
                 const double mid = 0.5 * (failing + passing);
                 const Candidate c = family.at(mid);
-                const std::string phase = std::string("bisect ") + family.name;
-                const std::optional<bool> ok = measure(phase.c_str(), settingsFor(c), c.magnitude());
+                const std::optional<bool> ok =
+                    measure(std::string("bisect ") + family.name + suffix, settingsFor(c, mode), c.magnitude());
                 if (stop) return finish();
                 (*ok ? passing : failing) = mid;
             }
@@ -188,6 +229,20 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     }
 
     result.reachedLimit = bestIndex && result.path[*bestIndex].withinLimit;
+    if (result.reachedLimit) {
+        result.best = result.closest;
+    } else {
+        // What keeps the least-acne candidate's acne up: the cause of most of its acne pixels.
+        std::size_t most = 0;
+        for (MismatchCause cause : {MismatchCause::SelfShadowing, MismatchCause::AlphaTest,
+                                    MismatchCause::OutsideVolume}) {
+            const std::size_t n = result.report.counts.causePixels[std::size_t(cause)];
+            if (n > most) {
+                most = n;
+                result.blockingCause = cause;
+            }
+        }
+    }
     result.ok = true;
     if (progress) {
         progress->base = 0.0f;

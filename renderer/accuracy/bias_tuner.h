@@ -1,7 +1,9 @@
 #pragma once
-// Suggests DepthBias, SlopeScaledDepthBias and normal offset: the setting with the least leak whose acne is at most
-// maxAcnePercent, found by measuring candidates with an AccuracyMeter (each costs one tool frame: the reference is
-// cached). Other settings are kept as given.
+// Suggests DepthBias, SlopeScaledDepthBias, normal offset and, when culled casters cause wrong pixels, the shadow
+// pass's cull mode: among the candidates whose acne (metrics version 2) is at most maxAcnePercent, the fewest wrong
+// pixels beyond k, then the smallest edge error, then the smallest bias. It never suggests a setting above the limit:
+// when none reaches it, it says so and names the cause that stops it. Candidates are measured with an AccuracyMeter
+// (each costs one tool frame: the reference is cached). Other settings are kept as given.
 #include "accuracy/accuracy_meter.h"
 
 #include <functional>
@@ -16,22 +18,35 @@ struct TuneStep {
     float depthBias = 0.0f;          // D3D DepthBias (format depth steps)
     float slopeScaledDepthBias = 0.0f;
     float normalOffset = 0.0f;       // texels
+    CullMode cullMode = CullMode::Back;
+    double biasTexels = 0.0;         // the bias's size in texels (constant + slope + normal offset), for the tie-break
     double acnePercent = 0.0;
     double leakPercent = 0.0;
-    double faintAcnePercent = 0.0;
-    std::size_t mismatched = 0;
+    double wrongPercent = 0.0;
+    std::size_t wrongBeyondK = 0;
+    double meanError = 0.0;
+    double edgeErrorTexels = 0.0;
     bool withinLimit = false;        // acnePercent <= maxAcnePercent
     bool bestSoFar = false;          // this candidate became the best so far
 };
+
+// Is a a better suggestion than b? Within the acne limit first; among those the fewest wrong pixels beyond k, then
+// the smallest edge error, then the smallest bias; outside the limit, the least acne.
+bool betterCandidate(const TuneStep& a, const TuneStep& b);
+
+// The preset spelling of a cull mode ("back", "front", "none"), from the settings' key table.
+std::string cullModeName(CullMode mode);
 
 struct TuneResult {
     bool ok = false;
     bool cancelled = false;
     std::string error;               // when !ok
-    Settings best;                   // start with the best DepthBias / slope / normal offset found
-    bool reachedLimit = false;       // false: no candidate reached acne <= maxAcnePercent; best has the least acne
+    bool reachedLimit = false;       // false: no candidate reached acne <= maxAcnePercent
+    Settings best;                   // reached: start with the best bias (and cull mode) found; else start unchanged
+    Settings closest;                // the candidate with the least acne (== best when reached)
+    MismatchCause blockingCause = MismatchCause::None;  // not reached: the cause of most of closest's acne
     std::vector<TuneStep> path;      // every candidate measured, in order
-    AccuracyReport report;           // the measurement of `best`
+    AccuracyReport report;           // the measurement of `closest`
     double seconds = 0.0;            // wall time of the search
     AccuracyCost referenceCost;      // what the first measurement (which built the reference) cost
 };

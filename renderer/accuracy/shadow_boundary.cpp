@@ -109,13 +109,17 @@ double ShadowBoundary::probe(std::size_t i, double k) {
     return found;
 }
 
-double ShadowBoundary::distance(std::size_t i, double k) {
+double ShadowBoundary::visibleDistance(std::size_t i) {
     if (visibleDistance_[i] < 0.0f) {
         const glm::dvec2& t = texel_[i];
         visibleDistance_[i] =
             std::isfinite(t.x) && std::isfinite(t.y) ? float(tree_.nearestDistance(t)) : float(kInfinity);
     }
-    const double visible = visibleDistance_[i];
+    return visibleDistance_[i];
+}
+
+double ShadowBoundary::distance(std::size_t i, double k) {
+    const double visible = visibleDistance(i);
     if (visible <= k) return visible;
     return std::min(visible, probe(i, k));
 }

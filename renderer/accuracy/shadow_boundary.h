@@ -39,6 +39,8 @@ public:
     // Distance of pixel i to the nearest true boundary in texels, exact enough to decide "> k" (+infinity when
     // there is none). Not thread-safe for one pixel; distinct pixels may be asked from several threads.
     double distance(std::size_t i, double k);
+    // Distance to the nearest boundary the view shows (no probing; +infinity when none). Same threading rule.
+    double visibleDistance(std::size_t i);
     // Computes the distances of many pixels on all cores (then distance() answers from the cache).
     void prepare(const std::vector<std::size_t>& pixels, double k);
 

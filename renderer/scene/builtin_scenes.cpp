@@ -197,6 +197,20 @@ Scene spherePlane() {
     return scene;
 }
 
+Scene roof() {
+    Scene scene = baseScene("roof");
+    addFloor(scene);
+    scene.materials.push_back(opaque("roof", {0.55f, 0.6f, 0.7f, 1.0f}));  // single-sided (glTF's default)
+    MeshBuilder panel("roof", 2);
+    const float h = 0.5f * kRoofSize;
+    panel.quad(kRoofCenter, {h, 0, 0}, {0, 0, h});  // cross(+x, +z) = -y: the front face looks down
+    addObject(scene, std::move(panel));
+    MeshBuilder box("box", 1);
+    box.box(kRoofBoxCenter, glm::vec3(kRoofBoxSize));
+    addObject(scene, std::move(box));
+    return scene;
+}
+
 struct Entry {
     const char* name;
     const char* description;
@@ -209,6 +223,7 @@ constexpr Entry kScenes[] = {
     {"thin-walls", "walls 0.02, 0.1 and 0.5 thick on a floor: too much bias detaches their shadows", thinWalls},
     {"fence", "an alpha-tested (MASK) double-sided fence of slats and a rail over a floor", fence},
     {"sphere-plane", "a finely tessellated unit sphere floating over a floor: the analytic check", spherePlane},
+    {"roof", "a single-sided roof facing down over a floor, lit from above: back-face culling drops its shadow", roof},
 };
 
 const Entry* find(const std::string& name) {

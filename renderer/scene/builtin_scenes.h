@@ -94,5 +94,13 @@ inline constexpr float kSpherePlaneRadius = 1.0f;
 inline constexpr int kSpherePlaneSegments = 128;
 inline constexpr int kSpherePlaneRings = 64;
 
+// "roof": a single-sided square (material "roof", not doubleSided) at height kRoofHeight whose front face looks
+// DOWN (-y), above the floor, lit from above: seen from the light it is a back face, so a shadow pass that culls
+// back faces drops it while the exact reference (every triangle blocks) keeps its shadow. A closed box beside it.
+inline constexpr glm::vec3 kRoofCenter{0.0f, 3.0f, 0.0f};
+inline constexpr float kRoofSize = 6.0f;  // 6 x 6
+inline constexpr glm::vec3 kRoofBoxCenter{5.0f, 0.75f, -4.0f};
+inline constexpr float kRoofBoxSize = 1.5f;
+
 }  // namespace builtin
 }  // namespace shadowlab

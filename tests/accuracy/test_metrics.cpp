@@ -17,7 +17,20 @@ namespace {
 
 using C = PixelClass;
 
-TEST(AccuracyMetrics, CountsFollowTheDefinitions) {
+MetricsResult metricsOf(const std::vector<C>& classes, const std::vector<float>& s,
+                        const std::vector<std::uint8_t>& covered, double k, const std::vector<double>& dist) {
+    MetricsInput in;
+    in.classes = &classes;
+    in.shadowFactor = &s;
+    in.toolCovered = &covered;
+    in.k = k;
+    in.distance = [&](std::size_t i) { return dist[i]; };
+    in.worldPerTexel = [](std::size_t) { return 0.5; };
+    in.worldPerPixel = [](std::size_t) { return 0.25; };
+    return computeMetrics(in);
+}
+
+TEST(AccuracyMetrics, CountsFollowTheVersion2Definitions) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const std::vector<C> classes = {C::Lit,      C::Lit,        C::Lit,        C::Lit,         C::Shadowed,
                                     C::Shadowed, C::FacingAway, C::Background, C::OutsideCone, C::NonFinite,
@@ -25,7 +38,7 @@ TEST(AccuracyMetrics, CountsFollowTheDefinitions) {
     const std::vector<float> s = {1.0f, 0.2f, 0.2f, 0.7f, 0.0f, 0.9f, 1.0f, float(nan), 0.8f, 0.0f, 0.0f};
     const std::vector<std::uint8_t> covered = {1, 1, 1, 1, 1, 1, 1, 0, 1, 1, 0};
     const std::vector<double> dist = {9, 5, 1, 5, 9, 4, 0, 0, 0.5, 0, 9};
-    const MetricsResult r = computeMetrics(classes, s, covered, 2.0, [&](std::size_t i) { return dist[i]; });
+    const MetricsResult r = metricsOf(classes, s, covered, 2.0, dist);
     const AccuracyCounts& c = r.counts;
     EXPECT_EQ(c.pixels, 11u);
     EXPECT_EQ(c.background, 1u);
@@ -36,31 +49,58 @@ TEST(AccuracyMetrics, CountsFollowTheDefinitions) {
     EXPECT_EQ(c.measured, 7u);
     EXPECT_EQ(c.lit, 4u);
     EXPECT_EQ(c.shadowed, 3u);
-    EXPECT_EQ(c.acne, 1u);       // pixel 1: lit, S 0.2, 5 texels from an edge
-    EXPECT_EQ(c.faintAcne, 1u);  // pixel 3: lit, S 0.7
-    EXPECT_EQ(c.leak, 1u);       // pixel 5: shadowed, S 0.9, 4 texels from an edge
-    EXPECT_EQ(c.mismatched, 4u);
+    EXPECT_EQ(c.acne, 2u) << "pixel 1 (S 0.2) and pixel 3 (S 0.7: visibly darkened, version 1 called it faint)";
+    EXPECT_EQ(c.leak, 1u);        // pixel 5: shadowed, S 0.9, 4 texels from an edge
+    EXPECT_EQ(c.wrong, 4u);       // |S-V| >= 0.5: pixels 1, 2, 5, 8 — edges included
+    EXPECT_EQ(c.wrongBeyondK, 2u);  // pixels 1 and 5
+    EXPECT_EQ(c.mismatched, 5u);
     EXPECT_EQ(c.mismatchedWithinK, 2u);  // pixel 2 (1 texel) and pixel 8 (outside the cone, 0.5 texel)
-    EXPECT_DOUBLE_EQ(r.acnePercent, 25.0);
-    EXPECT_DOUBLE_EQ(r.faintAcnePercent, 25.0);
+    EXPECT_DOUBLE_EQ(r.acnePercent, 50.0);
+    EXPECT_NEAR(r.acneSeverity, (0.8 + 0.3) / 2.0, 1e-6);
     EXPECT_NEAR(r.leakPercent, 100.0 / 3.0, 1e-12);
-    EXPECT_DOUBLE_EQ(r.edgeErrorP95Texels, 5.0);  // nearest rank of {5, 1, 4, 0.5}
+    EXPECT_NEAR(r.wrongPercent, 400.0 / 7.0, 1e-12);
+    EXPECT_NEAR(r.meanError, (0.8 + 0.8 + 0.3 + 0.9 + 0.8) / 7.0, 1e-6);
+    EXPECT_DOUBLE_EQ(r.edgeErrorP95Texels, 5.0);  // nearest rank of {5, 1, 5, 4, 0.5}
+    EXPECT_DOUBLE_EQ(r.edgeErrorP95World, 2.5);   // x 0.5 world units per texel
+    EXPECT_DOUBLE_EQ(r.edgeErrorP95ScreenPixels, 10.0);  // / 0.25 world units per pixel
     EXPECT_EQ(r.marks[1], PixelMark::Acne);
     EXPECT_EQ(r.marks[2], PixelMark::AcneNearEdge);
+    EXPECT_EQ(r.marks[3], PixelMark::Acne);
     EXPECT_EQ(r.marks[5], PixelMark::Leak);
     EXPECT_EQ(r.marks[8], PixelMark::LeakNearEdge);
+    // Without a cause callback: by side and distance; every mismatched pixel has one.
+    EXPECT_EQ(r.causes[1], MismatchCause::SelfShadowing);
+    EXPECT_EQ(r.causes[2], MismatchCause::NearEdge);
+    EXPECT_EQ(r.causes[5], MismatchCause::BiasOverGap);
+    EXPECT_EQ(r.causes[0], MismatchCause::None);
+    std::size_t explained = 0;
+    for (std::size_t n : c.causePixels) explained += n;
+    EXPECT_EQ(explained, c.mismatched);
+    EXPECT_EQ(c.causeWrong[std::size_t(MismatchCause::NearEdge)], 2u);
 }
 
-TEST(AccuracyMetrics, ExactlyOneHalfIsNeitherAcneNorLeakAndEmptySetsGiveZero) {
-    const std::vector<C> classes = {C::Lit, C::Shadowed};
-    const std::vector<float> s = {0.5f, 0.5f};
-    const MetricsResult r = computeMetrics(classes, s, {1, 1}, 1.0, [](std::size_t) { return 100.0; });
-    EXPECT_EQ(r.counts.acne, 0u);
-    EXPECT_EQ(r.counts.leak, 0u);
-    EXPECT_EQ(r.counts.faintAcne, 1u);
-    const MetricsResult empty = computeMetrics({C::Background}, {0.0f}, {0}, 1.0, [](std::size_t) { return 0.0; });
+// Observation 1 of issue 9: stripes at S = 0.6 on a truly lit surface passed version 1 as clean.
+TEST(AccuracyMetrics, StripesBetweenHalfAndOneAreAcneAndOneEightBitStepDecides) {
+    const std::vector<C> classes(6, C::Lit);
+    const std::vector<float> s = {0.6f, 1.0f, 0.6f, 1.0f, 1.0f - 0.5f / 255.0f, 1.0f - 1.5f / 255.0f};
+    const std::vector<std::uint8_t> covered(6, 1);
+    const MetricsResult r = metricsOf(classes, s, covered, 1.0, std::vector<double>(6, 50.0));
+    EXPECT_EQ(r.counts.acne, 3u) << "the two stripes and the pixel darkened by more than one 8-bit step";
+    EXPECT_NEAR(r.acnePercent, 50.0, 1e-12);
+    EXPECT_EQ(r.counts.wrong, 0u) << "none is wrong by half";
+    EXPECT_GT(r.meanError, 0.1);
+
+    const std::vector<C> shadowed = {C::Shadowed, C::Shadowed, C::Shadowed};
+    const std::vector<float> t = {0.5f / 255.0f, 1.5f / 255.0f, 0.5f};
+    const MetricsResult leak = metricsOf(shadowed, t, {1, 1, 1}, 1.0, {50.0, 50.0, 50.0});
+    EXPECT_EQ(leak.counts.leak, 2u);
+    EXPECT_EQ(leak.counts.wrong, 1u) << "|S - V| = 0.5 is wrong";
+
+    const std::vector<C> none = {C::Background};
+    const MetricsResult empty = metricsOf(none, {0.0f}, {0}, 1.0, {0.0});
     EXPECT_EQ(empty.acnePercent, 0.0);
     EXPECT_EQ(empty.leakPercent, 0.0);
+    EXPECT_EQ(empty.wrongPercent, 0.0);
     EXPECT_EQ(empty.edgeErrorP95Texels, 0.0);
 }
 

@@ -332,4 +332,66 @@ TEST_F(EditorAccuracy, ClosingTheEditorDuringASearchCancelsItAndEndsTheWorker) {
     EXPECT_TRUE(harness->state().accuracy.report->ok);
 }
 
+// The roof (issue 9, observation 3) in the editor: the Causes tab names the culled caster with its remedy and share,
+// the overlay by cause paints it, and Suggest bias applies a cull mode that fixes it.
+TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACullMode) {
+    open();
+    EditorHarness& h = *harness;
+    h.editor().requestScene("builtin:roof");
+    h.settle();
+    ASSERT_EQ(h.state().sceneSpec, "builtin:roof");
+    const AccuracyState& a = h.state().accuracy;
+    h.click("accuracy.measure");
+    waitForJob();
+    ASSERT_TRUE(a.report.has_value()) << a.error;
+    EXPECT_GT(a.report->leakPercent, 50.0);
+    EXPECT_EQ(a.report->mainCause(), MismatchCause::CasterCulled);
+    h.click("accuracy.tab.causes");
+    h.frame(2);
+    EXPECT_TRUE(h.hasControl("accuracy.causes"));
+    h.click("view");
+    h.click("view=accuracy overlay by cause");
+    h.frame(2);
+    EXPECT_TRUE(a.showOverlay);
+    EXPECT_EQ(a.uploadedKind, OverlayKind::Cause);
+    const CauseInfo& culled = causeInfo(MismatchCause::CasterCulled);
+    const ControlRect view = h.rect("viewport.image");
+    const std::vector<std::uint8_t> window = h.readWindow();
+    long painted = 0;
+    for (int y = int(view.y); y < int(view.y + view.h); ++y)
+        for (int x = int(view.x); x < int(view.x + view.w); ++x) {
+            const std::uint8_t* p = &window[(std::size_t(y) * h.width() + x) * 4];
+            painted += p[0] == culled.red && p[1] == culled.green && p[2] == culled.blue;
+        }
+    EXPECT_GT(painted, 500) << "the culled caster's leak is painted in its cause colour";
+    h.saveWindow("accuracy-roof-by-cause");
+
+    h.click("accuracy.suggest");
+    waitForJob(300.0);
+    ASSERT_TRUE(a.tune.has_value()) << a.error;
+    ASSERT_TRUE(a.tune->reachedLimit);
+    EXPECT_NE(h.state().settings.shadow.cullMode, CullMode::Back) << "the applied settings carry the new cull mode";
+    EXPECT_EQ(h.state().settings.shadow.cullMode, a.tune->best.shadow.cullMode);
+    EXPECT_LT(a.report->leakPercent, 1.0);
+    EXPECT_EQ(a.stale, "");
+    h.saveWindow("accuracy-roof-suggested");
+}
+
+// A coarse map: the Numbers tab warns that acne and leak cannot judge it and points at wrong pixels.
+TEST_F(EditorAccuracy, CoarseMapWarningShowsInTheNumbersTab) {
+    open();
+    EditorHarness& h = *harness;
+    ASSERT_TRUE(h.state().edit("shadow.resolution", 16));
+    h.frame(2);
+    h.click("accuracy.measure");
+    waitForJob();
+    const AccuracyState& a = h.state().accuracy;
+    ASSERT_TRUE(a.report.has_value()) << a.error;
+    EXPECT_NE(a.report->coarseMapWarning, "");
+    h.click("accuracy.tab.numbers");
+    h.frame(2);
+    EXPECT_TRUE(h.hasControl("accuracy.coarseMap"));
+    EXPECT_TRUE(h.hasControl("accuracy.wrong"));
+}
+
 }  // namespace shadowlab::editor::test

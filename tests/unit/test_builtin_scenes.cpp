@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace shadowlab;
@@ -42,12 +43,32 @@ Scene builtinOrDie(const std::string& name) {
 
 TEST(BuiltinScenes, NamesDescriptionsAndDefault) {
     const std::vector<std::string> names = builtinSceneNames();
-    ASSERT_EQ(names.size(), 5u);
+    ASSERT_EQ(names.size(), 6u);
     EXPECT_EQ(names.front(), "textbook");
     EXPECT_EQ(std::string(kDefaultSceneSpec), "builtin:textbook");
     for (const std::string& n : names) EXPECT_FALSE(builtinSceneDescription(n).empty()) << n;
     EXPECT_TRUE(builtinSceneDescription("nope").empty());
     EXPECT_FALSE(makeBuiltinScene("nope").has_value());
+}
+
+// The roof: one single-sided square whose front face (CCW winding and its normal) looks down, above the floor.
+TEST(BuiltinScenes, RoofIsASingleSidedSquareFacingDown) {
+    const std::optional<Scene> scene = makeBuiltinScene("roof");
+    ASSERT_TRUE(scene.has_value());
+    const auto roof = std::find_if(scene->meshes.begin(), scene->meshes.end(),
+                                   [](const Mesh& m) { return m.name == "roof"; });
+    ASSERT_NE(roof, scene->meshes.end());
+    const Material* material = scene->materialOf(*roof);
+    ASSERT_NE(material, nullptr);
+    EXPECT_FALSE(material->doubleSided);
+    ASSERT_EQ(roof->triangleCount(), 2u);
+    for (std::size_t t = 0; t < roof->triangleCount(); ++t) {
+        const glm::vec3 a = roof->positions[roof->indices[3 * t]], b = roof->positions[roof->indices[3 * t + 1]],
+                        c = roof->positions[roof->indices[3 * t + 2]];
+        EXPECT_LT(glm::cross(b - a, c - a).y, 0.0f) << "the winding's front looks down";
+        EXPECT_FLOAT_EQ(a.y, builtin::kRoofCenter.y);
+    }
+    for (const glm::vec3& n : roof->normals) EXPECT_FLOAT_EQ(n.y, -1.0f);
 }
 
 TEST(BuiltinScenes, EveryBuiltinIsValidWithFiniteBoundsAndOutwardNormals) {

@@ -1,7 +1,8 @@
-// Accuracy: how wrong the shadows are against the exact reference (acne, leak, faint acne, edge error, k, the counts
-// behind them and what the reference cost), measured on demand or automatically once the view is still; a stale
-// line when the numbers no longer describe the view; and Suggest bias: the search's path, its result applied to the
-// settings, and Save as preset.
+// Accuracy: how wrong the shadows are against the exact reference (metrics version 2: acne with its severity, leak,
+// wrong pixels, mean error, edge error in texels / world units / screen pixels, k, the coarse-map warning, the
+// causes of the wrong pixels with a remedy each, the counts behind them and what the reference cost), measured on
+// demand or automatically once the view is still; a stale line when the numbers no longer describe the view; and
+// Suggest bias: the search's path, its result applied to the settings, and Save as preset.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
@@ -39,21 +40,62 @@ std::string format(const char* fmt, double a, double b = 0.0) {
 
 void numbersTab(EditorState& state, const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
+    if (!r.coarseMapWarning.empty()) {
+        warningText(r.coarseMapWarning);
+        state.controls.recordLastItem("accuracy.coarseMap");
+    }
     if (ImGui::BeginTable("numbers", 2, ImGuiTableFlags_SizingFixedFit)) {
-        row("acne", format("%.3f %%", r.acnePercent) + "  (" + grouped(c.acne) + " of " + grouped(c.lit) + " lit)",
-            "truly lit pixels the tool shadows (S < 0.5) farther than k texels from the true shadow boundary");
+        row("acne", format("%.3f %%", r.acnePercent) + "  (" + grouped(c.acne) + " of " + grouped(c.lit) + " lit" +
+                        (c.acne ? format(", mean 1-S %.2f)", r.acneSeverity) : ")"),
+            "truly lit pixels the tool visibly darkens (S < 1 - 1/255) farther than k texels from the true shadow "
+            "boundary; severity = mean 1-S over them");
         state.controls.recordLastItem("accuracy.acne");
         row("leak", format("%.3f %%", r.leakPercent) + "  (" + grouped(c.leak) + " of " + grouped(c.shadowed) +
                         " shadowed)",
-            "Peter Panning / light leaking: truly shadowed pixels the tool lights (S > 0.5) beyond k texels");
-        row("faint acne", format("%.3f %%", r.faintAcnePercent) + "  (" + grouped(c.faintAcne) + ")",
-            "truly lit pixels the tool darkens partly (0.5 <= S < 1) beyond k: moire that is not acne");
-        row("edge error", format("%.2f texels (p95)", r.edgeErrorP95Texels),
-            "95th percentile of the distance to the true boundary over mismatched pixels");
+            "Peter Panning / light leaking: truly shadowed pixels the tool visibly lights (S > 1/255) beyond k texels");
+        row("wrong pixels", format("%.3f %%", r.wrongPercent) + "  (" + grouped(c.wrong) + " of " +
+                                grouped(c.measured) + ")",
+            "|S - V| >= 0.5 over every measured pixel, edges included: compares maps of any resolution");
+        state.controls.recordLastItem("accuracy.wrong");
+        row("mean error", format("%.4f", r.meanError), "mean |S - V| over every measured pixel, edges included");
+        row("edge error", format("%.2f texels = ", r.edgeErrorP95Texels) + format("%.3g world = ", r.edgeErrorP95World) +
+                              format("%.1f px (p95)", r.edgeErrorP95ScreenPixels),
+            "95th percentile of the distance to the true boundary over mismatched pixels, in shadow-map texels, "
+            "world units and screen pixels");
         row("k", format("%.1f texels", r.kTexels) + format(" (%.3g world)", r.kTexels * r.texelWorldSize),
-            "filter radius + 1 texel: mismatches closer than this to a true edge are filter blur, not counted");
+            "filter radius + 1 texel: mismatches closer than this to a true edge are filter blur, not acne or leak");
         ImGui::EndTable();
     }
+}
+
+// Why the pixels are wrong: each cause's share of the wrong pixels (|S-V| >= 0.5) and of the visibly mismatched
+// ones, with the remedy.
+void causesTab(EditorState& state, const AccuracyReport& r) {
+    const AccuracyCounts& c = r.counts;
+    if (c.mismatched == 0) {
+        ImGui::TextDisabled("no mismatched pixels: nothing to explain");
+        return;
+    }
+    ImGui::TextDisabled("%s wrong, %s visibly mismatched pixels", grouped(c.wrong).c_str(),
+                        grouped(c.mismatched).c_str());
+    // One line per cause (colour, name, share), its remedy wrapped below: the panel is often narrow.
+    ImGui::BeginGroup();
+    for (MismatchCause cause : allCauses()) {
+        const std::size_t n = c.causePixels[std::size_t(cause)];
+        if (n == 0) continue;
+        const CauseInfo& info = causeInfo(cause);
+        ImGui::ColorButton(info.key, ImVec4(info.red / 255.0f, info.green / 255.0f, info.blue / 255.0f, 1.0f),
+                           ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
+        ImGui::SameLine();
+        ImGui::Text("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
+        ImGui::Indent();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", info.remedy);
+        ImGui::PopStyleColor();
+        ImGui::Unindent();
+    }
+    ImGui::EndGroup();
+    state.controls.recordLastItem("accuracy.causes");
 }
 
 void countsTab(const AccuracyReport& r) {
@@ -73,6 +115,7 @@ void countsTab(const AccuracyReport& r) {
         pair("pixels", c.pixels, "measured", c.measured);
         pair("lit", c.lit, "shadowed", c.shadowed);
         pair("acne", c.acne, "leak", c.leak);
+        pair("wrong", c.wrong, "wrong beyond k", c.wrongBeyondK);
         pair("mismatched", c.mismatched, "within k", c.mismatchedWithinK);
         pair("background", c.background, "facing away", c.facingAway);
         pair("outside cone", c.outsideCone, "boundary", c.boundaryPixels);
@@ -107,34 +150,39 @@ void biasSearchTab(PanelContext& ctx) {
         const std::string text =
             a.tune->reachedLimit
                 ? "applied: acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
-                      format("%.1f %%", a.maxAcnePercent) + ", leak " + format("%.3f %%", a.tune->report.leakPercent)
-                : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + "; applied the least acne, " +
-                      format("%.3f %%", a.tune->report.acnePercent);
+                      format("%.1f %%", a.maxAcnePercent) + ", wrong pixels " +
+                      format("%.3f %%", a.tune->report.wrongPercent) + ", cull " + cullModeName(a.tune->best.shadow.cullMode)
+                : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + " (least: " +
+                      format("%.3f %%", a.tune->report.acnePercent) + "); stopped by " +
+                      causeInfo(a.tune->blockingCause).name + ": " + causeInfo(a.tune->blockingCause).remedy +
+                      ". Nothing applied.";
         ImGui::PushStyleColor(ImGuiCol_Text, a.tune->reachedLimit ? ImVec4(0.5f, 0.9f, 0.5f, 1.0f)
                                                                   : ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
         ImGui::TextWrapped("%s", text.c_str());
         ImGui::PopStyleColor();
         state.controls.recordLastItem("accuracy.result");
         if (ImGui::IsItemHovered()) {
-            const ShadowMapSettings& best = a.tune->best.shadow;
+            const ShadowMapSettings& best = a.tune->closest.shadow;
             ImGui::SetTooltip("DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels\n%zu candidates in %.1f s",
                               double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
                               a.tune->path.size(), a.tune->seconds);
         }
-        if (ImGui::SmallButton("Save as preset...")) ctx.actions.openSaveAs();
-        state.controls.recordLastItem("accuracy.saveAs");
-        ImGui::SameLine();
+        if (a.tune->reachedLimit) {
+            if (ImGui::SmallButton("Save as preset...")) ctx.actions.openSaveAs();
+            state.controls.recordLastItem("accuracy.saveAs");
+            ImGui::SameLine();
+        }
         ImGui::TextDisabled("%zu candidates, %.1f s", a.tune->path.size(), a.tune->seconds);
     } else if (a.steps.empty()) {
-        ImGui::TextDisabled("Suggest bias: least leak with acne <= %.1f %%", a.maxAcnePercent);
+        ImGui::TextDisabled("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent);
     }
 
     const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
                                   ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("steps", 7, flags, ImVec2(0, tableHeight))) {
+    if (ImGui::BeginTable("steps", 9, flags, ImVec2(0, tableHeight))) {
         ImGui::TableSetupScrollFreeze(1, 1);
-        for (const char* h : {"#", "DepthBias", "slope", "normal", "acne %", "leak %", "phase"})
+        for (const char* h : {"#", "DepthBias", "slope", "normal", "cull", "acne %", "leak %", "wrong %", "phase"})
             ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         for (const TuneStep& s : a.steps) {
@@ -149,9 +197,13 @@ void biasSearchTab(PanelContext& ctx) {
             ImGui::TableNextColumn();
             ImGui::Text("%.3g", double(s.normalOffset));
             ImGui::TableNextColumn();
+            ImGui::TextUnformatted(cullModeName(s.cullMode).c_str());
+            ImGui::TableNextColumn();
             ImGui::Text("%.3f", s.acnePercent);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", s.leakPercent);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", s.wrongPercent);
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(s.phase.c_str());
         }
@@ -184,8 +236,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
     }
     state.controls.recordLastItem("accuracy.suggest");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("Search DepthBias, slope and normal offset for the least leak with acne <= %.1f %%, and "
-                          "apply it",
+        ImGui::SetTooltip("Search DepthBias, slope, normal offset (and cull mode when culled casters cause wrong "
+                          "pixels) for acne <= %.1f %% with the fewest wrong pixels, and apply it",
                           a.maxAcnePercent);
     ImGui::EndDisabled();
     ImGui::SameLine();
@@ -236,6 +288,10 @@ void drawAccuracyPanel(PanelContext& ctx) {
             numbersTab(state, *a.report);
         else
             ImGui::TextDisabled("Measure, or turn on Auto, to see how wrong the shadows are");
+        ImGui::EndTabItem();
+    }
+    if (tab("Causes", "accuracy.tab.causes")) {
+        if (a.report) causesTab(state, *a.report);
         ImGui::EndTabItem();
     }
     if (tab("Counts", "accuracy.tab.counts")) {
