@@ -41,7 +41,7 @@ int runTune(const TuneOptions& options) {
     try {
         HeadlessContext context;
         AccuracyMeter meter;
-        const Camera camera = cameraFor(settings->camera, scene);
+        const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
         std::cout << "tuning bias for " << scene.name << " at " << options.width << "x" << options.height
                   << ": least leak with acne <= " << options.maxAcnePercent << " %\n";
         std::cout << "  #  phase                           DepthBias   slope  normal    acne %   leak %  faint %"

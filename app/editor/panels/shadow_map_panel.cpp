@@ -49,17 +49,9 @@ void resolutionControls(EditorState& state) {
 
 void biasAmounts(const EditorState& state) {
     if (!state.haveStats) return;
-    const BiasAmount& b = state.stats.bias;
-    ImGui::TextDisabled("DepthBias =");
-    ImGui::SameLine();
-    ImGui::Text("%.3g texels", b.constantTexels);
-    ImGui::SameLine();
-    ImGui::TextDisabled("= %.3g world units", b.constantWorld);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("DepthBias x the format's depth step (%.3g) = %.3g in depth; along the light that is %.3g "
-                          "world units, or %.3g shadow-map texels (one texel = %.4g world units)",
-                          b.depthStep, b.constantDepth, b.constantWorld, b.constantTexels, b.texelWorldSize);
-    ImGui::TextDisabled("normal offset = %.3g world units (texel %.3g)", b.normalOffsetWorld, b.texelWorldSize);
+    // The frame report's lines: the bias at this scene's receivers, in depth, world units and texels.
+    ImGui::TextDisabled("bias at this scene's receivers:");
+    for (const std::string& line : describeBias(state.stats.bias)) ImGui::TextWrapped("%s", line.c_str());
 }
 
 }  // namespace
