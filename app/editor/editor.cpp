@@ -365,7 +365,7 @@ void Editor::resetCameraFromSettings() {
 void Editor::frameScene() {
     if (!orbit_ || !state_.scene) return;
     const double aspect = viewportRect_.w > 0 ? double(viewportRect_.z) / double(viewportRect_.w) : 1.0;
-    orbit_->frame(state_.scene->bounds, aspect);
+    orbit_->frame(*state_.scene, aspect);
 }
 
 void Editor::dropFiles(const std::vector<std::string>& paths) {

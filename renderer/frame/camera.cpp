@@ -79,6 +79,8 @@ std::vector<glm::dvec3> worldVertices(const Scene& scene) {
 
 }  // namespace
 
+void frameScene(Camera& camera, const Scene& scene, double aspect) { framePoints(camera, worldVertices(scene), aspect); }
+
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect) {
     const Bounds& bounds = scene.bounds;
     Camera camera;
@@ -89,7 +91,7 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspe
         const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
         camera.target = center;
         camera.position = center + glm::normalize(glm::dvec3(scene.viewDirection));
-        framePoints(camera, worldVertices(scene), aspect);
+        frameScene(camera, scene, aspect);
     } else {
         camera.position = settings.position;
         camera.target = settings.target;

@@ -36,6 +36,9 @@ inline constexpr double kAutoFrameFill = 0.9;
 // view axis at the points' mean depth. Points are world positions; nothing happens for an empty list.
 void framePoints(Camera& camera, const std::vector<glm::dvec3>& points, double aspect);
 
+// framePoints with every vertex of the scene in world space (what the camera can see of it).
+void frameScene(Camera& camera, const Scene& scene, double aspect);
+
 // The right-handed basis glm::lookAt builds for a viewing direction (the up vector is +y, or -z looking straight up
 // or down): right, up, forward (unit vectors).
 struct ViewBasis {

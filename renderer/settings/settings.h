@@ -23,7 +23,9 @@ struct ShadowMapSettings {
     float slopeScaledDepthBias = 2.0f;  // D3D SlopeScaledDepthBias: times the polygon's max depth slope
     float depthBiasClamp = 0.0f;        // D3D DepthBiasClamp: max |bias| in depth units; 0 = no clamp
     float normalOffset = 0.5f;          // lookup moved along the normal, in shadow-map texels (world size)
-    CullMode cullMode = CullMode::Back;
+    // None: the map holds every caster, as the reference does. Back loses single-sided roofs lit from above (96 %
+    // leak), front leaks at contacts (0.8-1.8 %); none matched back's acne on every scene (README, "Policies").
+    CullMode cullMode = CullMode::None;
 
     bool operator==(const ShadowMapSettings&) const = default;
 };
