@@ -167,8 +167,12 @@ std::vector<std::string> describeBias(const BiasReport& b) {
     const ShadowMapSettings& shadow = b.shadow;
     std::vector<std::string> lines;
     const std::string where = b.valid ? "" : " (no receiver in the light's volume: taken at depth 1)";
-    if (b.format == DepthFormat::D32F && b.stepNear != b.stepFar) {
-        lines.push_back(format("DepthBias %g x r (D32F: r follows the depth's exponent)%s:", double(shadow.depthBias),
+    // Two lines when the nearest and farthest receivers get different amounts (D32F's exponent, a spot's depth).
+    const bool varies = b.stepNear != b.stepFar ||
+                        std::abs(b.constantNear.world - b.constantFar.world) > 0.01 * std::abs(b.constantFar.world);
+    if (varies) {
+        lines.push_back(format("DepthBias %g x r%s%s:", double(shadow.depthBias),
+                               b.format == DepthFormat::D32F ? " (D32F: r follows the depth's exponent)" : "",
                                where.c_str()));
         lines.push_back(format("  nearest receivers (depth %.3g, r = %s): ", b.receiverDepthMin,
                                step(b.stepNear).c_str()) + units(b.constantNear));
