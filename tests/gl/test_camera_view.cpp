@@ -7,6 +7,7 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace shadowlab::test {
 namespace {
@@ -41,6 +42,16 @@ TEST_F(CameraView, AMillimetreMoveAtAMillionUnitsChangesThePicture) {
     // The edge runs across the whole view; moving it ~3 rows changes at least two rows of pixels.
     EXPECT_GT(changed, 2 * 240) << "a float camera at 1e6 has a 6 cm step: 1 mm changes nothing";
     EXPECT_LT(changed, 240 * 240 / 4) << "the picture moved, it did not fall apart";
+
+    // HARD_CASES 3: the same view of the scene at the origin is the same picture (within an edge pixel's rounding).
+    const Scene home = loadBuiltin("textbook");
+    Settings atHome = s;
+    atHome.camera.position -= offset;
+    atHome.camera.target -= offset;
+    const View there = renderView(renderer, home, atHome, 240, 240);
+    long differ = 0;
+    for (std::size_t i = 0; i < there.rgba.size(); i += 4) differ += std::abs(int(there.rgba[i]) - int(after.rgba[i])) > 8;
+    EXPECT_LT(differ, 240 * 2) << "the view at 1e6 must not depend on where the scene is";
 }
 
 // Bounding box of the scene's pixels (shadow view: grey) in a rendered view.
