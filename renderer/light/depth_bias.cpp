@@ -27,6 +27,12 @@ double depthStepAt(DepthFormat format, double depth) {
     return 0.0;
 }
 
+
+double clipDepthStepAt(double depth) {
+    const float ndc = std::abs(static_cast<float>(2.0 * std::clamp(depth, 0.0, 1.0) - 1.0));
+    return 0.5 * double(std::nextafter(ndc, 2.0f) - ndc);
+}
+
 namespace {
 
 // View distance from the light at window depth d (spot: perspective depth; directional: linear).
@@ -137,6 +143,9 @@ BiasReport biasReport(const ShadowMapSettings& shadow, DepthFormat format, const
     double total = double(shadow.depthBias) * depthStepAt(format, median) + b.slope.depth;
     if (shadow.depthBiasClamp > 0.0f) total = std::min(total, double(shadow.depthBiasClamp));
     b.total = biasTerm(light, total, median);
+    const bool nearCoarser = clipDepthStepAt(nearDepth) >= clipDepthStepAt(farDepth);
+    const double coarsest = nearCoarser ? nearDepth : farDepth;
+    b.clipPrecision = biasTerm(light, clipDepthStepAt(coarsest), coarsest);
     b.texelWorldSize = light.texelSizeAt(viewDistanceAt(light, median));
     b.normalOffsetWorld = double(shadow.normalOffset) * b.texelWorldSize;
     return b;
@@ -188,6 +197,8 @@ std::vector<std::string> describeBias(const BiasReport& b) {
     lines.push_back(shadow.depthBiasClamp > 0.0f
                         ? format("DepthBiasClamp %g: ", double(shadow.depthBiasClamp)) + units(b.clamp)
                         : std::string("DepthBiasClamp: none"));
+    lines.push_back("depth precision of the float clip space at the receivers: " + units(b.clipPrecision) +
+                    (b.total.depth < b.clipPrecision.depth ? " (more than the total bias: expect acne)" : ""));
     lines.push_back(format("total at the median receiver (depth %.3g): ", b.receiverDepthMedian) + units(b.total) +
                     format("; normal offset %.3g world units (texel %.3g world units)", b.normalOffsetWorld,
                            b.texelWorldSize));

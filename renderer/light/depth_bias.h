@@ -24,6 +24,9 @@ struct BiasTerm {
     double texels = 0.0;  // world / one shadow-map texel's world size there
 };
 
+// One float step of clip-space depth at window depth `depth`, in window depth (see BiasReport::clipPrecision).
+double clipDepthStepAt(double depth);
+
 // r for a triangle whose largest window depth is `depth` (clamped into the format's range).
 double depthStepAt(DepthFormat format, double depth);
 
@@ -55,6 +58,10 @@ struct BiasReport {
     BiasTerm slope;               // SlopeScaledDepthBias x m at the median receiver
     BiasTerm clamp;               // DepthBiasClamp (depth 0 = no clamp)
     BiasTerm total;               // what the median receiver's caster gets: constant + slope, clamped
+    // The step of the float clip space at the receivers (GL's [-1, 1] depth: window depth = 0.5 ndc + 0.5, so near
+    // depth 0 or 1 one float step of ndc is 2^-25 of depth however fine D32F's own step is). Caster and receiver
+    // depths both carry this rounding: a bias below it cannot separate a surface from itself.
+    BiasTerm clipPrecision;
     double receiverDepthMin = 0.0, receiverDepthMax = 0.0, receiverDepthMedian = 0.0;
     double normalOffsetWorld = 0.0;
     double texelWorldSize = 0.0;  // at the median receiver

@@ -71,8 +71,11 @@ TEST_F(BiasReportTest, ConstantTermIsTheD32FStepAtTheReceiversDepth) {
     EXPECT_NEAR(applied, 1000.0 * r, 1e-6 * applied) << "what the GPU stored";
     const BiasReport& b = stats.bias;
     ASSERT_TRUE(b.valid);
-    // The GPU's float clip space holds depth to ~3e-8 (2^-25 around ndc -1); the exponent is what matters.
-    EXPECT_NEAR(b.receiverDepthMin, unbiased, 1e-7);
+    // The GPU's float clip space holds depth to one step of ndc near -1: 2^-25 of depth, 0.03 world units here,
+    // more than the whole bias (which is why this view has acne). The report says so.
+    EXPECT_EQ(b.clipPrecision.depth, std::ldexp(1.0, -25));
+    EXPECT_NEAR(b.clipPrecision.world, std::ldexp(1.0, -25) * (1e6 - 0.1), 1e-9);
+    EXPECT_NEAR(b.receiverDepthMin, unbiased, 2.0 * b.clipPrecision.depth);
     EXPECT_EQ(b.stepNear, r);
     EXPECT_NEAR(b.constantNear.depth, applied, 1e-6 * applied);
     const double range = 1e6 - 0.1;

@@ -72,6 +72,7 @@ void biasAmounts(const EditorState& state) {
         row("slope-scaled (median)", b.slope);
         if (b.shadow.depthBiasClamp > 0.0f) row("clamp", b.clamp);
         row("total (median)", b.total);
+        row("clip-space precision", b.clipPrecision);  // a total below it cannot beat the rounding: acne
         ImGui::EndTable();
     }
     if (ImGui::IsItemHovered()) {
