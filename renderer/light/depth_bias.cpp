@@ -27,7 +27,6 @@ double depthStepAt(DepthFormat format, double depth) {
     return 0.0;
 }
 
-
 double clipDepthStepAt(double depth) {
     const float ndc = std::abs(static_cast<float>(2.0 * std::clamp(depth, 0.0, 1.0) - 1.0));
     return 0.5 * double(std::nextafter(ndc, 2.0f) - ndc);
