@@ -56,7 +56,7 @@ int runBench(const BenchOptions& options) {
         std::cout << "bench: " << scene.name << " (" << scene.triangleCount() << " triangles), view " << options.width
                   << "x" << options.height << ", " << options.frames << " frames per row, shadow pass every frame\n"
                   << "gl: " << info.renderer << "\n";
-        const Camera camera = cameraFor(base->camera, scene);
+        const Camera camera = cameraFor(base->camera, scene, double(options.width) / options.height);
         nlohmann::json rows = nlohmann::json::array();
         std::cout << std::left << std::setw(12) << "resolution" << std::setw(13) << "filter" << std::setw(12)
                   << "map MiB" << std::setw(14) << "shadow ms" << std::setw(14) << "main ms" << "wall ms/frame\n";

@@ -35,9 +35,9 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
         << (stats.light.perspective ? "spot" : "directional") << ", near "
         << stats.light.nearPlane << ", far " << stats.light.farPlane << ", texel " << stats.bias.texelWorldSize
         << " world units\n";
-    out << "bias: DepthBias = " << stats.bias.constantDepth << " depth (" << stats.bias.constantWorld
-        << " world units, " << stats.bias.constantTexels << " texels); normal offset "
-        << stats.bias.normalOffsetWorld << " world units\n";
+    out << "bias (glPolygonOffsetClamp, at this scene's receivers):\n";
+    for (const std::string& line : describeBias(stats.bias))
+        out << "  " << line << "\n";
 }
 
 }  // namespace shadowlab::cli

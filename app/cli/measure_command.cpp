@@ -27,7 +27,7 @@ int runMeasure(const MeasureOptions& options) {
     try {
         HeadlessContext context;
         AccuracyMeter meter;
-        const Camera camera = cameraFor(settings->camera, scene);
+        const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
         const AccuracyReport report = meter.measure(scene, *settings, camera, options.width, options.height);
         if (!report.ok) return fail(report.error);
         for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";

@@ -37,7 +37,7 @@ int runRender(const RenderOptions& options) {
         Renderer renderer;
         RenderTarget target;
         if (std::string error = target.resize(options.width, options.height); !error.empty()) return fail(error);
-        const Camera camera = cameraFor(settings->camera, scene);
+        const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
         FrameStats stats = renderer.render(scene, *settings, camera, target);
         if (!stats.ok) return fail(stats.error);
         renderer.waitForTimings(stats);

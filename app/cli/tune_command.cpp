@@ -43,7 +43,7 @@ int runTune(const TuneOptions& options) {
     try {
         HeadlessContext context;
         AccuracyMeter meter;
-        const Camera camera = cameraFor(settings->camera, scene);
+        const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
         std::cout << "tuning bias for " << scene.name << " at " << options.width << "x" << options.height
                   << ": acne <= " << options.maxAcnePercent
                   << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";

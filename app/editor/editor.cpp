@@ -137,7 +137,7 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     for (std::size_t i = 0; i < state_.scene->warnings.size() && i < 3; ++i)
         state_.say(state_.scene->name + ": " + state_.scene->warnings[i]);
     // A new scene gets the preset's camera (auto-framed by default).
-    orbit_.emplace(cameraFor(state_.settings.camera, *state_.scene), state_.scene->bounds);
+    resetCameraFromSettings();
     lastRendered_.reset();
     if (spec.rfind(kBuiltinPrefix, 0) != 0 && options_.recentFilesPath != "-") {
         state_.recentFiles.add(spec);
@@ -166,6 +166,7 @@ void Editor::renderViewport() {
     const int w = int(viewportRect_.z);
     const int h = int(viewportRect_.w);
     if (w < 16 || h < 16) return;  // no UI built yet, or the panels cover the window
+    if (cameraNeedsViewport_) resetCameraFromSettings();
     if (target_.width() != w || target_.height() != h) {
         if (std::string error = target_.resize(w, h); !error.empty()) {
             state_.say("viewport: " + error, true);
@@ -312,7 +313,7 @@ void Editor::performSwitch(const PendingSwitch& pending) {
                 break;
             }
             state_.fieldErrors.clear();
-            if (state_.scene) orbit_.emplace(cameraFor(state_.settings.camera, *state_.scene), state_.scene->bounds);
+            if (state_.scene) resetCameraFromSettings();
             state_.say("preset " + state_.preset.name() + " loaded from " + pending.target);
             break;
         }
@@ -354,10 +355,17 @@ void Editor::requestScreenshot(bool withShadowMap) {
     screenshotWithMap_ = withShadowMap;
 }
 
+void Editor::resetCameraFromSettings() {
+    const bool laidOut = viewportRect_.z >= 16.0f && viewportRect_.w >= 16.0f;
+    const double aspect = laidOut ? double(viewportRect_.z) / double(viewportRect_.w) : 16.0 / 9.0;
+    orbit_.emplace(cameraFor(state_.settings.camera, *state_.scene, aspect), state_.scene->bounds);
+    cameraNeedsViewport_ = !laidOut;
+}
+
 void Editor::frameScene() {
     if (!orbit_ || !state_.scene) return;
     const double aspect = viewportRect_.w > 0 ? double(viewportRect_.z) / double(viewportRect_.w) : 1.0;
-    orbit_->frame(state_.scene->bounds, aspect);
+    orbit_->frame(*state_.scene, aspect);
 }
 
 void Editor::dropFiles(const std::vector<std::string>& paths) {

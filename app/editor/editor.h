@@ -128,6 +128,10 @@ private:
     std::optional<RenderKey> lastRendered_;
     bool cameraFromPreset_ = true;  // the next adopted scene / loaded preset sets the camera from the settings
     ImVec4 viewportRect_{0, 0, 0, 0};  // the image area, where the renderer draws
+    // The camera was set before the viewport had a size: set it again (auto-framing depends on the aspect) once
+    // the viewport is laid out.
+    bool cameraNeedsViewport_ = false;
+    void resetCameraFromSettings();
     std::vector<ImVec4> panelRects_;   // last frame's panel windows (x, y, w, h): the viewport fills the rest
 
     std::optional<PendingSwitch> pendingSwitch_;  // waiting for the unsaved-changes answer

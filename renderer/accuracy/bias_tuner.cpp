@@ -1,6 +1,6 @@
 #include "accuracy/bias_tuner.h"
 
-#include "accuracy/bias_units.h"
+#include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings_fields.h"
 
@@ -89,7 +89,9 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         result.error = lightError;
         return finish();
     }
-    const double unitTexels = depthBiasUnitTexels(*lightSpace, start.shadow.format);
+    // At the receivers' actual depths: D32F's step follows the depth's exponent.
+    const double unitTexels =
+        depthBiasUnitTexels(*lightSpace, start.shadow.format, receiverDepths(scene, *lightSpace, origin));
     if (!(unitTexels > 0.0)) {
         result.error = "cannot relate DepthBias to texels for this light";
         return finish();

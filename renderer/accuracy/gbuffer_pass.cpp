@@ -1,5 +1,6 @@
 #include "accuracy/gbuffer_pass.h"
 
+#include "frame/face_culling.h"
 #include "gl/program.h"
 #include "reference/parallel_rows.h"
 
@@ -73,7 +74,6 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
     glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);
     const float one = 1.0f;
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &one);
 
@@ -101,11 +101,11 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
                 glBindTextureUnit(kBaseColorUnit, alphaTexture);
             }
         }
-        glFrontFace(draw.mirrored ? GL_CW : GL_CCW);
+        applyViewFaceCulling(material, draw.mirrored);  // the main pass's rule: what it draws is measured
         glDrawElementsBaseVertex(GL_TRIANGLES, draw.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(draw.firstIndexByte), draw.baseVertex);
     }
-    glFrontFace(GL_CCW);
+    resetFaceCulling();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     const std::size_t count = std::size_t(width) * std::size_t(height);

@@ -7,35 +7,91 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shadowlab {
 
+ViewBasis viewBasis(const glm::dvec3& direction) {
+    glm::dvec3 forward = glm::length(direction) < 1e-12 ? glm::dvec3(0.0, 0.0, -1.0) : glm::normalize(direction);
+    // Looking straight up or down: up=(0,1,0) would be parallel, so use -z as up there.
+    const glm::dvec3 worldUp = std::abs(forward.y) > 0.999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, worldUp));
+    return {right, glm::cross(right, forward), forward};
+}
+
 glm::dmat4 Camera::view(const glm::dvec3& origin) const {
-    glm::dvec3 forward = target - position;
-    if (glm::length(forward) < 1e-12) forward = glm::dvec3(0.0, 0.0, -1.0);
-    forward = glm::normalize(forward);
-    // Looking straight up or down: lookAt's up=(0,1,0) would be parallel, so use -z as up there.
-    const glm::dvec3 up = std::abs(forward.y) > 0.999 ? glm::dvec3(0.0, 0.0, -1.0) : glm::dvec3(0.0, 1.0, 0.0);
-    return glm::lookAt(position - origin, position - origin + forward, up);
+    const ViewBasis basis = viewBasis(target - position);
+    // Built relative to the render origin in double: the eye may be 1e6 from the world's origin.
+    return glm::lookAt(position - origin, position - origin + basis.forward, basis.up);
 }
 
 glm::dmat4 Camera::projection(double aspect) const {
     return glm::perspective(glm::radians(fovYDeg), std::max(aspect, 1e-6), nearPlane, farPlane);
 }
 
-Camera cameraFor(const CameraSettings& settings, const Scene& scene) {
+void framePoints(Camera& camera, const std::vector<glm::dvec3>& points, double aspect) {
+    if (points.empty()) return;
+    const ViewBasis b = viewBasis(camera.target - camera.position);
+    // Half-extents of the view (tangents), shrunk so the subject fills kAutoFrameFill of the limiting dimension.
+    const double ty = std::tan(glm::radians(camera.fovYDeg) * 0.5) * kAutoFrameFill;
+    const double tx = ty * std::max(aspect, 1e-6);
+    // In the eye's frame a point is inside when |x| <= tx z and |y| <= ty z, with x = P - eyeX, z = Q - eyeZ (P, Q,
+    // eyeX, eyeZ: world coordinates along right / forward). Each side gives a bound linear in the eye's position;
+    // the tightest per side are these maxima.
+    const double lowest = -std::numeric_limits<double>::max();
+    double rightMax = lowest, leftMax = lowest, topMax = lowest, bottomMax = lowest, depthSum = 0.0;
+    for (const glm::dvec3& p : points) {
+        const double x = glm::dot(p, b.right), y = glm::dot(p, b.up), z = glm::dot(p, b.forward);
+        rightMax = std::max(rightMax, x - tx * z);
+        leftMax = std::max(leftMax, -x - tx * z);
+        topMax = std::max(topMax, y - ty * z);
+        bottomMax = std::max(bottomMax, -y - ty * z);
+        depthSum += z;
+    }
+    // Touching both sides: eyeX - tx eyeZ = rightMax and -eyeX - tx eyeZ = leftMax, so eyeZ = -(r + l) / (2 tx).
+    // The dimension that needs the eye further back limits; the other is centred with slack on both sides.
+    double eyeZ = std::min(-(rightMax + leftMax) / (2.0 * tx), -(topMax + bottomMax) / (2.0 * ty));
+    const double eyeX = 0.5 * (rightMax - leftMax), eyeY = 0.5 * (topMax - bottomMax);
+    const double meanZ = depthSum / double(points.size());
+    // A subject with no extent (one point) would put the eye on it: keep a little distance.
+    const double minDistance = 1e-3 * std::max(1.0, std::abs(meanZ) * 1e-9);
+    eyeZ = std::min(eyeZ, meanZ - minDistance);
+    camera.position = b.right * eyeX + b.up * eyeY + b.forward * eyeZ;
+    const double meanDepth = meanZ - eyeZ;
+    camera.target = camera.position + b.forward * std::max(meanDepth, 1e-6);
+}
+
+namespace {
+
+// Every vertex of every instance in world space: the hull the auto-framed view must hold.
+std::vector<glm::dvec3> worldVertices(const Scene& scene) {
+    std::vector<glm::dvec3> points;
+    for (const Instance& inst : scene.instances) {
+        const Mesh& mesh = scene.meshes[std::size_t(inst.mesh)];
+        const glm::dmat4 transform(inst.transform);
+        for (const glm::vec3& p : mesh.positions) {
+            const glm::dvec3 world(transform * glm::dvec4(glm::dvec3(p), 1.0));
+            if (std::isfinite(world.x) && std::isfinite(world.y) && std::isfinite(world.z)) points.push_back(world);
+        }
+    }
+    return points;
+}
+
+}  // namespace
+
+void frameScene(Camera& camera, const Scene& scene, double aspect) { framePoints(camera, worldVertices(scene), aspect); }
+
+Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect) {
     const Bounds& bounds = scene.bounds;
     Camera camera;
     camera.fovYDeg = settings.fovYDeg;
-    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
-    const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
     if (settings.autoFrame) {
         // A three-quarter view from above (by default across the default light, so shadows fall to the side, not
-        // behind the objects), far enough back that the bounding sphere fits the vertical field of view.
-        const glm::dvec3 viewDirection = glm::normalize(glm::dvec3(scene.viewDirection));
-        const double distance = radius / std::sin(glm::radians(settings.fovYDeg) * 0.5);
+        // behind the objects), moved so the scene's vertices fill the frame.
+        const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
         camera.target = center;
-        camera.position = center + viewDirection * distance;
+        camera.position = center + glm::normalize(glm::dvec3(scene.viewDirection));
+        frameScene(camera, scene, aspect);
     } else {
         camera.position = settings.position;
         camera.target = settings.target;

@@ -6,6 +6,8 @@
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
 
+#include <vector>
+
 namespace shadowlab {
 
 struct Camera {
@@ -20,9 +22,29 @@ struct Camera {
     glm::dmat4 projection(double aspect) const;
 };
 
-// The camera the settings ask for: their position/target, or one framing the scene's bounds from the scene's
-// preferred side (camera.autoFrame). Near/far always follow the scene's size so depth precision suits it.
-Camera cameraFor(const CameraSettings& settings, const Scene& scene);
+// The camera the settings ask for: their position/target, or (camera.autoFrame) one looking from the scene's
+// preferred side whose view the scene's vertices fill: the projected hull just fits the limiting dimension of a
+// view of `aspect` (width / height), with a small margin, centred. Near/far always follow the scene's size so depth
+// precision suits it.
+Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect);
+
+// Share of the view's frame (0..1) reserved for the subject in its limiting dimension when auto-framing.
+inline constexpr double kAutoFrameFill = 0.9;
+
+// Moves `camera` (keeping its viewing direction and field of view) so that every point fits a view of `aspect`, the
+// points' projection filling kAutoFrameFill of the limiting dimension and centred in both; the target lies on the
+// view axis at the points' mean depth. Points are world positions; nothing happens for an empty list.
+void framePoints(Camera& camera, const std::vector<glm::dvec3>& points, double aspect);
+
+// framePoints with every vertex of the scene in world space (what the camera can see of it).
+void frameScene(Camera& camera, const Scene& scene, double aspect);
+
+// The right-handed basis glm::lookAt builds for a viewing direction (the up vector is +y, or -z looking straight up
+// or down): right, up, forward (unit vectors).
+struct ViewBasis {
+    glm::dvec3 right, up, forward;
+};
+ViewBasis viewBasis(const glm::dvec3& forward);
 
 // Sets near/far so the whole of `bounds` lies between them from the camera's position, with the near plane as far
 // out as that allows (depth precision follows the scene's size).

@@ -1,5 +1,6 @@
 #pragma once
 // What one Renderer::render call did: which passes ran and why, what they cost, and what the bias amounts to.
+#include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings.h"
 
@@ -15,15 +16,6 @@ struct PassStats {
     bool ran = false;
     std::string reason;                   // why it ran or was skipped, e.g. "light changed", "unchanged"
     std::optional<double> milliseconds;   // newest finished timing of this pass (GPU: may lag a few frames)
-};
-
-struct BiasAmount {
-    double depthStep = 0.0;       // the format's smallest depth step r (at depth ~1 for D32F)
-    double constantDepth = 0.0;   // DepthBias * r, in normalized depth
-    double constantWorld = 0.0;   // the same along the light, in world units (directional: exact; spot: at centre)
-    double constantTexels = 0.0;  // constantWorld / texel world size
-    double normalOffsetWorld = 0.0;
-    double texelWorldSize = 0.0;
 };
 
 struct FrameStats {
@@ -48,7 +40,7 @@ struct FrameStats {
 
     LightSpace light;
     std::string lightSource;  // which light was used, in words
-    BiasAmount bias;
+    BiasReport bias;  // what the bias amounts to at this scene's receivers
     glm::dvec3 renderOrigin{0.0};
     glm::dmat4 cameraViewProjection{1.0};  // render-origin-relative
 };

@@ -77,12 +77,12 @@ void OrbitCamera::zoom(double wheelSteps) {
     clampDistance();
 }
 
-void OrbitCamera::frame(const Bounds& bounds, double aspect) {
-    setSceneBounds(bounds);
-    target_ = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
-    const double halfY = glm::radians(fovYDeg_) * 0.5;
-    const double halfX = std::atan(std::tan(halfY) * std::max(aspect, 1e-6));
-    distance_ = sceneRadius_ / std::sin(std::min(halfX, halfY));
+void OrbitCamera::frame(const Scene& scene, double aspect) {
+    setSceneBounds(scene.bounds);
+    Camera camera = toCamera();
+    frameScene(camera, scene, aspect);
+    target_ = camera.target;
+    distance_ = glm::length(camera.position - camera.target);
     clampDistance();
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The editor's view camera: orbits around a target (yaw / pitch, pitch kept away from straight up and down), pans in
-// the view plane so the point under the cursor follows the mouse, zooms multiplicatively, and frames the scene's
-// bounding sphere (the F key). Converts to and from the renderer's Camera. No GL.
+// the view plane so the point under the cursor follows the mouse, zooms multiplicatively, and frames the scene the
+// way auto-framing does (the F key). Converts to and from the renderer's Camera. No GL.
 #include "frame/camera.h"
 #include "scene/scene.h"
 
@@ -29,9 +29,9 @@ public:
     // Wheel steps (positive = toward the target). Distance is clamped to [kMinDistanceRadii, kMaxDistanceRadii] times
     // the scene's radius.
     void zoom(double wheelSteps);
-    // Looks at the centre of `bounds` from the current direction, from where the bounding sphere just fits the
-    // view's vertical and horizontal field of view (aspect = width / height).
-    void frame(const Bounds& bounds, double aspect);
+    // Keeps the viewing direction and moves so the scene's vertices fill the view as auto-framing does (frameScene:
+    // the limiting dimension kAutoFrameFill full, centred); orbits then turn around the subject's middle.
+    void frame(const Scene& scene, double aspect);
 
     glm::dvec3 target() const { return target_; }
     glm::dvec3 eye() const;

@@ -25,34 +25,6 @@ void hashBytes(std::size_t& seed, const T& value) {
     hashCombine(seed, chunk);
 }
 
-// The format's smallest depth step r, as GL's polygon offset uses it (D32F: at depths in [0.5, 1)).
-double depthStep(DepthFormat format) {
-    switch (format) {
-        case DepthFormat::D16: return 1.0 / 65535.0;
-        case DepthFormat::D24: return 1.0 / 16777215.0;
-        case DepthFormat::D32F: return std::ldexp(1.0, -24);
-    }
-    return 0.0;
-}
-
-BiasAmount biasAmount(const ShadowMapSettings& shadow, const LightSpace& light, DepthFormat format) {
-    BiasAmount b;
-    b.depthStep = depthStep(format);
-    b.constantDepth = shadow.depthBias * b.depthStep;
-    b.texelWorldSize = light.texelWorldSize;
-    const double range = light.farPlane - light.nearPlane;
-    if (!light.perspective) {
-        b.constantWorld = b.constantDepth * range;
-    } else {
-        // Perspective depth d(z) = f(z - n) / (z (f - n)): dz = dd * z^2 (f - n) / (f n), at the texel's distance.
-        const double z = light.texelWorldSize * light.resolution / (2.0 * light.tanHalfFov);
-        b.constantWorld = b.constantDepth * z * z * range / (light.farPlane * light.nearPlane);
-    }
-    b.constantTexels = b.texelWorldSize > 0.0 ? b.constantWorld / b.texelWorldSize : 0.0;
-    b.normalOffsetWorld = shadow.normalOffset * light.texelWorldSize;
-    return b;
-}
-
 std::string joinLines(const std::vector<std::string>& lines) {
     std::string out;
     for (const std::string& line : lines) out += (out.empty() ? "" : "; ") + line;
@@ -166,7 +138,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.shadowMapResolution = shadowMap_.resolution();
     stats.shadowMapFormat = shadowMap_.format();
     stats.shadowMapBytes = shadowMap_.memoryBytes();
-    stats.bias = biasAmount(settings.shadow, *light, shadowMap_.format());
+    // The receivers' depths in the map change only with the scene and the light: not recomputed for a bias edit.
+    if (!receivers_ || receivers_->fingerprint != fingerprint ||
+        receivers_->lightViewProjection != light->viewProjection() || receivers_->resolution != light->resolution)
+        receivers_ = Receivers{fingerprint, light->viewProjection(), light->resolution,
+                               receiverDepths(scene, *light, stats.renderOrigin)};
+    stats.bias = biasReport(settings.shadow, shadowMap_.format(), *light, receivers_->depths);
     if (settings.shadow.depthBiasClamp != 0.0f && !shadowPass_->hasPolygonOffsetClamp())
         stats.warnings.push_back("shadow.depthBiasClamp: glPolygonOffsetClamp is not available; the clamp is ignored");
 

@@ -56,6 +56,13 @@ private:
     std::size_t gpuSceneFingerprint_ = 0;
     std::optional<ShadowInputs> lastShadow_;
     std::uint64_t mapGenerationRendered_ = 0;  // the shadow map allocation the last shadow pass drew into
+    struct Receivers {
+        std::size_t fingerprint = 0;
+        glm::dmat4 lightViewProjection{0.0};
+        int resolution = 0;
+        ReceiverDepths depths;
+    };
+    std::optional<Receivers> receivers_;  // the scene's depths in the map, for the bias report
 };
 
 // Changes whenever geometry, instances or alpha-relevant material values of the scene change.

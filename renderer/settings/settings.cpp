@@ -26,8 +26,8 @@ std::vector<std::string> Settings::validate() const {
     }
     if (!camera.autoFrame) {
         // glm::lookAt(eye == center) is all NaN (HARD_CASES 14).
-        const glm::vec3 d = camera.target - camera.position;
-        if (!(glm::length(d) > 1e-6f))
+        const glm::dvec3 d = camera.target - camera.position;
+        if (!(glm::length(d) > 1e-6))
             problems.push_back("camera.target: equals camera.position, the camera has no view direction (allowed "
                                "a target at least 1e-6 from the position)");
     }

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <type_traits>
 #include <utility>
 
 namespace shadowlab {
@@ -45,6 +46,10 @@ json floatToJson(float f) {
     if (back.ec != std::errc{} || static_cast<float>(d) != f) d = static_cast<double>(f);
     return json(d);
 }
+
+json componentToJson(float f) { return floatToJson(f); }
+// Doubles: nlohmann writes the shortest decimal that reads back to the same double.
+json componentToJson(double d) { return json(d); }
 
 std::string lower(std::string_view s) {
     std::string out(s);
@@ -189,9 +194,10 @@ SettingsField vec3Field(std::string fieldKey, std::string description, std::stri
                         Access access) {
     SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::Vec3);
     f.allowed = "[x, y, z], finite" + (allowedExtra.empty() ? std::string() : ", " + allowedExtra);
+    // glm::vec3 (directions, the light) or glm::dvec3 (the camera: full double precision, e.g. 1000000.001).
     f.get = [access](const Settings& s) {
-        const glm::vec3& v = access(s);
-        return json::array({floatToJson(v.x), floatToJson(v.y), floatToJson(v.z)});
+        const auto& v = access(s);
+        return json::array({componentToJson(v.x), componentToJson(v.y), componentToJson(v.z)});
     };
     f.set = [key = f.key, allowed = f.allowed, check, access](Settings& s, const json& j) -> std::string {
         bool shapeOk = j.is_array() && j.size() == 3;
@@ -204,7 +210,9 @@ SettingsField vec3Field(std::string fieldKey, std::string description, std::stri
         }
         if (std::string what = check(c[0], c[1], c[2]); !what.empty())
             return problem(key, describeJsonValue(j) + " " + what, allowed);
-        access(s) = glm::vec3(static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]));
+        auto& v = access(s);
+        using Component = std::remove_reference_t<decltype(v.x)>;
+        v = {static_cast<Component>(c[0]), static_cast<Component>(c[1]), static_cast<Component>(c[2])};
         return {};
     };
     return f;

@@ -1,5 +1,7 @@
 #include "shading/main_pass.h"
 
+#include "frame/face_culling.h"
+
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
@@ -51,7 +53,6 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);  // two-sided: shading flips the normal on back faces
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
     glBindTextureUnit(kShadowMapUnit, in.shadowMap->texture());
@@ -87,11 +88,12 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
             glUniform1f(u.alphaCutoff, material->alphaCutoff);
             if (alphaTexture) glBindTextureUnit(kBaseColorUnit, alphaTexture);
         }
-        glFrontFace(draw.mirrored ? GL_CW : GL_CCW);
+        // Single-sided back faces are not drawn; double-sided ones are, and shading flips their normal.
+        applyViewFaceCulling(material, draw.mirrored);
         glDrawElementsBaseVertex(GL_TRIANGLES, draw.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(draw.firstIndexByte), draw.baseVertex);
     }
-    glFrontFace(GL_CCW);
+    resetFaceCulling();
     glBindSampler(kShadowMapUnit, 0);
     std::set<std::string> used;
     for (const MainProgram* program : prepared) used.insert(program->name);

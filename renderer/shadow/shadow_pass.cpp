@@ -1,5 +1,6 @@
 #include "shadow/shadow_pass.h"
 
+#include "frame/face_culling.h"
 #include "gl/program.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -113,22 +114,13 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
             glUniform1f(caster.alphaCutoff, material->alphaCutoff);
             if (texture) glBindTextureUnit(1, texture);
         }
-        // Double-sided materials cast from both faces: culling either would drop single-sided planes.
-        const bool doubleSided = material && material->doubleSided;
-        if (shadow.cullMode == CullMode::None || doubleSided) {
-            glDisable(GL_CULL_FACE);
-        } else {
-            glEnable(GL_CULL_FACE);
-            glCullFace(shadow.cullMode == CullMode::Back ? GL_BACK : GL_FRONT);
-        }
-        glFrontFace(draw.mirrored ? GL_CW : GL_CCW);
+        applyShadowFaceCulling(shadow.cullMode, material, draw.mirrored);
         glDrawElementsBaseVertex(GL_TRIANGLES, draw.indexCount, GL_UNSIGNED_INT,
                                  reinterpret_cast<const void*>(draw.firstIndexByte), draw.baseVertex);
         ++counts.castersDrawn;
         counts.trianglesDrawn += std::size_t(draw.indexCount / 3);
     }
-    glFrontFace(GL_CCW);
-    glDisable(GL_CULL_FACE);
+    resetFaceCulling();
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
     return counts;

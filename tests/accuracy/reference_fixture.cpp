@@ -13,7 +13,7 @@ ReferenceView traceReference(const Scene& scene, const Settings& settings, int w
     Renderer renderer;
     RenderTarget target;
     EXPECT_EQ(target.resize(width, height), "");
-    const Camera camera = cameraFor(settings.camera, scene);
+    const Camera camera = cameraFor(settings.camera, scene, double(width) / height);
     view.stats = renderer.render(scene, settings, camera, target);
     EXPECT_TRUE(view.stats.ok) << view.stats.error;
     const glm::dvec3 origin = view.stats.renderOrigin;

@@ -1,8 +1,8 @@
 // AccuracyMeter on the built-in scenes: the shipped presets measure as their names promise, the reference is reused
 // when only the tool's settings change, and bad input or a cancel leave a clear answer.
-#include "accuracy/bias_units.h"
 #include "context/headless_context.h"
 #include "gl_fixture.h"
+#include "light/depth_bias.h"
 #include "reference_fixture.h"
 
 #include <glm/ext/matrix_transform.hpp>
@@ -19,7 +19,8 @@ constexpr int kHeight = 270;
 
 AccuracyReport measurePreset(AccuracyMeter& meter, const Scene& scene, const std::string& preset) {
     const Settings settings = loadShippedPreset(preset);
-    AccuracyReport report = meter.measure(scene, settings, cameraFor(settings.camera, scene), kWidth, kHeight);
+    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
+    AccuracyReport report = meter.measure(scene, settings, camera, kWidth, kHeight);
     EXPECT_TRUE(report.ok) << report.error;
     saveOverlay(report, "textbook-" + preset);
     return report;
@@ -164,7 +165,7 @@ TEST_F(AccuracyMeterTest, ReferenceIsReusedWhenOnlyTheToolsSettingsChange) {
     const Scene scene = loadBuiltin("textbook");
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
-    const Camera camera = cameraFor(settings.camera, scene);
+    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
     const AccuracyReport first = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(first.ok) << first.error;
     EXPECT_FALSE(first.cost.bvhReused);
@@ -194,7 +195,7 @@ TEST_F(AccuracyMeterTest, InvalidSettingsAndCancelGiveAReasonAndKeepWorking) {
     const Scene scene = loadBuiltin("thin-walls");
     AccuracyMeter meter;
     Settings settings;
-    const Camera camera = cameraFor(settings.camera, scene);
+    const Camera camera = cameraFor(settings.camera, scene, 160.0 / 90.0);
     Settings bad = settings;
     bad.shadow.resolution = 0;
     const AccuracyReport refused = meter.measure(scene, bad, camera, 160, 90);
@@ -221,12 +222,12 @@ TEST_F(AccuracyMeterTest, LargeWorldCoordinatesMeasureTheSame) {
     const Settings settings = loadShippedPreset("default");
     AccuracyMeter meter;
     const Scene near = loadBuiltin("textbook");
-    const AccuracyReport atOrigin = meter.measure(near, settings, cameraFor(settings.camera, near), kWidth, kHeight);
+    const AccuracyReport atOrigin = meter.measure(near, settings, cameraFor(settings.camera, near, double(kWidth) / kHeight), kWidth, kHeight);
     Scene far = loadBuiltin("textbook");
     for (Instance& instance : far.instances)
         instance.transform = glm::translate(glm::mat4(1.0f), glm::vec3(1e5f, 0.0f, 1e5f)) * instance.transform;
     far.computeBounds();
-    const AccuracyReport atFar = meter.measure(far, settings, cameraFor(settings.camera, far), kWidth, kHeight);
+    const AccuracyReport atFar = meter.measure(far, settings, cameraFor(settings.camera, far, double(kWidth) / kHeight), kWidth, kHeight);
     ASSERT_TRUE(atOrigin.ok && atFar.ok) << atOrigin.error << atFar.error;
     saveOverlay(atFar, "textbook-far-away");
     EXPECT_NEAR(double(atFar.counts.lit), double(atOrigin.counts.lit), 0.002 * double(atOrigin.counts.lit));
@@ -244,7 +245,7 @@ TEST_F(AccuracyMeterTest, SpotLightConeIsCounted) {
     settings.light.position = glm::vec3(2.0f, 9.0f, 2.0f);
     settings.light.direction = glm::vec3(-0.2f, -1.0f, -0.2f);
     settings.light.spotConeDeg = 50.0f;
-    const AccuracyReport r = meter.measure(scene, settings, cameraFor(settings.camera, scene), kWidth, kHeight);
+    const AccuracyReport r = meter.measure(scene, settings, cameraFor(settings.camera, scene, double(kWidth) / kHeight), kWidth, kHeight);
     ASSERT_TRUE(r.ok) << r.error;
     saveOverlay(r, "textbook-spot");
     EXPECT_GT(r.counts.outsideCone, 1000u);
@@ -261,10 +262,12 @@ TEST_F(AccuracyMeterTest, DepthBiasUnitsMatchTheRenderersBiasAmount) {
             settings.light.type = type;
             settings.shadow.format = format;
             settings.shadow.depthBias = 1000.0f;
+            settings.shadow.slopeScaledDepthBias = 0.0f;
             const View view = renderView(renderer, scene, settings, 64, 64);
             ASSERT_TRUE(view.stats.ok);
-            const double perUnit = depthBiasUnitTexels(view.stats.light, format);
-            EXPECT_NEAR(perUnit * 1000.0, view.stats.bias.constantTexels, 1e-9 * view.stats.bias.constantTexels);
+            const double perUnit = depthBiasUnitTexels(view.stats.light, format,
+                                                       receiverDepths(scene, view.stats.light, view.stats.renderOrigin));
+            EXPECT_NEAR(perUnit * 1000.0, view.stats.bias.total.texels, 1e-9 * view.stats.bias.total.texels);
         }
     }
 }
@@ -278,7 +281,7 @@ TEST_F(AccuracyMeterTest, ASecondHeadlessContextOnAWorkerThreadMeasuresBesideThi
         try {
             HeadlessContext context;  // as the editor's accuracy worker does
             AccuracyMeter meter;
-            fromWorker = meter.measure(scene, settings, cameraFor(settings.camera, scene), 200, 120);
+            fromWorker = meter.measure(scene, settings, cameraFor(settings.camera, scene, 200.0 / 120.0), 200, 120);
         } catch (const std::exception& e) {
             workerError = e.what();
         }
@@ -290,7 +293,7 @@ TEST_F(AccuracyMeterTest, ASecondHeadlessContextOnAWorkerThreadMeasuresBesideThi
     // This thread's context survived the worker's context ending.
     sharedContext().makeCurrent();
     AccuracyMeter meter;
-    const AccuracyReport here = meter.measure(scene, settings, cameraFor(settings.camera, scene), 200, 120);
+    const AccuracyReport here = meter.measure(scene, settings, cameraFor(settings.camera, scene, 200.0 / 120.0), 200, 120);
     ASSERT_TRUE(here.ok) << here.error;
     EXPECT_EQ(here.counts.lit, fromWorker.counts.lit);
     EXPECT_EQ(here.counts.acne, fromWorker.counts.acne);

@@ -27,7 +27,7 @@ TEST_F(BiasTunerTest, FromZeroBiasEndsWithinTheAcneLimitWithLessLeakThanPeterPan
         const Scene scene = loadBuiltin(name);
         AccuracyMeter meter;
         const Settings start = zeroBias(loadShippedPreset("default"));
-        const Camera camera = cameraFor(start.camera, scene);
+        const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
         const AccuracyReport atZero = meter.measure(scene, start, camera, 480, 270);
         ASSERT_TRUE(atZero.ok) << atZero.error;
         EXPECT_GT(atZero.acnePercent, 0.1) << "zero bias must have acne for the test to mean anything";
@@ -225,7 +225,7 @@ TEST_F(BiasTunerTest, SaysWhenNoSettingReachesTheLimit) {
     const Scene scene = loadBuiltin("textbook");
     AccuracyMeter meter;
     Settings start = zeroBias(loadShippedPreset("default"));
-    const Camera camera = cameraFor(start.camera, scene);
+    const Camera camera = cameraFor(start.camera, scene, 160.0 / 90.0);
     const TuneResult refused = tuneBias(meter, scene, start, camera, 160, 90, -1.0);
     EXPECT_FALSE(refused.ok);
     EXPECT_NE(refused.error.find("limit"), std::string::npos);
@@ -254,7 +254,7 @@ TEST_F(BiasTunerTest, CancelStopsTheSearch) {
     AccuracyMeter meter;
     const Settings start = zeroBias(loadShippedPreset("default"));
     AccuracyProgress progress;
-    const TuneResult result = tuneBias(meter, scene, start, cameraFor(start.camera, scene), 160, 90, 0.1, &progress,
+    const TuneResult result = tuneBias(meter, scene, start, cameraFor(start.camera, scene, 160.0 / 90.0), 160, 90, 0.1, &progress,
                                        [&](const TuneStep& step) {
                                            if (step.index == 2) progress.cancel = true;
                                        });

@@ -20,6 +20,20 @@ expect_ok render-set "$SHADOWLAB" render --scene builtin:fence --preset soft --s
 [ "$(png_size fence-map.png)" = "512 512" ] && pass "--set shadow.resolution applies" || fail "fence-map size"
 grep -q "PCF_KERNEL 5" render-set.out && pass "--set filter.kernel reaches the shader" || fail "kernel not in variants"
 
+# Issue 9, observation 5: with a far plane of 1e6 the bias report gives D32F's step at the receivers' real depth
+# (2^-40, not 2^-24), the slope-scaled term and the clamp, and says the clip space's precision exceeds the bias.
+expect_ok render-far "$SHADOWLAB" render --scene builtin:textbook --set projection.autoFit=false \
+  --set projection.far=1e6 --width 64 --height 64 --out far.png
+grep -q "nearest receivers (depth 1.27e-05, r = 2^-40)" render-far.out && pass "DepthBias step at the receivers" \
+  || fail "no receiver-depth step in: $(cat render-far.out)"
+grep -q "SlopeScaledDepthBias 2 x median depth slope" render-far.out && grep -q "DepthBiasClamp: none" render-far.out \
+  && pass "slope term and clamp reported" || fail "slope / clamp missing in: $(cat render-far.out)"
+grep -q "more than the total bias: expect acne" render-far.out && pass "clip-space precision warns" \
+  || fail "no precision warning in: $(cat render-far.out)"
+# Observation 6: the camera keeps a millimetre at a million units through --set.
+expect_ok render-camera "$SHADOWLAB" render --scene builtin:textbook --set camera.autoFrame=false \
+  --set camera.position=[1000000.001,5,5] --set camera.target=[1000000,0,0] --width 32 --height 32 --out cam.png
+
 for view in lit shadow light-depth; do
   expect_ok "view-$view" "$SHADOWLAB" render --scene builtin:thin-walls --view "$view" --width 64 --height 64 --out "v-$view.png"
 done

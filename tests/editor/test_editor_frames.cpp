@@ -1,5 +1,7 @@
 // Frames: idle frames run no pass, a camera move runs only the main pass, the camera controls, the viewer.
 #include "editor_harness.h"
+#include "frame/camera.h"
+#include "frame/orbit_camera.h"
 
 namespace shadowlab::editor::test {
 
@@ -49,8 +51,17 @@ TEST_F(EditorFrames, WheelZoomsPanMovesTheTargetAndFFramesTheScene) {
     EXPECT_GT(glm::length(h.editor().orbitCamera()->target() - panned), 0.1);
     h.moveMouse(h.rect("viewport.image").centerX(), h.rect("viewport.image").centerY());
     h.pressKey(keys::kF);
+    // F fills the view with the scene from the current direction (auto-framing's fit): the pan is undone, the target
+    // is back inside the scene, and framing the result again moves nothing.
+    const OrbitCamera& orbit = *h.editor().orbitCamera();
+    EXPECT_GT(glm::length(orbit.target() - panned), 0.1);
     const glm::dvec3 center(h.state().scene->bounds.center());
-    EXPECT_LT(glm::length(h.editor().orbitCamera()->target() - center), 1e-6);
+    EXPECT_LT(glm::length(orbit.target() - center), double(h.state().scene->bounds.radius()));
+    Camera again = orbit.toCamera();
+    const ImVec4 view = h.editor().viewportRect();
+    frameScene(again, *h.state().scene, double(view.z) / double(view.w));
+    EXPECT_LT(glm::length(again.target - orbit.target()), 1e-6);
+    EXPECT_LT(glm::length(again.position - orbit.eye()), 1e-6);
 }
 
 TEST_F(EditorFrames, ShadowMapViewerZoomsAndShowsTheDepthUnderTheCursor) {

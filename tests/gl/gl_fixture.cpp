@@ -56,7 +56,7 @@ View renderView(Renderer& renderer, const Scene& scene, const Settings& settings
     View view;
     view.width = width;
     view.height = height;
-    view.stats = renderer.render(scene, settings, cameraFor(settings.camera, scene), target);
+    view.stats = renderer.render(scene, settings, cameraFor(settings.camera, scene, double(width) / height), target);
     EXPECT_TRUE(view.stats.ok) << view.stats.error;
     view.rgba = target.readColor();
     return view;

@@ -69,7 +69,7 @@ TEST_F(FrameWork, ResolutionAboveTheGpuLimitKeepsThePreviousMapWithAMessage) {
     s.shadow.resolution = renderer.glInfo().maxTextureSize * 2;
     RenderTarget target;
     target.resize(64, 64);
-    const FrameStats stats = renderer.render(scene, s, cameraFor(s.camera, scene), target);
+    const FrameStats stats = renderer.render(scene, s, cameraFor(s.camera, scene, 1.0), target);
     EXPECT_TRUE(stats.ok);
     EXPECT_EQ(stats.shadowMapResolution, 1024);
     ASSERT_FALSE(stats.warnings.empty());
@@ -83,12 +83,12 @@ TEST_F(FrameWork, InvalidSettingsDrawNothingAndSayWhy) {
     RenderTarget target;
     target.resize(64, 64);
     s.shadow.depthBias = std::nanf("");
-    FrameStats stats = renderer.render(scene, s, cameraFor(s.camera, scene), target);
+    FrameStats stats = renderer.render(scene, s, cameraFor(s.camera, scene, 1.0), target);
     EXPECT_FALSE(stats.ok);
     EXPECT_NE(stats.error.find("shadow.depthBias"), std::string::npos) << stats.error;
     s = loadShippedPreset("default");
     s.light.direction = glm::vec3(0.0f);
-    stats = renderer.render(scene, s, cameraFor(s.camera, scene), target);
+    stats = renderer.render(scene, s, cameraFor(s.camera, scene, 1.0), target);
     EXPECT_FALSE(stats.ok);
     EXPECT_NE(stats.error.find("light.direction"), std::string::npos) << stats.error;
 }

@@ -82,6 +82,9 @@ TEST_F(HardCases, DepthClampKeepsCastersBeforeTheNearPlane) {
     Renderer renderer;
     const Scene scene = loadBuiltin("textbook");
     Settings s = topDownShadowView(loadShippedPreset("default"));
+    // Back culling: the map holds only the cube's light-facing top, which the near plane clips (with cull mode none
+    // the bottom face still casts, clamp or not).
+    s.shadow.cullMode = CullMode::Back;
     const View fitted = renderView(renderer, scene, s, 320, 320);
     const double eyeToCentre = 0.5 * fitted.stats.light.farPlane;  // the auto-fit eye sits one radius before the centre
     s.projection.autoFit = false;

@@ -43,7 +43,7 @@ protected:
     void render(const Settings& settings) {
         renderer_ = std::make_unique<Renderer>();
         ASSERT_EQ(target_.resize(kWidth, kHeight), "");
-        stats_ = renderer_->render(scene_, settings, cameraFor(settings.camera, scene_), target_);
+        stats_ = renderer_->render(scene_, settings, cameraFor(settings.camera, scene_, double(target_.width()) / target_.height()), target_);
         ASSERT_TRUE(stats_.ok) << stats_.error;
         before_ = target_.readColor();
         depth_.resize(std::size_t(kWidth) * kHeight);

@@ -1,6 +1,6 @@
 // The editor's orbit camera (pure maths, no GL context needed): orbiting keeps the distance and the target, pitch
 // stops short of the poles, a pan keeps the point under the cursor under the cursor, zoom is multiplicative and
-// clamped, F fits the scene's bounding sphere, and Camera round trips.
+// clamped, F fills the view with the scene as auto-framing does, and Camera round trips.
 #include "frame/orbit_camera.h"
 
 #include <glm/ext/matrix_double4x4.hpp>
@@ -114,34 +114,43 @@ TEST(OrbitCamera, ZoomIsMultiplicativeAndClamped) {
     EXPECT_GT(orbit.toCamera().farPlane, orbit.distance());  // near/far follow the eye
 }
 
-TEST(OrbitCamera, FrameFitsTheBoundingSphereToTheNarrowerFieldOfView) {
-    const Bounds scene = cube(3.0, glm::vec3(10.0f, 0.0f, -4.0f));
-    for (const double aspect : {16.0 / 9.0, 0.5}) {
+TEST(OrbitCamera, FrameFillsTheViewWithTheSceneFromTheSameDirection) {
+    // A box's eight corners as the scene's vertices.
+    Scene scene;
+    Mesh box;
+    const glm::vec3 center(10.0f, 0.0f, -4.0f), half(3.0f, 1.0f, 2.0f);
+    for (int i = 0; i < 8; ++i)
+        box.positions.push_back(center + glm::vec3((i & 1) ? half.x : -half.x, (i & 2) ? half.y : -half.y,
+                                                   (i & 4) ? half.z : -half.z));
+    scene.meshes.push_back(box);
+    scene.instances.push_back({0, glm::mat4(1.0f)});
+    scene.computeBounds();
+    for (const int width : {1067, 300}) {
+        const int height = 600;
+        const double aspect = double(width) / height;
         OrbitCamera orbit(startCamera(), cube(1.0));
         orbit.orbit(123.0, -17.0);
         orbit.pan(300.0, 100.0, 600);
         const double yaw = orbit.yawRad(), pitch = orbit.pitchRad();
         orbit.frame(scene, aspect);
-        EXPECT_NEAR(glm::distance(orbit.target(), glm::dvec3(scene.center())), 0.0, 1e-6);
-        EXPECT_EQ(orbit.yawRad(), yaw);  // framing keeps the viewing direction
-        EXPECT_EQ(orbit.pitchRad(), pitch);
-        // The sphere touches the narrower side of the view: its silhouette's angular radius is that half-angle.
-        const int height = 600, width = int(std::lround(height * aspect));
+        EXPECT_NEAR(orbit.yawRad(), yaw, 1e-12);  // framing keeps the viewing direction
+        EXPECT_NEAR(orbit.pitchRad(), pitch, 1e-12);
+        // Every corner projects inside the view, the corners span kAutoFrameFill of the limiting dimension and
+        // leave equal margins on both of its sides.
         const Camera camera = orbit.toCamera();
-        const double radius = double(scene.radius());
-        const double angular = std::asin(radius / orbit.distance());
-        const double halfY = glm::radians(camera.fovYDeg) * 0.5;
-        const double halfX = std::atan(std::tan(halfY) * aspect);
-        EXPECT_NEAR(angular, std::min(halfX, halfY), 1e-9);
-        // And every corner of the box projects inside the view.
-        for (int i = 0; i < 8; ++i) {
-            const glm::dvec3 corner((i & 1) ? scene.max.x : scene.min.x, (i & 2) ? scene.max.y : scene.min.y,
-                                    (i & 4) ? scene.max.z : scene.min.z);
-            const glm::dvec2 p = toPixel(camera, corner, width, height);
-            EXPECT_GE(p.x, 0.0);
-            EXPECT_LE(p.x, width);
-            EXPECT_GE(p.y, 0.0);
-            EXPECT_LE(p.y, height);
+        glm::dvec2 lo(1e300), hi(-1e300);
+        for (const glm::vec3& corner : box.positions) {
+            const glm::dvec2 p = toPixel(camera, glm::dvec3(corner), width, height);
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
         }
+        EXPECT_GE(lo.x, 0.0);
+        EXPECT_GE(lo.y, 0.0);
+        EXPECT_LE(hi.x, width);
+        EXPECT_LE(hi.y, height);
+        const double fillX = (hi.x - lo.x) / width, fillY = (hi.y - lo.y) / height;
+        EXPECT_NEAR(std::max(fillX, fillY), kAutoFrameFill, 1e-6) << fillX << " x " << fillY;
+        if (fillX > fillY) EXPECT_NEAR(lo.x, width - hi.x, 1e-6);
+        else EXPECT_NEAR(lo.y, height - hi.y, 1e-6);
     }
 }

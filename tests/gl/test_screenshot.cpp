@@ -28,7 +28,7 @@ protected:
         ASSERT_EQ(target_.resize(320, 200), "");
         const Settings settings = loadShippedPreset("default");
         renderer_ = std::make_unique<Renderer>();
-        stats_ = renderer_->render(scene_, settings, cameraFor(settings.camera, scene_), target_);
+        stats_ = renderer_->render(scene_, settings, cameraFor(settings.camera, scene_, double(target_.width()) / target_.height()), target_);
         ASSERT_TRUE(stats_.ok) << stats_.error;
     }
     static std::chrono::system_clock::time_point at(int year, int month, int day, int h, int m, int s) {

@@ -19,7 +19,7 @@ protected:
     void render(const Settings& settings) {
         if (!renderer_) renderer_ = std::make_unique<Renderer>();
         if (target_.width() == 0) ASSERT_EQ(target_.resize(160, 120), "");
-        stats_ = renderer_->render(scene_, settings, cameraFor(settings.camera, scene_), target_);
+        stats_ = renderer_->render(scene_, settings, cameraFor(settings.camera, scene_, double(target_.width()) / target_.height()), target_);
         ASSERT_TRUE(stats_.ok) << stats_.error;
         depth_ = map().readDepth();
     }

@@ -78,7 +78,7 @@ Settings awkwardSettings() {
     s.shadow.slopeScaledDepthBias = 1e-7f;
     s.shadow.depthBiasClamp = std::numeric_limits<float>::denorm_min();  // 1.4e-45, the smallest denormal
     s.shadow.normalOffset = 1e-40f;                                     // another denormal
-    s.shadow.cullMode = CullMode::None;
+    s.shadow.cullMode = CullMode::Front;  // not the default (none)
     s.light.type = LightType::Spot;
     s.light.direction = {1.0f / 3.0f, -std::numeric_limits<float>::min(), -0.7f};
     s.light.position = {1e7f, -9999999.0f, 16777217.0f / 4.0f};

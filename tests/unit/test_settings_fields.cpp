@@ -233,7 +233,7 @@ TEST(SettingsOverride, ParsesJsonOrBareStrings) {
     EXPECT_EQ(applySettingOverride(s, "light.direction=[0,-1,0.5]"), "");
     EXPECT_EQ(s.light.direction, glm::vec3(0, -1, 0.5f));
     EXPECT_EQ(applySettingOverride(s, "camera.target = 1, 2, 3"), "");  // no brackets, spaces around '='
-    EXPECT_EQ(s.camera.target, glm::vec3(1, 2, 3));
+    EXPECT_EQ(s.camera.target, glm::dvec3(1, 2, 3));
     EXPECT_EQ(applySettingOverride(s, "view=light-depth"), "");
     EXPECT_EQ(s.view, ViewMode::LightDepth);
 }

@@ -49,16 +49,37 @@ void resolutionControls(EditorState& state) {
 
 void biasAmounts(const EditorState& state) {
     if (!state.haveStats) return;
-    const BiasAmount& b = state.stats.bias;
-    ImGui::TextDisabled("DepthBias =");
-    ImGui::SameLine();
-    ImGui::Text("%.3g texels", b.constantTexels);
-    ImGui::SameLine();
-    ImGui::TextDisabled("= %.3g world units", b.constantWorld);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("DepthBias x the format's depth step (%.3g) = %.3g in depth; along the light that is %.3g "
-                          "world units, or %.3g shadow-map texels (one texel = %.4g world units)",
-                          b.depthStep, b.constantDepth, b.constantWorld, b.constantTexels, b.texelWorldSize);
+    // The bias at this scene's receivers, each term in depth, world units and texels; the frame report's full
+    // sentences (what r is, at which depths) in the tooltip.
+    const BiasReport& b = state.stats.bias;
+    auto row = [](const char* term, const BiasTerm& t) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("%s", term);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", t.depth);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", t.world);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", t.texels);
+    };
+    if (ImGui::BeginTable("bias amounts", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+        for (const char* header : {"bias at receivers", "depth", "world", "texels"}) ImGui::TableSetupColumn(header);
+        ImGui::TableHeadersRow();
+        const bool varies = b.constantNear.depth != b.constantFar.depth || b.constantNear.world != b.constantFar.world;
+        row(varies ? "DepthBias, nearest" : "DepthBias", b.constantNear);
+        if (varies) row("DepthBias, farthest", b.constantFar);
+        row("slope-scaled (median)", b.slope);
+        if (b.shadow.depthBiasClamp > 0.0f) row("clamp", b.clamp);
+        row("total (median)", b.total);
+        row("clip-space precision", b.clipPrecision);  // a total below it cannot beat the rounding: acne
+        ImGui::EndTable();
+    }
+    if (ImGui::IsItemHovered()) {
+        std::string text;
+        for (const std::string& line : describeBias(b)) text += line + "\n";
+        ImGui::SetTooltip("%s", text.c_str());
+    }
     ImGui::TextDisabled("normal offset = %.3g world units (texel %.3g)", b.normalOffsetWorld, b.texelWorldSize);
 }
 

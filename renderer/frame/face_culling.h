@@ -1,0 +1,23 @@
+#pragma once
+// The one rule for which faces each pass draws (glTF 2.0, "doubleSided"):
+//  - the view (main pass and G-buffer): back faces of single-sided materials are not drawn; double-sided ones are
+//    drawn from both sides. A draw without a material uses glTF's default material, which is single-sided.
+//  - the shadow pass: shadow.cullMode decides what the map holds; double-sided materials are never culled (they
+//    cast from both faces).
+// Mirrored instances (negative determinant) reverse the winding in world space, so their front face is clockwise.
+// The reference (Embree) keeps every triangle as an occluder: that is the physical truth the passes are judged by.
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+namespace shadowlab {
+
+// Sets GL_CULL_FACE, glCullFace and glFrontFace for one draw of the main pass or the G-buffer.
+void applyViewFaceCulling(const Material* material, bool mirrored);
+
+// Sets GL_CULL_FACE, glCullFace and glFrontFace for one draw of the shadow pass.
+void applyShadowFaceCulling(CullMode mode, const Material* material, bool mirrored);
+
+// Restores the GL defaults the passes assume between draws: culling off, counter-clockwise front faces.
+void resetFaceCulling();
+
+}  // namespace shadowlab
