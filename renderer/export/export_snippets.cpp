@@ -75,6 +75,12 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
           << " - 1) = " << number(e.depthStep) << "\n";
     o << c << "Bias = DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope, then clamped to DepthBiasClamp"
       << (s.depthBiasClamp == 0.0f ? " (0 = no clamp)" : "") << ".\n";
+    if (e.bias.valid)
+        o << c << "At " << e.sceneLabel << "'s receivers (window depth " << number(e.bias.receiverDepthMin) << ".."
+          << number(e.bias.receiverDepthMax) << "): DepthBias = " << number(e.bias.constantNear.world) << ".."
+          << number(e.bias.constantFar.world) << " world units, slope-scaled at the median slope = "
+          << number(e.bias.slope.world) << ", total at the median receiver = " << number(e.bias.total.world)
+          << " world units (" << number(e.bias.total.texels) << " texels).\n";
     o << c << "Winding: counter-clockwise triangles (glTF) are front faces.\n";
     o << c << "Depth clamp: " << (e.depthClamp ? "on (casters in front of the near plane still cast)" : "off") << ".\n";
     o << c << "Normal offset (in the receiver's shader, not the rasterizer): move the lookup position along the surface\n"
@@ -276,6 +282,14 @@ std::string json(const ShadowExport& e) {
                          {"texelWorldSize", e.texelWorldSize},
                          {"perspective", e.perspective}};
     j["lightVolume"] = {{"near", e.nearPlane}, {"far", e.farPlane}};
+    if (e.bias.valid)
+        j["biasAtReceivers"] = {{"receiverDepthMin", e.bias.receiverDepthMin},
+                                {"receiverDepthMax", e.bias.receiverDepthMax},
+                                {"constantWorldNearest", e.bias.constantNear.world},
+                                {"constantWorldFarthest", e.bias.constantFar.world},
+                                {"slopeWorldMedian", e.bias.slope.world},
+                                {"totalWorldMedian", e.bias.total.world},
+                                {"totalTexelsMedian", e.bias.total.texels}};
     const char* address = e.sampler.addressMode == AddressMode::Wrap          ? "wrap"
                           : e.sampler.addressMode == AddressMode::ClampToEdge ? "clamp"
                                                                               : "border";

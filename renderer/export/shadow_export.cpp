@@ -31,7 +31,7 @@ ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light,
         case DepthFormat::D32F: e.depthBits = 32; e.floatDepth = true; break;
     }
     // UNORM: r = 1 / (2^n - 1). Float: r = 2^(exponent(max depth of the primitive) - 23), 2^-24 for depths in [0.5, 1).
-    e.depthStep = e.floatDepth ? std::ldexp(1.0, -24) : 1.0 / (std::ldexp(1.0, e.depthBits) - 1.0);
+    e.depthStep = depthStepAt(settings.shadow.format, 0.75);  // D32F: the step for depths in [0.5, 1)
     e.d3dDepthBias = int(std::lround(double(settings.shadow.depthBias)));
     e.d3dDepthBiasError = double(e.d3dDepthBias) - double(settings.shadow.depthBias);
     e.texelWorldSize = light.texelWorldSize;
@@ -54,7 +54,9 @@ std::optional<ShadowExport> exportForScene(const Settings& requested, const Scen
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
     const std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, origin, error);
     if (!light) return std::nullopt;
-    return makeShadowExport(settings, *light, sceneLabel);
+    ShadowExport e = makeShadowExport(settings, *light, sceneLabel);
+    e.bias = biasReport(settings.shadow, settings.shadow.format, *light, receiverDepths(scene, *light, origin));
+    return e;
 }
 
 }  // namespace shadowlab

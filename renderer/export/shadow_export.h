@@ -8,6 +8,7 @@
 // glClipControl and glDepthRange(0,1), so window depth = clip z * 0.5 + 0.5. A D3D / Vulkan pass using the same
 // matrix remapped to [0,1] clip depth (z' = 0.5 z + 0.5 w) produces the same window depth, hence the same depth
 // slope, the same r and the same world-space bias. (tests/vulkan proves it on lavapipe.)
+#include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings.h"
 
@@ -40,6 +41,7 @@ struct ShadowExport {
     double normalOffsetWorld = 0.0; // the normal offset in world units (normalOffset texels x texelWorldSize)
     double nearPlane = 0.0, farPlane = 1.0;
     bool linearCompare = false;     // hardware 2x2 and Poisson use the comparison's bilinear filter
+    BiasReport bias;                // the bias at the scene's receivers (valid when the scene was given)
 };
 
 // The numbers for `settings` with `light` (built for the scene named `sceneLabel`).
