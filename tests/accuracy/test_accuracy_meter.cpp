@@ -72,7 +72,7 @@ TEST_F(AccuracyMeterTest, CoarseMapShowsInWrongPixelsAndWarns) {
     const Scene scene = loadBuiltin("textbook");
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
-    const Camera camera = cameraFor(settings.camera, scene);
+    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
     const AccuracyReport fine = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(fine.ok) << fine.error;
     EXPECT_EQ(fine.coarseMapWarning, "");
@@ -103,7 +103,7 @@ TEST_F(AccuracyMeterTest, CasterBeforeTheNearPlaneIsNamedWhenDepthClampIsOff) {
     settings.projection.nearPlane = 13.0f;
     settings.projection.farPlane = 40.0f;
     settings.projection.depthClamp = false;
-    const Camera camera = cameraFor(settings.camera, scene);
+    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
     const AccuracyReport clipped = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(clipped.ok) << clipped.error;
     saveOverlay(clipped, "textbook-near-clipped");
@@ -126,8 +126,9 @@ TEST_F(AccuracyMeterTest, MirroredRoofIsCulledAndExplainedLikeThePlainOne) {
     ASSERT_TRUE(mirrored.instances.front().mirrored());
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
+    settings.shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
     settings.light.direction = glm::vec3(-0.4f, -1.0f, 0.3f);  // the plain roof's light, mirrored too
-    const Camera camera = cameraFor(settings.camera, mirrored);
+    const Camera camera = cameraFor(settings.camera, mirrored, double(kWidth) / kHeight);
     const AccuracyReport back = meter.measure(mirrored, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(back.ok) << back.error;
     saveOverlay(back, "roof-mirrored-cull-back");
@@ -146,8 +147,9 @@ TEST_F(AccuracyMeterTest, MirroredRoofIsCulledAndExplainedLikeThePlainOne) {
 TEST_F(AccuracyMeterTest, CauseOverlayColoursEachMismatchedPixelByItsCause) {
     const Scene scene = loadBuiltin("roof");
     AccuracyMeter meter;
-    const Settings settings = loadShippedPreset("default");
-    const AccuracyReport r = meter.measure(scene, settings, cameraFor(settings.camera, scene), kWidth, kHeight);
+    Settings settings = loadShippedPreset("default");
+    settings.shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
+    const AccuracyReport r = meter.measure(scene, settings, cameraFor(settings.camera, scene, double(kWidth) / kHeight), kWidth, kHeight);
     ASSERT_TRUE(r.ok) << r.error;
     AccuracyReport byCause = r;
     byCause.overlayRgba = r.causeOverlayRgba;

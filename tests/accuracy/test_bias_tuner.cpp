@@ -107,7 +107,7 @@ TEST_F(BiasTunerTest, ResultIsTheBestCandidateOfItsPath) {
     const Scene scene = loadBuiltin("sphere-plane");
     AccuracyMeter meter;
     const Settings start = zeroBias(loadShippedPreset("default"));
-    const TuneResult result = tuneBias(meter, scene, start, cameraFor(start.camera, scene), 480, 270, 0.1);
+    const TuneResult result = tuneBias(meter, scene, start, cameraFor(start.camera, scene, 480.0 / 270.0), 480, 270, 0.1);
     ASSERT_TRUE(result.ok) << result.error;
     ASSERT_TRUE(result.reachedLimit);
     const auto chosen = std::find_if(result.path.begin(), result.path.end(), [&](const TuneStep& s) {
@@ -128,10 +128,11 @@ TEST_F(BiasTunerTest, ResultIsTheBestCandidateOfItsPath) {
 TEST_F(BiasTunerTest, RoofLeakIsACulledCasterAndTheTunerPicksACullModeThatFixesIt) {
     const Scene scene = loadBuiltin("roof");
     AccuracyMeter meter;
-    const Settings start = zeroBias(loadShippedPreset("default"));
-    ASSERT_EQ(start.shadow.cullMode, CullMode::Back);
-    const Camera camera = cameraFor(start.camera, scene);
-    const AccuracyReport culled = meter.measure(scene, loadShippedPreset("default"), camera, 480, 270);
+    Settings backCulled = loadShippedPreset("default");
+    backCulled.shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
+    const Settings start = zeroBias(backCulled);
+    const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
+    const AccuracyReport culled = meter.measure(scene, backCulled, camera, 480, 270);
     ASSERT_TRUE(culled.ok) << culled.error;
     saveOverlay(culled, "roof-default");
     EXPECT_GT(culled.leakPercent, 50.0);
@@ -165,7 +166,7 @@ TEST_F(BiasTunerTest, GrazingWithABiasClampNeverAcceptsFaintAcne) {
     AccuracyMeter meter;
     Settings start = loadShippedPreset("default");
     start.shadow.depthBiasClamp = 0.001f;
-    const Camera camera = cameraFor(start.camera, scene);
+    const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
     Settings acceptedByVersion1 = start;
     acceptedByVersion1.shadow.depthBias = 0.0f;
     acceptedByVersion1.shadow.slopeScaledDepthBias = 0.0f;
@@ -201,7 +202,7 @@ TEST_F(BiasTunerTest, AlphaBlendModeTestStripesCountAsAcneAndTuneDoesNotAcceptTh
     Settings start = loadShippedPreset("acne");
     start.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
     start.filter.kind = FilterKind::Pcf;
-    const Camera camera = cameraFor(start.camera, scene);
+    const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
     Settings striped = start;
     striped.shadow.depthBias = 2816.0f;
     const AccuracyReport stripes = meter.measure(scene, striped, camera, 640, 360);

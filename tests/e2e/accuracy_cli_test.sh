@@ -33,7 +33,7 @@ done
 
 # Issue 9, observation 3: the roof's leak is named as a culled caster, with its remedy.
 expect_ok measure-roof "$SHADOWLAB" measure --scene builtin:roof --preset default --width 320 --height 180 \
-  --json roof.json
+  --set shadow.cullMode=back --json roof.json
 grep -q "caster culled in the shadow pass .*shadow.cullMode=none" measure-roof.out && pass "roof: cause and remedy" \
   || fail "roof causes: $(grep -A4 'causes of' measure-roof.out)"
 culled=$(python3 -c "import json; print(json.load(open('roof.json'))['causes']['casterCulled']['percentOfWrong'])")
@@ -77,7 +77,7 @@ grep -q "NO setting reached.*stopped by outside the light's volume" tune-hopeles
 
 # The roof: tune searches the cull mode and the result fixes the leak.
 expect_ok tune-roof "$SHADOWLAB" tune --scene builtin:roof --preset default --width 320 --height 180 \
-  --out roof-tuned.json
+  --set shadow.cullMode=back --out roof-tuned.json
 grep -q "^result:.*cullMode \(none\|front\)" tune-roof.out && pass "tune picks a cull mode for the roof" \
   || fail "roof tune: $(grep '^result' tune-roof.out)"
 

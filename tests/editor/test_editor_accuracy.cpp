@@ -335,11 +335,19 @@ TEST_F(EditorAccuracy, ClosingTheEditorDuringASearchCancelsItAndEndsTheWorker) {
 // The roof (issue 9, observation 3) in the editor: the Causes tab names the culled caster with its remedy and share,
 // the overlay by cause paints it, and Suggest bias applies a cull mode that fixes it.
 TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACullMode) {
-    open();
+    // Back-face culling drops the single-sided roof (the default, none, keeps it).
+    const PresetLoadResult base = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/default.json");
+    ASSERT_TRUE(base.settings.has_value());
+    Settings backCulled = *base.settings;
+    backCulled.shadow.cullMode = CullMode::Back;
+    const std::string path = (folder / "cull-back.json").string();
+    ASSERT_EQ(savePresetFile(path, backCulled, "cull-back"), "");
+    open(path);
     EditorHarness& h = *harness;
     h.editor().requestScene("builtin:roof");
     h.settle();
     ASSERT_EQ(h.state().sceneSpec, "builtin:roof");
+    ASSERT_EQ(h.state().settings.shadow.cullMode, CullMode::Back);
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.measure");
     waitForJob();
