@@ -1,0 +1,43 @@
+// Changing the depth format in the editor keeps DepthBias's world size: the bias is re-expressed, the status line
+// says so, and its Undo brings the old format and number back.
+#include "editor_harness.h"
+
+#include "light/depth_bias.h"
+
+#include <gtest/gtest.h>
+
+namespace shadowlab::editor::test {
+
+TEST(EditorDepthFormat, D32fToD16ReexpressesDepthBiasAndUndoRestoresIt) {
+    EditorHarness h(testOptions(testFolder("depth-format-change")));
+    h.settle();
+    ASSERT_EQ(h.state().settings.shadow.format, DepthFormat::D32F);
+    ASSERT_TRUE(h.state().stats.bias.valid);
+    const Settings before = h.state().settings;
+    const BiasReport biasBefore = h.state().stats.bias;
+
+    h.click("shadow.depthFormat");
+    h.click("shadow.depthFormat=d16");
+    EXPECT_EQ(h.state().settings.shadow.format, DepthFormat::D16);
+    // Not 2 units of D16 (512x the world bias): the same depth offset at the receivers.
+    const double r32 = depthStepAt(DepthFormat::D32F, biasBefore.receiverDepthMedian);
+    EXPECT_NEAR(double(h.state().settings.shadow.depthBias) / 65535.0, double(before.shadow.depthBias) * r32, 1e-12);
+    ASSERT_NE(h.state().lastMessage(), nullptr);
+    EXPECT_NE(h.state().lastMessage()->text.find("(d32f) -> "), std::string::npos) << h.state().lastMessage()->text;
+    EXPECT_NE(h.state().lastMessage()->text.find("(d16), same world bias"), std::string::npos);
+    h.settle();
+    // The frame's report agrees: the constant term is the same world distance as before.
+    EXPECT_NEAR(h.state().stats.bias.constantNear.world, biasBefore.constantNear.world,
+                1e-3 * biasBefore.constantNear.world);
+    h.saveWindow("depth-format-change");
+
+    ASSERT_TRUE(h.hasControl("status.undo"));
+    h.click("status.undo");
+    EXPECT_EQ(h.state().settings.shadow.format, DepthFormat::D32F);
+    EXPECT_EQ(h.state().settings.shadow.depthBias, before.shadow.depthBias);
+    EXPECT_FALSE(h.state().undo.has_value());
+    h.frame(2);
+    EXPECT_FALSE(h.hasControl("status.undo")) << "the undo is gone once used";
+}
+
+}  // namespace shadowlab::editor::test
