@@ -30,5 +30,5 @@ expect_error export-bad-format "--format: 'd3d9' is not one of d3d12|d3d11|vulka
 expect_error export-bad-preset "no-such-preset" "$SHADOWLAB" export --preset no-such-preset --format gl
 expect_error export-bad-set "shadow.depthFormat" "$SHADOWLAB" export --set shadow.depthFormat=d8 --format gl
 expect_error export-bad-out "--out" "$SHADOWLAB" export --format gl --out /nonexistent-folder/x.h
-expect_error export-bad-scene "builtin:nope" "$SHADOWLAB" export --format gl --scene builtin:nope
+expect_error export-bad-scene "unknown built-in scene 'nope'" "$SHADOWLAB" export --format gl --scene builtin:nope
 finish
