@@ -4,6 +4,7 @@
 #include "export/export_snippets.h"
 #include "gl_fixture.h"
 #include "image/depth_visualization.h"
+#include "light/depth_bias.h"
 #include "scene/builtin_scenes.h"
 #include "vulkan_depth_pass.h"
 
@@ -20,13 +21,14 @@ struct MapDifference {
     long overOneStep = 0;         // texels differing by more than one step
     double maxExcessSubpixels = 0.0;  // largest (|vulkan - gl| - one step) / the depth change over one subpixel
     long overBound = 0;           // texels differing by more than one step plus one subpixel's depth change
+    long overCoarsestR = 0;       // texels differing by more than the format's r in [0.5, 1) (D32F: 2^-24)
     long written = 0;             // texels a caster wrote in the GL map
     std::vector<std::uint8_t> picture;  // grey: the GL map; orange: over one step; red: over the bound
 };
 
 // One depth step at `depth`: UNORM 1/(2^16 - 1); float: the spacing of floats at that depth (stricter than r,
 // which is the spacing at the primitive's largest depth).
-double depthStepAt(float depth, bool d16) {
+double storedStepAt(float depth, bool d16) {
     if (d16) return 1.0 / 65535.0;
     if (depth <= 0.0f) return std::ldexp(1.0, -149);
     return std::ldexp(1.0, std::ilogb(depth) - 23);
@@ -57,11 +59,12 @@ MapDifference compareMaps(const std::vector<float>& gl, const std::vector<float>
     for (int y = 0; y < resolution; ++y)
         for (int x = 0; x < resolution; ++x) {
             const std::size_t i = std::size_t(y) * std::size_t(resolution) + std::size_t(x);
-            const double step = depthStepAt(std::max(gl[i], vk[i]), d16);
+            const double step = storedStepAt(std::max(gl[i], vk[i]), d16);
             const double difference = std::abs(double(vk[i]) - double(gl[i]));
             d.maxSteps = std::max(d.maxSteps, difference / step);
             const bool overStep = difference > step;
             d.overOneStep += overStep;
+            d.overCoarsestR += difference > depthStepAt(d16 ? DepthFormat::D16 : DepthFormat::D32F, 0.75);
             bool overBound = false;
             if (overStep) {
                 const double slopeTerm = depthSlopeAt(gl, resolution, x, y) * subpixel;
@@ -137,8 +140,9 @@ TEST_P(VulkanExportTest, LavapipeMapMatchesTheGlMapWithinOneDepthStep) {
     writePng(std::string(SHADOWLAB_TEST_OUTPUT) + "/" + name + ".png", input.resolution, input.resolution, 3,
              d.picture.data(), true);
     std::printf("[ lavapipe ] %s on %s: max |vk - gl| = %.3g depth steps; %ld of %ld written texels (%.3f%%) over one "
-                "step, by at most %.4f of a 1/%d-texel subpixel's depth change beyond the step; %ld over that bound\n", name.c_str(), vk.deviceName.c_str(), d.maxSteps, d.overOneStep, d.written,
-                100.0 * double(d.overOneStep) / double(d.written), d.maxExcessSubpixels, 1 << vk.subPixelPrecisionBits,
+                "step (%ld over r in [0.5,1)), by at most %.4f of a 1/%d-texel subpixel's depth change beyond the step; %ld "
+                "over that bound\n", name.c_str(), vk.deviceName.c_str(), d.maxSteps, d.overOneStep, d.written,
+                100.0 * double(d.overOneStep) / double(d.written), d.overCoarsestR, d.maxExcessSubpixels, 1 << vk.subPixelPrecisionBits,
                 d.overBound);
     EXPECT_GT(d.written, long(glMap.size() / 50)) << "the casters cover the map";
     EXPECT_LE(double(d.overBound), 1e-4 * double(d.written))
