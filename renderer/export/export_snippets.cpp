@@ -78,7 +78,7 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
     if (e.bias.valid)
         o << c << "At " << e.sceneLabel << "'s receivers (window depth " << number(e.bias.receiverDepthMin) << ".."
           << number(e.bias.receiverDepthMax) << "): DepthBias = " << number(e.bias.constantNear.world) << ".."
-          << number(e.bias.constantFar.world) << " world units, slope-scaled at the median slope = "
+          << number(e.bias.constantFar.world) << " world units,\n" << c << "  slope-scaled at the median slope = "
           << number(e.bias.slope.world) << ", total at the median receiver = " << number(e.bias.total.world)
           << " world units (" << number(e.bias.total.texels) << " texels).\n";
     o << c << "Winding: counter-clockwise triangles (glTF) are front faces.\n";
@@ -221,7 +221,8 @@ std::string gl(const ShadowExport& e) {
     const ShadowMapSettings& s = e.shadow;
     std::ostringstream o;
     o << conventions(e, ExportFormat::GL, "// ");
-    o << "// r for UNORM formats is the implementation's; Mesa and the common drivers use 1/(2^n - 1) as above.\n";
+    if (!e.floatDepth)
+        o << "// GL leaves a UNORM format's r to the implementation; Mesa and the common drivers use 1/(2^n - 1).\n";
     o << "glTextureStorage2D(shadowMap, 1, " << formatName(e, ExportFormat::GL) << ", " << s.resolution << ", "
       << s.resolution << ");\n";
     o << "glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_LESS);\nglClearDepth(1.0);\n";
