@@ -141,7 +141,7 @@ std::string d3d(const ShadowExport& e, ExportFormat api) {
     if (e.d3dDepthBiasError != 0.0)
         o << "// DepthBias is an INT here: " << number(s.depthBias) << " rounds to " << e.d3dDepthBias << " (off by "
           << number(e.d3dDepthBiasError) << " r)."
-          << (d3d12 ? " D3D12_RASTERIZER_DESC1/DESC2 (ID3D12Device10) take FLOAT DepthBias = " + floatLiteral(s.depthBias) +
+          << (d3d12 ? " D3D12_RASTERIZER_DESC1/DESC2 (Agility SDK pipeline state streams) take FLOAT DepthBias = " + floatLiteral(s.depthBias) +
                           " exactly."
                     : std::string(" Use a format with a finer r, or scale SlopeScaledDepthBias instead."))
           << "\n";
@@ -178,6 +178,10 @@ std::string vulkan(const ShadowExport& e) {
     o << "// Winding: with a positive-height viewport Vulkan's framebuffer y runs the other way from GL's window y, so\n"
          "// ShadowLab's counter-clockwise front faces wind clockwise: frontFace = VK_FRONT_FACE_CLOCKWISE, and image row 0\n"
          "// is clip y = -1, the same texel order as ShadowLab's GL map. (Negative-height viewport: COUNTER_CLOCKWISE.)\n";
+    if (!e.floatDepth)
+        o << "// Core Vulkan leaves a UNORM format's r to the implementation (some scale it up to 2x to guarantee a\n"
+             "// resolvable offset); lavapipe uses 1/(2^n - 1) as above. To pin it, chain VkDepthBiasRepresentationInfoEXT\n"
+             "// (VK_EXT_depth_bias_control): LEAST_REPRESENTABLE_VALUE_FORMAT_EXT with depthBiasExact = VK_TRUE.\n";
     if (e.depthClamp) o << "// depthClampEnable needs VkPhysicalDeviceFeatures::depthClamp.\n";
     if (s.depthBiasClamp != 0.0f) o << "// A non-zero depthBiasClamp needs VkPhysicalDeviceFeatures::depthBiasClamp.\n";
     const char* cull = s.cullMode == CullMode::Back    ? "VK_CULL_MODE_BACK_BIT"

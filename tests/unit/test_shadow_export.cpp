@@ -67,6 +67,7 @@ TEST(ShadowExport, D16SnippetsCarryTheFormatsNumbers) {
     EXPECT_TRUE(contains(vk, "shadowRaster.cullMode = VK_CULL_MODE_FRONT_BIT;"));
     EXPECT_TRUE(contains(vk, "shadowRaster.frontFace = VK_FRONT_FACE_CLOCKWISE;"));
     EXPECT_TRUE(contains(vk, "needs VkPhysicalDeviceFeatures::depthBiasClamp"));
+    EXPECT_TRUE(contains(vk, "depthBiasExact = VK_TRUE")) << "how to pin a UNORM format's r in Vulkan";
     const std::string gl = exportSnippet(e, ExportFormat::GL);
     EXPECT_TRUE(contains(gl, "GL_DEPTH_COMPONENT16, 2048, 2048"));
     EXPECT_TRUE(contains(gl, "glPolygonOffsetClamp(1.25f, 1.5f, 0.001f);")) << gl;
