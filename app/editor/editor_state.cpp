@@ -18,6 +18,7 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
     const std::string error = applyEdit(settings, key, value, limits);
     if (error.empty()) {
         fieldErrors.erase(std::string(key));
+        if (key == "shadow.depthBias" || key == "shadow.depthFormat") undo.reset();  // its numbers are gone
         if (key == "shadow.depthFormat" && settings.shadow.format != before.shadow.format) {
             // The receivers' depth decides D32F's step; the newest frame knows it.
             const std::optional<double> receiverDepth =
@@ -38,7 +39,9 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
 
 void EditorState::undoLastStep() {
     if (!undo) return;
-    settings = undo->before;
+    // Only what the step changed: edits made since (slope, filter, ...) stay.
+    settings.shadow.format = undo->before.shadow.format;
+    settings.shadow.depthBias = undo->before.shadow.depthBias;
     const std::string note = undo->note;
     undo.reset();
     say("Undone: " + note);

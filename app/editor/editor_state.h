@@ -108,7 +108,7 @@ struct EditorState {
     // A new shadow.depthFormat re-expresses DepthBias so it keeps its world size (see depth_format_change.h) and
     // says so, with an undo.
     bool edit(std::string_view key, const nlohmann::json& value);
-    // Restores the settings from before the step's edit (the status line's Undo).
+    // Puts back the format and DepthBias from before the step (the status line's Undo); later edits stay.
     void undoLastStep();
     void say(std::string text, bool error = false);
     const std::string* fieldError(const std::string& key) const;

@@ -35,8 +35,12 @@ TEST(EditorDepthFormat, D32fToD16ReexpressesDepthBiasAndUndoRestoresIt) {
     EXPECT_LT(after.constantNear.world, 2.0 * biasBefore.constantFar.world) << "not 512 times the bias";
     h.saveWindow("depth-format-change");
 
+    // An edit made after the change survives the undo.
+    ASSERT_TRUE(h.state().edit("shadow.slopeScaledDepthBias", 3.5));
+    h.frame();
     ASSERT_TRUE(h.hasControl("status.undo"));
     h.click("status.undo");
+    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, 3.5f);
     EXPECT_EQ(h.state().settings.shadow.format, DepthFormat::D32F);
     EXPECT_EQ(h.state().settings.shadow.depthBias, before.shadow.depthBias);
     EXPECT_FALSE(h.state().undo.has_value());
