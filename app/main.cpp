@@ -1,5 +1,6 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
+#include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
 #include "cli/render_command.h"
@@ -75,6 +76,15 @@ int main(int argc, char** argv) {
     tuneCmd->add_option("--max-acne", tune.maxAcnePercent, "acne limit in percent")->capture_default_str();
     tuneCmd->add_option("--json", tune.json, "write the search path and result as JSON");
 
+    cli::ExportOptions exportOptions;
+    CLI::App* exportCmd = app.add_subcommand("export", "The shadow state as a D3D12 / D3D11 / Vulkan / OpenGL snippet or JSON");
+    exportCmd->add_option("--scene", exportOptions.scene, "the scene the normal offset's world size is computed for")
+        ->capture_default_str();
+    exportCmd->add_option("--preset", exportOptions.preset, "a preset JSON path, or the name of a shipped preset");
+    exportCmd->add_option("--set", exportOptions.overrides, "override a setting: key=value (repeatable)");
+    exportCmd->add_option("--format", exportOptions.format, "d3d12 | d3d11 | vulkan | gl | json")->required();
+    exportCmd->add_option("--out", exportOptions.out, "write to this file (default: standard output)");
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -90,6 +100,7 @@ int main(int argc, char** argv) {
     if (*editCmd) return editor_window::runEdit(edit);
     if (*measureCmd) return cli::runMeasure(measure);
     if (*tuneCmd) return cli::runTune(tune);
+    if (*exportCmd) return cli::runExport(exportOptions);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

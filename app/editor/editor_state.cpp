@@ -1,5 +1,7 @@
 #include "editor/editor_state.h"
 
+#include "light/depth_format_change.h"
+
 #include <iostream>
 
 namespace shadowlab::editor {
@@ -12,14 +14,37 @@ void FrameHistory::push(float frame, float shadow) {
 }
 
 bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
+    const Settings before = settings;
     const std::string error = applyEdit(settings, key, value, limits);
     if (error.empty()) {
         fieldErrors.erase(std::string(key));
+        if (key == "shadow.depthBias" || key == "shadow.depthFormat") undo.reset();  // its numbers are gone
+        if (key == "shadow.depthFormat" && settings.shadow.format != before.shadow.format) {
+            // The receivers' depth decides D32F's step; the newest frame knows it.
+            const std::optional<double> receiverDepth =
+                haveStats && stats.bias.valid ? std::optional(stats.bias.receiverDepthMedian) : std::nullopt;
+            const DepthFormatChange change = changeDepthFormat(before.shadow, settings.shadow.format, receiverDepth);
+            if (!change.note.empty()) {
+                settings.shadow = change.shadow;
+                undo = UndoStep{before, change.note};
+                say(change.note);
+            }
+        }
         return true;
     }
     fieldErrors[std::string(key)] = error;
     say(error, true);
     return false;
+}
+
+void EditorState::undoLastStep() {
+    if (!undo) return;
+    // Only what the step changed: edits made since (slope, filter, ...) stay.
+    settings.shadow.format = undo->before.shadow.format;
+    settings.shadow.depthBias = undo->before.shadow.depthBias;
+    const std::string note = undo->note;
+    undo.reset();
+    say("Undone: " + note);
 }
 
 void EditorState::say(std::string text, bool error) {

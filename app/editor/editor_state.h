@@ -31,6 +31,13 @@ struct Message {
     double time = 0.0;  // seconds since the editor started
 };
 
+// An automatic change the editor made on top of the user's edit (e.g. DepthBias re-expressed for a new depth
+// format), which the status line offers to undo.
+struct UndoStep {
+    Settings before;   // the settings before the user's edit
+    std::string note;  // what was changed and why, the status message it goes with
+};
+
 struct FrameHistory {
     static constexpr std::size_t kLength = 120;
     std::deque<float> frameMs;       // wall time of frames that rendered
@@ -93,11 +100,16 @@ struct EditorState {
     std::string lastScreenshot;  // path of the newest screenshot, or why it failed
 
     std::vector<Message> messages;  // newest last
+    std::optional<UndoStep> undo;   // offered by the status line while its note is the newest message
     ControlRects controls;
     double time = 0.0;
 
     // Applies an edit through the key table; on refusal records it under the key and as an error message.
+    // A new shadow.depthFormat re-expresses DepthBias so it keeps its world size (see depth_format_change.h) and
+    // says so, with an undo.
     bool edit(std::string_view key, const nlohmann::json& value);
+    // Puts back the format and DepthBias from before the step (the status line's Undo); later edits stay.
+    void undoLastStep();
     void say(std::string text, bool error = false);
     const std::string* fieldError(const std::string& key) const;
     const Message* lastMessage() const { return messages.empty() ? nullptr : &messages.back(); }

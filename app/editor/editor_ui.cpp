@@ -264,7 +264,13 @@ void Editor::drawStatusBar() {
         ImGui::TextUnformatted(m->text.c_str());
         ImGui::PopStyleColor();
         state_.controls.recordLastItem("status");
-        if (ImGui::IsItemHovered()) {
+        const bool hovered = ImGui::IsItemHovered();
+        if (state_.undo && state_.undo->note == m->text) {
+            ImGui::SameLine();
+            if (ImGui::SmallButton("Undo")) state_.undoLastStep();
+            state_.controls.recordLastItem("status.undo");
+        }
+        if (hovered) {
             ImGui::BeginTooltip();
             ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
             ImGui::TextUnformatted(m->text.c_str());

@@ -91,7 +91,7 @@ void drawShadowMapPanel(PanelContext& ctx) {
     ImGui::PushItemWidth(-175.0f);
     comboField(state, "shadow.depthFormat", "depth format");
     ImGui::Separator();
-    dragFloatField(state, "shadow.depthBias", "DepthBias (units)", 1.0f, "%.1f");
+    dragFloatField(state, "shadow.depthBias", "DepthBias (units)", 1.0f, "%.4g");  // d16 after a format change: 0.0078
     sliderFloatField(state, "shadow.slopeScaledDepthBias", "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");
     dragFloatField(state, "shadow.depthBiasClamp", "DepthBiasClamp", 0.0001f, "%.5f");
     sliderFloatField(state, "shadow.normalOffset", "normal offset (texels)", 0.0f, 4.0f, "%.2f");

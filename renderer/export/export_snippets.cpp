@@ -1,0 +1,326 @@
+#include "export/export_snippets.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+namespace shadowlab {
+
+namespace {
+
+// The shortest decimal that reads back as the same float, as a C++ float literal ("2.0f", "0.0078125f").
+std::string floatLiteral(float value) {
+    char text[32];
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+        if (std::strtof(text, nullptr) == value) break;
+    }
+    std::string s = text;
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    return s + "f";
+}
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+const char* formatName(const ShadowExport& e, ExportFormat api) {
+    switch (api) {
+        case ExportFormat::D3D12:
+        case ExportFormat::D3D11:
+            return e.depthBits == 16 ? "DXGI_FORMAT_D16_UNORM (SRV DXGI_FORMAT_R16_UNORM)"
+                   : e.depthBits == 24 ? "DXGI_FORMAT_D24_UNORM_S8_UINT (SRV DXGI_FORMAT_R24_UNORM_X8_TYPELESS)"
+                                       : "DXGI_FORMAT_D32_FLOAT (SRV DXGI_FORMAT_R32_FLOAT)";
+        case ExportFormat::Vulkan:
+            return e.depthBits == 16 ? "VK_FORMAT_D16_UNORM"
+                   : e.depthBits == 24 ? "VK_FORMAT_X8_D24_UNORM_PACK32"
+                                       : "VK_FORMAT_D32_SFLOAT";
+        case ExportFormat::GL:
+        case ExportFormat::Json:
+            return e.depthBits == 16 ? "GL_DEPTH_COMPONENT16"
+                   : e.depthBits == 24 ? "GL_DEPTH_COMPONENT24"
+                                       : "GL_DEPTH_COMPONENT32F";
+    }
+    return "?";
+}
+
+// The comment block every snippet starts with: what the numbers mean and which conventions they assume.
+std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) {
+    const ShadowMapSettings& s = e.shadow;
+    std::ostringstream o;
+    o << c << "ShadowLab shadow pass, exported for " << (api == ExportFormat::D3D12 ? "Direct3D 12"
+                                                           : api == ExportFormat::D3D11 ? "Direct3D 11"
+                                                           : api == ExportFormat::Vulkan ? "Vulkan" : "OpenGL 4.5")
+      << "\n";
+    o << c << "Shadow map: " << s.resolution << "x" << s.resolution << ", " << formatName(e, api)
+      << "; depth test LESS, cleared to 1.0: NOT reversed-Z.\n";
+    if (api == ExportFormat::GL)
+        o << c << "Depth range: ShadowLab's light matrix has GL clip depth [-1,1] (no glClipControl), glDepthRange(0,1):\n"
+          << c << "  window depth = 0.5 * z_ndc + 0.5 in [0,1]. Polygon offset acts on window depth, so with\n"
+          << c << "  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) and a [0,1] matrix the same numbers give the same bias.\n";
+    else
+        o << c << "Depth range: clip depth [0,1]. Use ShadowLab's light matrix remapped from GL's [-1,1]\n"
+          << c << "  (z' = 0.5 z + 0.5 w): window depth is then identical to ShadowLab's, and so are the depth slope,\n"
+          << c << "  r and the world-space bias; the values below need no conversion.\n";
+    if (e.floatDepth)
+        o << c << "r (minimum resolvable difference), 32-bit float depth: r = 2^(exponent(max depth of the primitive) - 23),\n"
+          << c << "  i.e. the constant bias scales with the primitive's largest depth (2^-24 = " << number(e.depthStep)
+          << " for depths in [0.5,1)).\n";
+    else
+        o << c << "r (minimum resolvable difference), " << e.depthBits << "-bit UNORM: r = 1/(2^" << e.depthBits
+          << " - 1) = " << number(e.depthStep) << "\n";
+    o << c << "Bias = DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope, then clamped to DepthBiasClamp"
+      << (s.depthBiasClamp == 0.0f ? " (0 = no clamp)" : "") << ".\n";
+    if (e.bias.valid)
+        o << c << "At " << e.sceneLabel << "'s receivers (window depth " << number(e.bias.receiverDepthMin) << ".."
+          << number(e.bias.receiverDepthMax) << "): DepthBias = " << number(e.bias.constantNear.world) << ".."
+          << number(e.bias.constantFar.world) << " world units,\n" << c << "  slope-scaled at the median slope = "
+          << number(e.bias.slope.world) << ", total at the median receiver = " << number(e.bias.total.world)
+          << " world units (" << number(e.bias.total.texels) << " texels).\n";
+    o << c << "Winding: counter-clockwise triangles (glTF) are front faces.\n";
+    o << c << "Depth clamp: " << (e.depthClamp ? "on (casters in front of the near plane still cast)" : "off") << ".\n";
+    o << c << "Normal offset (in the receiver's shader, not the rasterizer): move the lookup position along the surface\n"
+      << c << "  normal by " << number(s.normalOffset) << " texels = " << number(e.normalOffsetWorld)
+      << " world units (one texel = " << number(e.texelWorldSize) << " world units for scene " << e.sceneLabel
+      << (e.perspective ? ", at the scene centre's distance: scale it with the distance along the spot's axis" : "")
+      << ").\n";
+    o << c << "Light volume (as fitted for that scene): near " << number(e.nearPlane) << ", far " << number(e.farPlane)
+      << (e.perspective ? " (perspective spot)" : " (orthographic, directional)") << ".\n";
+    const FilterSettings& f = e.filter;
+    o << c << "Filter: ";
+    switch (f.kind) {
+        case FilterKind::Point: o << "one point comparison"; break;
+        case FilterKind::Hardware2x2: o << "one bilinear (2x2) comparison"; break;
+        case FilterKind::Pcf: o << f.kernel << "x" << f.kernel << " grid of point comparisons at texel centres, averaged"; break;
+        case FilterKind::Poisson:
+            o << "16 Poisson-disk bilinear comparisons within " << number(f.poissonRadius) << " texels, averaged";
+            break;
+    }
+    o << "; compare: lit when receiver depth <= stored depth (LEQUAL).\n";
+    return o.str();
+}
+
+const char* d3dCull(const ShadowExport& e, bool d3d12) {
+    switch (e.shadow.cullMode) {
+        case CullMode::Back: return d3d12 ? "D3D12_CULL_MODE_BACK" : "D3D11_CULL_BACK";
+        case CullMode::Front: return d3d12 ? "D3D12_CULL_MODE_FRONT" : "D3D11_CULL_FRONT";
+        case CullMode::None: return d3d12 ? "D3D12_CULL_MODE_NONE" : "D3D11_CULL_NONE";
+    }
+    return "?";
+}
+
+const char* addressName(AddressMode mode, ExportFormat api) {
+    const bool d3d12 = api == ExportFormat::D3D12;
+    switch (mode) {
+        case AddressMode::Wrap:
+            return api == ExportFormat::Vulkan ? "VK_SAMPLER_ADDRESS_MODE_REPEAT"
+                   : api == ExportFormat::GL   ? "GL_REPEAT"
+                   : d3d12                     ? "D3D12_TEXTURE_ADDRESS_MODE_WRAP" : "D3D11_TEXTURE_ADDRESS_WRAP";
+        case AddressMode::ClampToEdge:
+            return api == ExportFormat::Vulkan ? "VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE"
+                   : api == ExportFormat::GL   ? "GL_CLAMP_TO_EDGE"
+                   : d3d12                     ? "D3D12_TEXTURE_ADDRESS_MODE_CLAMP" : "D3D11_TEXTURE_ADDRESS_CLAMP";
+        case AddressMode::ClampToBorder:
+            return api == ExportFormat::Vulkan ? "VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER"
+                   : api == ExportFormat::GL   ? "GL_CLAMP_TO_BORDER"
+                   : d3d12                     ? "D3D12_TEXTURE_ADDRESS_MODE_BORDER" : "D3D11_TEXTURE_ADDRESS_BORDER";
+    }
+    return "?";
+}
+
+std::string d3d(const ShadowExport& e, ExportFormat api) {
+    const bool d3d12 = api == ExportFormat::D3D12;
+    const ShadowMapSettings& s = e.shadow;
+    const std::string p = d3d12 ? "D3D12_" : "D3D11_";
+    std::ostringstream o;
+    o << conventions(e, api, "// ");
+    if (e.d3dDepthBiasError != 0.0)
+        o << "// DepthBias is an INT here: " << number(s.depthBias) << " rounds to " << e.d3dDepthBias << " (off by "
+          << number(e.d3dDepthBiasError) << " r)."
+          << (d3d12 ? " D3D12_RASTERIZER_DESC1/DESC2 (Agility SDK pipeline state streams) take FLOAT DepthBias = " + floatLiteral(s.depthBias) +
+                          " exactly."
+                    : std::string(" Use a format with a finer r, or scale SlopeScaledDepthBias instead."))
+          << "\n";
+    o << p << "RASTERIZER_DESC shadowRaster = {};\n"
+      << "shadowRaster.FillMode = " << p << (d3d12 ? "FILL_MODE_SOLID" : "FILL_SOLID") << ";\n"
+      << "shadowRaster.CullMode = " << d3dCull(e, d3d12) << ";\n"
+      << "shadowRaster.FrontCounterClockwise = TRUE;\n"
+      << "shadowRaster.DepthBias = " << e.d3dDepthBias << ";\n"
+      << "shadowRaster.DepthBiasClamp = " << floatLiteral(s.depthBiasClamp) << ";\n"
+      << "shadowRaster.SlopeScaledDepthBias = " << floatLiteral(s.slopeScaledDepthBias) << ";\n"
+      << "shadowRaster.DepthClipEnable = " << (e.depthClamp ? "FALSE" : "TRUE") << ";  // FALSE = depth clamp\n"
+      << (d3d12 ? "" : "shadowRaster.ScissorEnable = FALSE;\n") << "shadowRaster.MultisampleEnable = FALSE;\n"
+      << "shadowRaster.AntialiasedLineEnable = FALSE;\n\n";
+    const char* filter = e.linearCompare ? "FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT" : "FILTER_COMPARISON_MIN_MAG_MIP_POINT";
+    const char* address = addressName(e.sampler.addressMode, api);
+    const std::string border = floatLiteral(e.sampler.borderDepth);
+    o << p << "SAMPLER_DESC shadowSampler = {};\n"
+      << "shadowSampler.Filter = " << p << filter << ";\n"
+      << "shadowSampler.AddressU = " << address << ";\n"
+      << "shadowSampler.AddressV = " << address << ";\n"
+      << "shadowSampler.AddressW = " << address << ";\n"
+      << "shadowSampler.ComparisonFunc = " << p << (d3d12 ? "COMPARISON_FUNC_LESS_EQUAL" : "COMPARISON_LESS_EQUAL") << ";\n"
+      << "shadowSampler.BorderColor[0] = shadowSampler.BorderColor[1] = shadowSampler.BorderColor[2] = "
+         "shadowSampler.BorderColor[3] = " << border << ";\n"
+      << "shadowSampler.MinLOD = 0.0f;\nshadowSampler.MaxLOD = 0.0f;\nshadowSampler.MaxAnisotropy = 1;\n";
+    return o.str();
+}
+
+std::string vulkan(const ShadowExport& e) {
+    const ShadowMapSettings& s = e.shadow;
+    const bool bias = s.depthBias != 0.0f || s.slopeScaledDepthBias != 0.0f;
+    std::ostringstream o;
+    o << conventions(e, ExportFormat::Vulkan, "// ");
+    o << "// Winding: with a positive-height viewport Vulkan's framebuffer y runs the other way from GL's window y, so\n"
+         "// ShadowLab's counter-clockwise front faces wind clockwise: frontFace = VK_FRONT_FACE_CLOCKWISE, and image row 0\n"
+         "// is clip y = -1, the same texel order as ShadowLab's GL map. (Negative-height viewport: COUNTER_CLOCKWISE.)\n";
+    if (!e.floatDepth)
+        o << "// Core Vulkan leaves a UNORM format's r to the implementation (some scale it up to 2x to guarantee a\n"
+             "// resolvable offset); lavapipe uses 1/(2^n - 1) as above. To pin it, chain VkDepthBiasRepresentationInfoEXT\n"
+             "// (VK_EXT_depth_bias_control): LEAST_REPRESENTABLE_VALUE_FORMAT_EXT with depthBiasExact = VK_TRUE.\n";
+    if (e.depthClamp) o << "// depthClampEnable needs VkPhysicalDeviceFeatures::depthClamp.\n";
+    if (s.depthBiasClamp != 0.0f) o << "// A non-zero depthBiasClamp needs VkPhysicalDeviceFeatures::depthBiasClamp.\n";
+    const char* cull = s.cullMode == CullMode::Back    ? "VK_CULL_MODE_BACK_BIT"
+                       : s.cullMode == CullMode::Front ? "VK_CULL_MODE_FRONT_BIT"
+                                                       : "VK_CULL_MODE_NONE";
+    o << "VkPipelineRasterizationStateCreateInfo shadowRaster = {VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};\n"
+      << "shadowRaster.depthClampEnable = " << (e.depthClamp ? "VK_TRUE" : "VK_FALSE") << ";\n"
+      << "shadowRaster.rasterizerDiscardEnable = VK_FALSE;\n"
+      << "shadowRaster.polygonMode = VK_POLYGON_MODE_FILL;\n"
+      << "shadowRaster.cullMode = " << cull << ";\n"
+      << "shadowRaster.frontFace = VK_FRONT_FACE_CLOCKWISE;\n"
+      << "shadowRaster.depthBiasEnable = " << (bias ? "VK_TRUE" : "VK_FALSE") << ";\n"
+      << "shadowRaster.depthBiasConstantFactor = " << floatLiteral(s.depthBias) << ";\n"
+      << "shadowRaster.depthBiasClamp = " << floatLiteral(s.depthBiasClamp) << ";\n"
+      << "shadowRaster.depthBiasSlopeFactor = " << floatLiteral(s.slopeScaledDepthBias) << ";\n"
+      << "shadowRaster.lineWidth = 1.0f;\n"
+      << "// Depth-stencil state: depthTestEnable = VK_TRUE, depthWriteEnable = VK_TRUE, depthCompareOp = VK_COMPARE_OP_LESS.\n\n";
+    const char* filter = e.linearCompare ? "VK_FILTER_LINEAR" : "VK_FILTER_NEAREST";
+    const char* address = addressName(e.sampler.addressMode, ExportFormat::Vulkan);
+    std::string border = "VK_BORDER_COLOR_FLOAT_CUSTOM_EXT";
+    if (e.sampler.borderDepth == 1.0f) border = "VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE";
+    if (e.sampler.borderDepth == 0.0f) border = "VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK";
+    if (border == "VK_BORDER_COLOR_FLOAT_CUSTOM_EXT")
+        o << "// Border depth " << floatLiteral(e.sampler.borderDepth)
+          << ": chain VkSamplerCustomBorderColorCreateInfoEXT (VK_EXT_custom_border_color) with that value.\n";
+    o << "VkSamplerCreateInfo shadowSampler = {VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};\n"
+      << "shadowSampler.magFilter = " << filter << ";\n"
+      << "shadowSampler.minFilter = " << filter << ";\n"
+      << "shadowSampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;\n"
+      << "shadowSampler.addressModeU = " << address << ";\n"
+      << "shadowSampler.addressModeV = " << address << ";\n"
+      << "shadowSampler.addressModeW = " << address << ";\n"
+      << "shadowSampler.compareEnable = VK_TRUE;\n"
+      << "shadowSampler.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;\n"
+      << "shadowSampler.borderColor = " << border << ";\n"
+      << "shadowSampler.maxLod = 0.0f;\n";
+    return o.str();
+}
+
+std::string gl(const ShadowExport& e) {
+    const ShadowMapSettings& s = e.shadow;
+    std::ostringstream o;
+    o << conventions(e, ExportFormat::GL, "// ");
+    if (!e.floatDepth)
+        o << "// GL leaves a UNORM format's r to the implementation; Mesa and the common drivers use 1/(2^n - 1).\n";
+    o << "glTextureStorage2D(shadowMap, 1, " << formatName(e, ExportFormat::GL) << ", " << s.resolution << ", "
+      << s.resolution << ");\n";
+    o << "glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_LESS);\nglClearDepth(1.0);\n";
+    o << (e.depthClamp ? "glEnable(GL_DEPTH_CLAMP);\n" : "glDisable(GL_DEPTH_CLAMP);\n");
+    if (s.cullMode == CullMode::None)
+        o << "glDisable(GL_CULL_FACE);\n";
+    else
+        o << "glEnable(GL_CULL_FACE);\nglCullFace(" << (s.cullMode == CullMode::Back ? "GL_BACK" : "GL_FRONT")
+          << ");\nglFrontFace(GL_CCW);\n";
+    if (s.depthBias == 0.0f && s.slopeScaledDepthBias == 0.0f) {
+        o << "glDisable(GL_POLYGON_OFFSET_FILL);\n";
+    } else {
+        o << "glEnable(GL_POLYGON_OFFSET_FILL);\n"
+          << "// factor = SlopeScaledDepthBias, units = DepthBias, clamp = DepthBiasClamp (GL 4.6 or\n"
+          << "// GL_EXT_polygon_offset_clamp; without either: glPolygonOffset(factor, units), no clamp).\n"
+          << "glPolygonOffsetClamp(" << floatLiteral(s.slopeScaledDepthBias) << ", " << floatLiteral(s.depthBias) << ", "
+          << floatLiteral(s.depthBiasClamp) << ");\n";
+    }
+    const char* filter = e.linearCompare ? "GL_LINEAR" : "GL_NEAREST";
+    const char* address = addressName(e.sampler.addressMode, ExportFormat::GL);
+    const std::string border = floatLiteral(e.sampler.borderDepth);
+    o << "\nconst GLfloat shadowBorder[4] = {" << border << ", " << border << ", " << border << ", " << border << "};\n"
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_WRAP_S, " << address << ");\n"
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_WRAP_T, " << address << ");\n"
+      << "glSamplerParameterfv(shadowSampler, GL_TEXTURE_BORDER_COLOR, shadowBorder);\n"
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_MIN_FILTER, " << filter << ");\n"
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_MAG_FILTER, " << filter << ");\n"
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);\n"
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);\n";
+    return o.str();
+}
+
+std::string json(const ShadowExport& e) {
+    const ShadowMapSettings& s = e.shadow;
+    nlohmann::json j;
+    j["scene"] = e.sceneLabel;
+    j["depth"] = {{"format", formatName(e, ExportFormat::GL)},
+                  {"bits", e.depthBits},
+                  {"float", e.floatDepth},
+                  {"resolution", s.resolution},
+                  {"windowDepthRange", {0, 1}},
+                  {"shadowLabClipDepthRange", {-1, 1}},
+                  {"reversedZ", false},
+                  {"compare", "LESS, cleared to 1"},
+                  {"minimumResolvableDifference", e.depthStep},
+                  {"minimumResolvableDifferenceRule",
+                   e.floatDepth ? "2^(exponent(max depth of the primitive) - 23); the value is for depths in [0.5,1)"
+                                : "1/(2^bits - 1)"}};
+    j["rasterizer"] = {{"depthBias", s.depthBias},
+                       {"d3dDepthBiasInt", e.d3dDepthBias},
+                       {"slopeScaledDepthBias", s.slopeScaledDepthBias},
+                       {"depthBiasClamp", s.depthBiasClamp},
+                       {"cullMode", s.cullMode == CullMode::Back ? "back" : s.cullMode == CullMode::Front ? "front" : "none"},
+                       {"frontFace", "counter-clockwise"},
+                       {"depthClamp", e.depthClamp}};
+    j["normalOffset"] = {{"texels", s.normalOffset},
+                         {"world", e.normalOffsetWorld},
+                         {"texelWorldSize", e.texelWorldSize},
+                         {"perspective", e.perspective}};
+    j["lightVolume"] = {{"near", e.nearPlane}, {"far", e.farPlane}};
+    if (e.bias.valid)
+        j["biasAtReceivers"] = {{"receiverDepthMin", e.bias.receiverDepthMin},
+                                {"receiverDepthMax", e.bias.receiverDepthMax},
+                                {"constantWorldNearest", e.bias.constantNear.world},
+                                {"constantWorldFarthest", e.bias.constantFar.world},
+                                {"slopeWorldMedian", e.bias.slope.world},
+                                {"totalWorldMedian", e.bias.total.world},
+                                {"totalTexelsMedian", e.bias.total.texels}};
+    const char* address = e.sampler.addressMode == AddressMode::Wrap          ? "wrap"
+                          : e.sampler.addressMode == AddressMode::ClampToEdge ? "clamp"
+                                                                              : "border";
+    j["sampler"] = {{"addressMode", address},
+                    {"borderDepth", e.sampler.borderDepth},
+                    {"compare", "LEQUAL"},
+                    {"filter", e.linearCompare ? "linear" : "nearest"}};
+    const char* kind = e.filter.kind == FilterKind::Point         ? "point"
+                       : e.filter.kind == FilterKind::Hardware2x2 ? "hardware2x2"
+                       : e.filter.kind == FilterKind::Pcf         ? "pcf"
+                                                                  : "poisson";
+    j["filter"] = {{"kind", kind}, {"kernel", e.filter.kernel}, {"poissonRadiusTexels", e.filter.poissonRadius}};
+    return j.dump(2) + "\n";
+}
+
+}  // namespace
+
+std::string exportSnippet(const ShadowExport& values, ExportFormat format) {
+    switch (format) {
+        case ExportFormat::D3D12:
+        case ExportFormat::D3D11: return d3d(values, format);
+        case ExportFormat::Vulkan: return vulkan(values);
+        case ExportFormat::GL: return gl(values);
+        case ExportFormat::Json: return json(values);
+    }
+    return {};
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,13 @@
+#pragma once
+// Ready-to-paste text for one API (D3D12, D3D11, Vulkan, OpenGL) or JSON, from the numbers in ShadowExport. Each
+// snippet states its conventions in comments: depth range, reversed-Z, the format's minimum resolvable difference r,
+// D3D's float-format rule, the winding, the normal offset in world units and the sampler / filter.
+#include "export/shadow_export.h"
+
+#include <string>
+
+namespace shadowlab {
+
+std::string exportSnippet(const ShadowExport& values, ExportFormat format);
+
+}  // namespace shadowlab
