@@ -21,6 +21,9 @@
 // across two stb versions by ELF interposition would be an ODR accident waiting to happen. This is the one
 // translation unit of ours that holds the implementations; stb is third-party, so its warnings are silenced here.
 #pragma GCC diagnostic push
+#ifdef __clang__
+#pragma clang diagnostic ignored "-Wunknown-warning-option"  // the GCC-only names below
+#endif
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wsign-conversion"
 #pragma GCC diagnostic ignored "-Wshadow"
