@@ -5,13 +5,15 @@
 #include "context/headless_context.h"
 #include "frame/renderer.h"
 #include "scene/scene_source.h"
+#include "settings/atomic_file.h"
+#include "settings/settings_fields.h"
 #include "shadow/shadow_map.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
@@ -29,8 +31,9 @@ double median(std::vector<double> v) {
 bool applyFilter(const std::string& name, Settings& settings) {
     if (name.rfind("pcf", 0) == 0 && name.size() > 3) {
         settings.filter.kind = FilterKind::Pcf;
-        settings.filter.kernel = std::atoi(name.c_str() + 3);
-        return true;
+        const char* end = name.data() + name.size();
+        const auto [ptr, ec] = std::from_chars(name.data() + 3, end, settings.filter.kernel);
+        return ec == std::errc{} && ptr == end;  // validate() then checks the kernel size
     }
     if (name == "point") settings.filter.kind = FilterKind::Point;
     else if (name == "hardware2x2") settings.filter.kind = FilterKind::Hardware2x2;
@@ -44,6 +47,28 @@ bool applyFilter(const std::string& name, Settings& settings) {
 int runBench(const BenchOptions& options) {
     std::optional<Settings> base = settingsFromCli(options.preset, options.overrides);
     if (!base) return 2;
+    // Every row's settings and the output path are checked before the scene, the context and the timing runs.
+    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    for (int resolution : options.resolutions) {
+        Settings settings = *base;
+        if (std::string e = findSettingsField("shadow.resolution")->set(settings, resolution); !e.empty()) {
+            std::cerr << "error: --resolutions: " << e << "\n";
+            return 2;
+        }
+    }
+    for (const std::string& filter : options.filters) {
+        Settings settings = *base;
+        if (!applyFilter(filter, settings)) {
+            std::cerr << "error: --filters: unknown filter '" << describeKey(filter)
+                      << "' (allowed point, hardware2x2, pcfN with N in 1, 3, 5, 7, 9, poisson)\n";
+            return 2;
+        }
+        if (std::vector<std::string> problems = settings.validate(); !problems.empty()) {
+            std::cerr << "error: --filters " << describeKey(filter) << ": " << problems.front() << "\n";
+            return 2;
+        }
+    }
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
@@ -69,10 +94,7 @@ int runBench(const BenchOptions& options) {
             for (const std::string& filter : options.filters) {
                 Settings settings = *base;
                 settings.shadow.resolution = resolution;
-                if (!applyFilter(filter, settings) || !settings.validate().empty()) {
-                    std::cerr << "error: unknown or invalid filter '" << filter << "'\n";
-                    return 2;
-                }
+                applyFilter(filter, settings);  // checked above
                 std::vector<double> shadowMs, mainMs;
                 double wallTotal = 0.0;
                 for (int frame = -3; frame < options.frames; ++frame) {  // 3 warm-up frames
@@ -108,12 +130,9 @@ int runBench(const BenchOptions& options) {
                                   {"glRenderer", info.renderer}, {"timingSource", timing},
                                   {"width", options.width},     {"height", options.height},
                                   {"frames", options.frames},   {"rows", rows}};
-            std::ofstream out(options.json);
-            out << doc.dump(2) << "\n";
-            if (!out) {
-                std::cerr << "error: cannot write " << options.json << "\n";
-                return 1;
-            }
+            const std::string text = doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+            if (std::string error = writeFileAtomically(options.json, text); !error.empty())
+                return fail("--json " + options.json + ": " + error);
             std::cout << "wrote " << options.json << "\n";
         }
     } catch (const std::exception& e) {

@@ -1,5 +1,10 @@
 #include "cli/command_input.h"
 
+#include "settings/regular_file.h"
+
+#include <unistd.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -24,10 +29,35 @@ SceneLoadResult loadSceneForCommand(const std::string& spec) {
 }
 
 std::string checkOutputFolder(const std::string& path, const char* option) {
+    namespace fs = std::filesystem;
     if (path.empty()) return {};
-    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-    if (folder.empty() || std::filesystem::is_directory(folder)) return {};
-    return std::string(option) + " " + path + ": folder '" + folder.string() + "' does not exist";
+    const std::string where = std::string(option) + " " + path + ": ";
+    std::error_code ec;
+    // What the atomic writer will refuse at the end is refused before the work: only regular files are written.
+    if (fs::is_symlink(fs::symlink_status(path, ec)) && !fs::exists(path, ec))
+        return where + "a symbolic link to '" + fs::read_symlink(path, ec).string() +
+               "', which does not exist (ShadowLab does not create files through dangling links)";
+    if (const std::string kind = nonRegularFileKind(path); !kind.empty())
+        return where + "it is " + kind + ", not a regular file; ShadowLab writes only regular files";
+    const fs::path folder = fs::path(path).parent_path();
+    if (folder.empty() || fs::is_directory(folder, ec)) return {};
+    return where + "folder '" + folder.string() + "' does not exist";
+}
+
+std::string checkMeasureMemory(int width, int height) {
+    const double bytes = double(width) * double(height) * kMeasureBytesPerPixel;
+    const long pages = ::sysconf(_SC_AVPHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || pageSize <= 0) return {};
+    const double available = double(pages) * double(pageSize);
+    if (bytes <= 0.8 * available) return {};
+    auto gib = [](double b) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f GiB", b / double(1u << 30));
+        return std::string(text);
+    };
+    return "--width/--height " + std::to_string(width) + "x" + std::to_string(height) + ": a measurement needs about " +
+           gib(bytes) + " of memory (" + std::to_string(kMeasureBytesPerPixel) + " bytes a pixel), more than the " +
+           gib(available) + " available; use a smaller view";
 }
 
 }  // namespace shadowlab::cli

@@ -16,7 +16,16 @@ std::string checkViewSize(int width, int height);
 // Loads SCENE (a path or builtin:NAME) and prints the loader's warnings to stderr; on failure .error says why.
 SceneLoadResult loadSceneForCommand(const std::string& spec);
 
-// "" when a file can be created at path (its folder exists), else why not — checked before the work starts.
+// "" when a file can be written at path (its folder exists; it is a regular file or new; not a dangling symlink),
+// else why not — checked before the work starts, with the rules of writeFileAtomically.
 std::string checkOutputFolder(const std::string& path, const char* option);
+
+// What a measurement holds per view pixel, summed over its buffers (G-buffer readback with double positions and
+// normals, the tool's frame and shadow factor, reference classes and Lambert, boundary search, overlay: ~180
+// bytes) with a margin: the figure behind checkMeasureMemory.
+inline constexpr int kMeasureBytesPerPixel = 200;
+
+// "" when a measurement of width x height fits in 80 % of the memory available now, else the figure and why.
+std::string checkMeasureMemory(int width, int height);
 
 }  // namespace shadowlab::cli

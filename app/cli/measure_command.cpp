@@ -17,6 +17,7 @@ int runMeasure(const MeasureOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"},
                                        std::pair{options.causeOverlay, "--cause-overlay"}})
         if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
@@ -38,7 +39,9 @@ int runMeasure(const MeasureOptions& options) {
             nlohmann::json json = accuracyToJson(report);
             json["scene"] = options.scene;
             json["preset"] = options.preset;
-            if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
+            // replace: a scene path that is not UTF-8 is written with U+FFFD rather than throwing.
+            const std::string text = json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+            if (std::string error = writeFileAtomically(options.json, text); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }

@@ -21,6 +21,9 @@ int runRender(const RenderOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, overrides);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.shadowMapExr, "--shadow-map"},
+                                       std::pair{options.shadowMapPng, "--shadow-map-png"}})
+        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
 
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);

@@ -34,7 +34,7 @@ std::optional<Settings> settingsFromCli(const std::string& preset, const std::ve
     bool ok = true;
     for (const std::string& kv : overrides) {
         if (std::string error = applySettingOverride(settings, kv); !error.empty()) {
-            std::cerr << "error: --set " << kv << ": " << error << "\n";
+            std::cerr << "error: --set " << describeKey(kv) << ": " << error << "\n";
             ok = false;
         }
     }

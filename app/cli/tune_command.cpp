@@ -32,6 +32,7 @@ int runTune(const TuneOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     if (!(options.maxAcnePercent >= 0.0 && options.maxAcnePercent <= 100.0))
         return fail("--max-acne must be a percentage in [0, 100]");
     for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.json, "--json"}})
@@ -104,7 +105,9 @@ int runTune(const TuneOptions& options) {
                                          {"closest", presetToJson(result.closest)},
                                          {"report", accuracyToJson(result.report)},
                                          {"path", path}};
-            if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
+            // replace: a scene path that is not UTF-8 is written with U+FFFD rather than throwing.
+            const std::string text = json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+            if (std::string error = writeFileAtomically(options.json, text); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }

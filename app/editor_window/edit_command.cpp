@@ -5,6 +5,7 @@
 #include "editor_window/key_event_queue.h"
 #include "gl/gl.h"
 #include "settings/atomic_file.h"
+#include "settings/regular_file.h"
 #include "settings/user_config.h"
 
 #define GLFW_INCLUDE_NONE
@@ -85,6 +86,18 @@ void writeControlsFile(editor::Editor& ed, std::string& lastWritten) {
     if (writeFileAtomically(path, json).empty()) lastWritten = json;
 }
 
+// The panel layout goes through the atomic writer like every other file (ImGui's own save truncates the file
+// first, so a full disk would lose it); ImGui asks for a save through WantSaveIniSettings.
+void saveLayout(const std::string& iniPath) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.WantSaveIniSettings = false;
+    if (iniPath.empty()) return;
+    std::size_t size = 0;
+    const char* text = ImGui::SaveIniSettingsToMemory(&size);
+    if (std::string error = writeFileAtomically(iniPath, text, size); !error.empty())
+        std::cerr << "shadowlab: warning: cannot save the panel layout to " << iniPath << ": " << error << "\n";
+}
+
 }  // namespace
 
 int runEdit(const EditOptions& options) {
@@ -117,12 +130,14 @@ int runEdit(const EditOptions& options) {
     ImGuiIO& io = ImGui::GetIO();
     // The layout is remembered per user, not per working folder.
     std::string iniPath;
+    io.IniFilename = nullptr;  // loaded and saved here, through the atomic writer
     if (std::string error = ensureFolder(userConfigDir()); error.empty()) {
         iniPath = (userConfigDir() / "imgui.ini").string();
-        io.IniFilename = iniPath.c_str();
+        std::string layout;
+        if (readRegularFile(iniPath, 1u << 20, layout).empty())
+            ImGui::LoadIniSettingsFromMemory(layout.data(), layout.size());
     } else {
         std::cerr << "shadowlab: warning: " << error << "; the panel layout will not be remembered\n";
-        io.IniFilename = nullptr;
     }
     editor::applyEditorStyle();
     ImGui_ImplGlfw_InitForOpenGL(window, /*install_callbacks=*/false);
@@ -190,6 +205,7 @@ int runEdit(const EditOptions& options) {
                     title = now;
                 }
                 writeControlsFile(ed, controlsWritten);
+                if (io.WantSaveIniSettings) saveLayout(iniPath);
                 if (host.framesAfterInput > 0) --host.framesAfterInput;
             }
         }
@@ -197,7 +213,8 @@ int runEdit(const EditOptions& options) {
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();  // writes imgui.ini
+    saveLayout(iniPath);
+    ImGui::DestroyContext();
     glfwDestroyWindow(window);
     glfwTerminate();
     return status;

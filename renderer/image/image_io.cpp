@@ -1,5 +1,7 @@
 #include "image/image_io.h"
 
+#include "settings/atomic_file.h"
+
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -19,6 +21,9 @@
 // across two stb versions by ELF interposition would be an ODR accident waiting to happen. This is the one
 // translation unit of ours that holds the implementations; stb is third-party, so its warnings are silenced here.
 #pragma GCC diagnostic push
+#ifdef __clang__
+#pragma clang diagnostic ignored "-Wunknown-warning-option"  // the GCC-only names below
+#endif
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wsign-conversion"
 #pragma GCC diagnostic ignored "-Wshadow"
@@ -45,38 +50,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Writers never create folders: a typo in an output path should say so rather than grow a directory tree.
-std::string checkFolder(const std::string& path) {
-    if (path.empty()) return "no file name given";
-    fs::path folder = fs::path(path).parent_path();
-    if (folder.empty()) return {};
-    std::error_code ec;
-    fs::file_status st = fs::status(folder, ec);
-    // Built with append: `"literal" + std::string&&` trips a GCC 12 -Wrestrict false positive (PR 105329).
-    std::string quoted = "'";
-    quoted += folder.string();
-    quoted += "'";
-    if (st.type() == fs::file_type::not_found) return "folder " + quoted + " does not exist";
-    if (!fs::is_directory(st)) return quoted + " is not a folder";
-    return {};
-}
+// EXR into memory, so the file is written once, whole, by the atomic writer (OutputFile seeks back to fill in its
+// line offset table, hence the seekable buffer).
+class MemoryOStream : public Imf::OStream {
+public:
+    explicit MemoryOStream(const char* name) : Imf::OStream(name) {}
+    void write(const char c[], int n) override {
+        const std::size_t end = pos_ + static_cast<std::size_t>(n);
+        if (end > bytes.size()) bytes.resize(end);
+        std::memcpy(bytes.data() + pos_, c, static_cast<std::size_t>(n));
+        pos_ = end;
+    }
+    uint64_t tellp() override { return pos_; }
+    void seekp(uint64_t pos) override { pos_ = static_cast<std::size_t>(pos); }
+    std::vector<char> bytes;
 
-// Whole-file write with every error checked; a half-written file is removed.
-std::string writeBytes(const std::string& path, const std::vector<unsigned char>& bytes) {
-    std::FILE* file = std::fopen(path.c_str(), "wb");
-    if (!file) return std::string("cannot open for writing: ") + std::strerror(errno);
-    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-    int writeErrno = errno;
-    if (std::fclose(file) != 0 && ok) {
-        ok = false;
-        writeErrno = errno;
-    }
-    if (!ok) {
-        std::remove(path.c_str());
-        return std::string("write failed: ") + std::strerror(writeErrno);
-    }
-    return {};
-}
+private:
+    std::size_t pos_ = 0;
+};
 
 void appendBytes(void* context, void* data, int size) {
     auto* out = static_cast<std::vector<unsigned char>*>(context);
@@ -95,8 +86,6 @@ std::string writePng(const std::string& path, int width, int height, int channel
     // stb computes sizes in int, filtered rows included.
     if ((static_cast<long long>(width) * channels + 1) * height > INT_MAX / 2)
         return failed + "image too large for the PNG writer";
-    if (std::string e = checkFolder(path); !e.empty()) return failed + e;
-
     // Flip by handing stb the last row and a negative stride: no copy of the image.
     const int rowBytes = width * channels;
     const std::uint8_t* first = flipVertically ? pixels + static_cast<std::size_t>(height - 1) * rowBytes : pixels;
@@ -104,7 +93,7 @@ std::string writePng(const std::string& path, int width, int height, int channel
     if (!stbi_write_png_to_func(appendBytes, &encoded, width, height, channels, first,
                                 flipVertically ? -rowBytes : rowBytes))
         return failed + "PNG encoding failed (out of memory?)";
-    if (std::string e = writeBytes(path, encoded); !e.empty()) return failed + e;
+    if (std::string e = writeFileAtomically(path, encoded.data(), encoded.size()); !e.empty()) return failed + e;
     return {};
 }
 
@@ -112,17 +101,11 @@ std::string writeExrDepth(const std::string& path, int width, int height, const 
     const std::string failed = "cannot write EXR '" + path + "': ";
     if (width <= 0 || height <= 0) return failed + "empty image (" + std::to_string(width) + "x" + std::to_string(height) + ")";
     if (!depth) return failed + "no depth data";
-    if (std::string e = checkFolder(path); !e.empty()) return failed + e;
-
-    // Our own stream: OutputFile's destructor writes the line offset table and swallows its errors, so the stream
-    // state after it is gone is the only way to learn that the file is incomplete.
-    std::ofstream stream(path, std::ios::binary | std::ios::trunc);
-    if (!stream) return failed + "cannot open for writing: " + std::strerror(errno);
+    MemoryOStream out(path.c_str());
     try {
         Imf::Header header(width, height);
         header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
         header.compression() = Imf::ZIP_COMPRESSION;  // lossless: depth reads back bit-exact
-        Imf::StdOFStream out(stream, path.c_str());
         {
             Imf::OutputFile file(out, header);
             // Rows go out in bands copied into a small buffer, flipped if asked; the full image is never duplicated.
@@ -141,15 +124,11 @@ std::string writeExrDepth(const std::string& path, int width, int height, const 
                 file.setFrameBuffer(frame);
                 file.writePixels(n);
             }
-        }  // the file is complete only here
-        stream.flush();
-        stream.close();
-        if (stream.fail()) throw std::runtime_error(std::string("write failed: ") + std::strerror(errno));
+        }  // the line offset table is written here
     } catch (const std::exception& e) {
-        if (stream.is_open()) stream.close();
-        std::remove(path.c_str());
         return failed + e.what();
     }
+    if (std::string e = writeFileAtomically(path, out.bytes.data(), out.bytes.size()); !e.empty()) return failed + e;
     return {};
 }
 

@@ -1,6 +1,14 @@
 #include "scene/gltf_common.h"
 
+#include <cstdio>
+
 namespace shadowlab::gltf {
+
+std::string str(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
 
 std::vector<std::string> splitLines(const std::string& text) {
     std::vector<std::string> out;
@@ -18,7 +26,11 @@ std::vector<std::string> splitLines(const std::string& text) {
 
 std::string joinLines(const std::string& text) {
     std::string out;
-    for (const std::string& l : splitLines(text)) out += (out.empty() ? "" : "; ") + l;
+    constexpr std::size_t maxLine = 200;
+    for (std::string l : splitLines(text)) {
+        if (l.size() > maxLine) l = l.substr(0, maxLine) + "... (" + str(l.size()) + " bytes)";
+        out += (out.empty() ? "" : "; ") + l;
+    }
     return out;
 }
 

@@ -4,9 +4,6 @@
 
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 
 namespace shadowlab::gltf {
 namespace {
@@ -21,21 +18,8 @@ std::string compressedGeometryError(const std::string& ext) {
     return "requires " + ext + " (compressed geometry), which ShadowLab cannot decode";
 }
 
-std::string unsupportedRequiredExtension(const std::string& path, bool binary) {
-    std::ifstream in(path, std::ios::binary);
-    std::string text;
-    if (binary) {
-        unsigned char header[20] = {};
-        if (!in.read(reinterpret_cast<char*>(header), 20) || std::memcmp(header + 16, "JSON", 4) != 0) return {};
-        const std::uint32_t length = load<std::uint32_t>(header + 12);
-        std::error_code ec;
-        if (length > std::filesystem::file_size(path, ec) || ec) return {};
-        text.resize(length);
-        if (!in.read(text.data(), std::streamsize(length))) return {};
-    } else {
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    const nlohmann::json j = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+std::string unsupportedRequiredExtension(std::string_view text) {
+    const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
     if (!j.is_object() || !j.contains("extensionsRequired") || !j["extensionsRequired"].is_array()) return {};
     for (const nlohmann::json& ext : j["extensionsRequired"])
         if (ext.is_string() && isCompressedGeometry(ext.get<std::string>())) return ext.get<std::string>();

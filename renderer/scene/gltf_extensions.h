@@ -4,6 +4,7 @@
 #include "scene/gltf_common.h"
 
 #include <string>
+#include <string_view>
 
 namespace shadowlab::gltf {
 
@@ -12,7 +13,7 @@ std::string compressedGeometryError(const std::string& ext);
 
 // When tinygltf refuses a file, a required compression extension is usually why (its accessors have no bufferView):
 // read extensionsRequired from the JSON ourselves to say so. Best effort; empty when the JSON cannot be read.
-std::string unsupportedRequiredExtension(const std::string& path, bool binary);
+std::string unsupportedRequiredExtension(std::string_view json);
 
 // false + error when the model requires compressed geometry; unknown required extensions only warn.
 bool checkRequiredExtensions(const tg::Model& model, const Warn& warn, std::string& error);

@@ -1,5 +1,7 @@
 #include "scene/gltf_geometry.h"
 
+#include "scene/gltf_common.h"
+
 #include <tiny_gltf.h>  // TINYGLTF_MODE_*
 
 #include <glm/geometric.hpp>
@@ -88,10 +90,10 @@ std::size_t countZeroArea(const Mesh& mesh) {
     return n;
 }
 
-bool allFinite(const glm::dmat4& m) {
+bool fitsFloat(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
+            if (!fitsFloat(m[c][r])) return false;
     return true;
 }
 }  // namespace shadowlab::gltf

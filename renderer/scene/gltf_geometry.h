@@ -12,7 +12,8 @@
 namespace shadowlab::gltf {
 
 bool finite(const glm::vec3& v);
-bool allFinite(const glm::dmat4& m);
+// Every entry converts to float without overflow: a transform that can become a glm::mat4.
+bool fitsFloat(const glm::dmat4& m);
 
 // Triangle list from TRIANGLES / TRIANGLE_STRIP / TRIANGLE_FAN indices (glTF 2.0 spec, 3.7.2.1).
 std::vector<std::uint32_t> toTriangleList(const std::vector<std::uint32_t>& idx, int mode);

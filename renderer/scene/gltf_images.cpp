@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace shadowlab::gltf {
@@ -49,6 +50,25 @@ bool toRgba8(const tg::Image& src, Image& out, std::string& why) {
     return true;
 }
 
+// A texture's decoded RGBA8 size is bounded: 8192² (256 MiB) is more than any shadow-casting cutout needs.
+constexpr std::size_t kMaxImagePixels = std::size_t(8192) * 8192;
+
+// "" or why the PNG header's size is refused, read before the decoder allocates for it (stb's own refusal says only
+// "Unknown image format").
+std::string checkPngSize(const std::vector<unsigned char>& bytes) {
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (bytes.size() < 24 || std::memcmp(bytes.data(), signature, 8) != 0 || std::memcmp(&bytes[12], "IHDR", 4) != 0)
+        return {};
+    auto be32 = [&](std::size_t at) {
+        return std::uint32_t(bytes[at]) << 24 | std::uint32_t(bytes[at + 1]) << 16 | std::uint32_t(bytes[at + 2]) << 8 |
+               std::uint32_t(bytes[at + 3]);
+    };
+    const std::uint32_t w = be32(16), h = be32(20);
+    if (std::uint64_t(w) * h <= kMaxImagePixels) return {};
+    return "is a PNG of " + std::to_string(w) + "x" + std::to_string(h) + " pixels, more than the " +
+           std::to_string(kMaxImagePixels) + "-pixel (8192x8192) limit for a texture";
+}
+
 }  // namespace
 
 bool keepEncodedImage(tg::Image* image, const int index, std::string*, std::string* warn, int, int,
@@ -80,6 +100,8 @@ bool decodeImage(const EncodedImages& images, int index, Image& out, std::string
         why = "is missing or empty";
     else if (encoded.size() > std::size_t(std::numeric_limits<int>::max()))
         why = "is too large";
+    else if (std::string tooLarge = checkPngSize(encoded); !tooLarge.empty())
+        why = std::move(tooLarge);
     else if (!tg::LoadImageData(&decoded, index, &decodeErr, &decodeWarn, 0, 0, encoded.data(), int(encoded.size()),
                                 nullptr))
         why = "cannot be decoded (" + joinLines(decodeErr) + ")";

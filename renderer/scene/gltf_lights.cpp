@@ -9,6 +9,11 @@
 
 namespace shadowlab::gltf {
 
+namespace {
+// As the light.position key allows (HARD_CASES 3: beyond this a float position cannot place a light volume).
+constexpr double kMaxLightPosition = 1e7;
+}  // namespace
+
 std::optional<SceneLight> importLight(const tg::Model& model, int nodeIndex, const glm::dmat4& world,
                                       const Warn& warn) {
     const tg::Node& node = model.nodes[std::size_t(nodeIndex)];
@@ -33,7 +38,15 @@ std::optional<SceneLight> importLight(const tg::Model& model, int nodeIndex, con
         warn("light '" + light.name + "': unknown type '" + gl.type + "'; ignored");
         return std::nullopt;
     }
-    light.position = glm::vec3(world * glm::dvec4(0, 0, 0, 1));
+    // The position limit of the light.position key (1e7, HARD_CASES 3): a light 1e30 away would only end in a
+    // light volume whose near and far planes cannot be told apart.
+    const glm::dvec3 position(world * glm::dvec4(0, 0, 0, 1));
+    if (!(std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)}) <= kMaxLightPosition)) {
+        warn("light '" + light.name + "': position (" + str(position.x) + ", " + str(position.y) + ", " +
+             str(position.z) + ") has a component beyond " + str(kMaxLightPosition) + " (the light.position limit); ignored");
+        return std::nullopt;
+    }
+    light.position = glm::vec3(position);
     const glm::dvec3 dir = glm::dmat3(world) * glm::dvec3(0, 0, -1);  // the light shines along its node's -Z
     const double len = glm::length(dir);
     if (len > 1e-12 && std::isfinite(len))
@@ -44,10 +57,10 @@ std::optional<SceneLight> importLight(const tg::Model& model, int nodeIndex, con
         const double outer = gl.spot.outerConeAngle;
         light.outerConeRad = float(std::isfinite(outer) ? std::clamp(outer, 1e-4, 1.5707963267948966) : 0.7853981634);
     }
-    if (std::isfinite(gl.range) && gl.range > 0.0) light.range = float(gl.range);
-    if (gl.color.size() == 3 && std::isfinite(gl.color[0] + gl.color[1] + gl.color[2]))
+    if (fitsFloat(gl.range) && gl.range > 0.0) light.range = float(gl.range);
+    if (gl.color.size() == 3 && fitsFloat(gl.color[0]) && fitsFloat(gl.color[1]) && fitsFloat(gl.color[2]))
         light.color = glm::vec3(float(gl.color[0]), float(gl.color[1]), float(gl.color[2]));
-    if (std::isfinite(gl.intensity) && gl.intensity >= 0.0) light.intensity = float(gl.intensity);
+    if (fitsFloat(gl.intensity) && gl.intensity >= 0.0) light.intensity = float(gl.intensity);
     return light;
 }
 

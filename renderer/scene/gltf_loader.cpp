@@ -10,7 +10,9 @@
 #include "scene/gltf_images.h"
 #include "scene/gltf_lights.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_precheck.h"
 #include "scene/gltf_primitives.h"
+#include "settings/regular_file.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -34,14 +36,17 @@ namespace {
 using namespace gltf;
 
 constexpr int kMaxNodeDepth = 512;                  // deeper than any real hierarchy: a broken file
-constexpr std::size_t kMaxNodeVisits = 2'000'000;   // a node shared by many parents can explode combinatorially
-constexpr std::size_t kMaxWarnings = 100;           // keep the list readable on badly broken files
+constexpr std::size_t kMaxNodeVisits = 1'000'000;   // a node shared by many parents can explode combinatorially
+constexpr std::size_t kMaxWarnings = 100;
+constexpr double kMaxSceneExtent = 1e18;  // its square, 1e36, is still a float; light-space math squares lengths           // keep the list readable on badly broken files
 
 class Loader {
 public:
-    Loader(const tg::Model& model, const EncodedImages& images) : model_(model), images_(images) {
+    Loader(const tg::Model& model, const EncodedImages& images, DecodeBudget& budget)
+        : model_(model), images_(images) {
         meshCache_.resize(model.meshes.size());
         onPath_.assign(model.nodes.size(), 0);
+        tally_.budget = &budget;
     }
 
     void warn(const std::string& message) {
@@ -69,6 +74,8 @@ private:
     PrimitiveTally tally_;
     std::size_t visits_ = 0, suppressedWarnings_ = 0, degenerateInstances_ = 0;
     bool cycleWarned_ = false, depthWarned_ = false, visitsWarned_ = false, skinWarned_ = false;
+    bool instanceCapHit_ = false;
+    int capNode_ = -1;  // the node whose instances passed kMaxInstances
 };
 
 const std::vector<int>& Loader::meshPrimitives(int meshIndex) {
@@ -111,6 +118,7 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth) {
         warn("node " + str(index) + " does not exist; ignored");
         return;
     }
+    if (instanceCapHit_ || tally_.budget->exceeded) return;  // refused: stop walking at once
     if (onPath_[std::size_t(index)]) {  // a node that is its own ancestor: cut the loop (RecursiveNodes.gltf)
         if (!cycleWarned_) warn("the node graph has a cycle through node " + str(index) + "; the cycle is cut there");
         cycleWarned_ = true;
@@ -125,8 +133,8 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth) {
     }
     const tg::Node& node = model_.nodes[std::size_t(index)];
     const glm::dmat4 world = parent * localMatrix(index);
-    if (!allFinite(world)) {
-        warn("node " + str(index) + ": transform is not finite; the node and its children are ignored");
+    if (!fitsFloat(world)) {
+        warn("node " + str(index) + ": transform is not finite in float; the node and its children are ignored");
         return;
     }
     if (node.mesh >= int(model_.meshes.size())) warn("node " + str(index) + ": mesh " + str(node.mesh) + " does not exist");
@@ -141,6 +149,11 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth) {
             if (!(std::abs(det) > 1e-30)) {
                 ++degenerateInstances_;
                 continue;
+            }
+            if (scene_.instances.size() >= kMaxInstances) {
+                instanceCapHit_ = true;
+                capNode_ = index;
+                return;
             }
             scene_.instances.push_back(Instance{mesh, glm::mat4(world)});
         }
@@ -175,7 +188,24 @@ std::vector<int> Loader::rootNodes() {
 std::optional<Scene> Loader::run(std::string& error) {
     if (!checkRequiredExtensions(model_, sink_, error)) return std::nullopt;
     importMaterials(model_, images_, scene_, sink_);
-    for (int root : rootNodes()) visit(root, glm::dmat4(1.0), 0);
+    const std::vector<int> roots = rootNodes();
+    if (roots.empty() && !model_.nodes.empty() && model_.scenes.empty()) {
+        error = "no scene root: the file has no scenes and each of its " + str(model_.nodes.size()) +
+                " nodes is some node's child (the node graph is a cycle)";
+        return std::nullopt;
+    }
+    for (int root : roots) visit(root, glm::dmat4(1.0), 0);
+    if (instanceCapHit_) {
+        error = "more than " + str(kMaxInstances) + " mesh instances (the limit), reached at node " + str(capNode_) +
+                ": nodes listed as children many times over multiply into more copies than can be drawn";
+        return std::nullopt;
+    }
+    if (tally_.budget->exceeded) {
+        error = "the scene decodes to more than " + str(kMaxDecodedBytes >> 20) + " MiB (the limit for a scene): " +
+                str(tally_.budget->used >> 20) + " MiB of buffers, images and vertex data were read before a " +
+                "primitive that needs more";
+        return std::nullopt;
+    }
 
     if (tally_.zeroAreaTriangles > 0) warn(str(tally_.zeroAreaTriangles) + " zero-area triangles kept (they cast no shadow)");
     if (degenerateInstances_ > 0)
@@ -193,6 +223,15 @@ std::optional<Scene> Loader::run(std::string& error) {
         error = "no finite geometry after applying the node transforms";
         return std::nullopt;
     }
+    // The light's volume is built from the bounds in float: their extent must square without overflow.
+    const glm::dvec3 lo(scene_.bounds.min), hi(scene_.bounds.max);
+    const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                    std::abs(hi.z), glm::length(hi - lo)});
+    if (!(extent <= kMaxSceneExtent)) {
+        error = "the scene's bounds overflow a float: they reach " + str(extent) + " world units, beyond the " +
+                str(kMaxSceneExtent) + " whose squares a float can hold (the light's matrices would not be finite)";
+        return std::nullopt;
+    }
     return std::move(scene_);
 }
 
@@ -202,50 +241,102 @@ SceneLoadResult failure(const std::string& path, const std::string& what) {
     return r;
 }
 
-SceneLoadResult loadImpl(const std::string& path) {
-    namespace fs = std::filesystem;
+struct FileAccess {
+    DecodeBudget* budget;
+};
+
+bool fileExists(const std::string& path, void*) {
     std::error_code ec;
-    if (!fs::exists(path, ec)) return failure(path, "file not found");
-    if (!fs::is_regular_file(path, ec)) return failure(path, "not a regular file");
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec) return failure(path, "cannot be read (" + ec.message() + ")");
-    if (size == 0) return failure(path, "the file is empty");
-    if (size >= std::numeric_limits<unsigned int>::max()) return failure(path, "larger than 4 GiB, which glTF cannot be");
+    return std::filesystem::exists(path, ec);  // anything that exists: reading it then says what it is
+}
 
-    char magic[4] = {};
-    std::ifstream(path, std::ios::binary).read(magic, 4);
-    const bool binary = std::memcmp(magic, "glTF", 4) == 0;  // GLB by content, whatever the extension says
+std::string expandNothing(const std::string& path, void*) { return path; }
 
+bool readBudgetedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    DecodeBudget& budget = *static_cast<FileAccess*>(user)->budget;
+    std::string why = readRegularFile(path, kMaxDecodedBytes - budget.used, *out);
+    if (why.empty() && budget.take(out->size())) return true;
+    if (why.empty()) why = path + ": passes the scene's " + str(kMaxDecodedBytes >> 20) + " MiB decode limit";
+    if (err) *err += why.substr(std::min(why.size(), path.size() + 2));  // tinygltf prefixes the path itself
+    out->clear();
+    return false;
+}
+
+bool writeNothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not allowed while loading";
+    return false;
+}
+
+SceneLoadResult loadBytes(const std::vector<unsigned char>& bytes, const std::string& label, const std::string& baseDir) {
+    if (bytes.empty()) return failure(label, "the file is empty");
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;  // GLB by content
+    const std::string_view json =
+        binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    if (std::string problem = precheckGltfJson(json); !problem.empty()) return failure(label, problem);
+
+    DecodeBudget budget;
+    budget.take(bytes.size());
+    FileAccess access{&budget};
     tg::Model model;
     tg::TinyGLTF gltf;
+    gltf.SetFsCallbacks(tg::FsCallbacks{&fileExists, &expandNothing, &readBudgetedFile, &writeNothing, &access});
     EncodedImages images{&model, {}};
     gltf.SetImageLoader(&keepEncodedImage, &images);
     std::string err, warn;
-    const bool ok = binary ? gltf.LoadBinaryFromFile(&model, &err, &warn, path)
-                           : gltf.LoadASCIIFromFile(&model, &err, &warn, path);
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
+                           : gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                                      size, baseDir);
     if (!ok) {
-        if (const std::string ext = unsupportedRequiredExtension(path, binary); !ext.empty())
-            return failure(path, compressedGeometryError(ext));
+        if (const std::string ext = unsupportedRequiredExtension(json); !ext.empty())
+            return failure(label, compressedGeometryError(ext));
         std::string why = joinLines(err);
         if (why.empty()) why = joinLines(warn);
         if (why.find("File not found") != std::string::npos)
-            return failure(path, "a file it refers to is missing (" + why + ")");
-        return failure(path, std::string("cannot be loaded as ") + (binary ? "GLB" : "glTF") +
-                                 (why.empty() ? "" : " (" + why + ")"));
+            return failure(label, "a file it refers to is missing (" + why + ")");
+        return failure(label, std::string("cannot be loaded as ") + (binary ? "GLB" : "glTF") +
+                                  (why.empty() ? "" : " (" + why + ")"));
     }
 
-    Loader loader(model, images);
+    Loader loader(model, images, budget);
     for (const std::string& line : splitLines(warn)) loader.warn("tinygltf: " + line);
     std::string error;
     std::optional<Scene> scene = loader.run(error);
-    if (!scene) return failure(path, error);
-    std::string name = fs::path(path).stem().string();
-    if (name.size() > 5 && name.ends_with(".gltf")) name.resize(name.size() - 5);  // X.gltf.json -> X
-    scene->name = name;
+    if (!scene) return failure(label, error);
     return SceneLoadResult{std::move(scene), {}};
 }
 
+SceneLoadResult loadImpl(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::vector<unsigned char> bytes;
+    // Only a regular file: a FIFO would block, a folder or a device is no scene. glTF cannot pass 4 GiB.
+    if (std::string why = readRegularFile(path, std::numeric_limits<unsigned int>::max() - 1u, bytes); !why.empty()) {
+        if (why.ends_with(": no such file")) return failure(path, "file not found");
+        return SceneLoadResult{std::nullopt, why};
+    }
+    const std::string baseDir = fs::path(path).parent_path().string();
+    SceneLoadResult r = loadBytes(bytes, path, baseDir.empty() ? "." : baseDir);
+    if (!r.scene) return r;
+    std::string name = fs::path(path).stem().string();
+    if (name.size() > 5 && name.ends_with(".gltf")) name.resize(name.size() - 5);  // X.gltf.json -> X
+    r.scene->name = name;
+    return r;
+}
+
 }  // namespace
+
+SceneLoadResult loadGltfSceneFromMemory(const std::vector<unsigned char>& bytes, const std::string& label,
+                                        const std::string& baseDir) {
+    try {
+        SceneLoadResult r = loadBytes(bytes, label, baseDir);
+        if (r.scene) r.scene->name = label;
+        return r;
+    } catch (const std::bad_alloc&) {
+        return failure(label, "out of memory while loading");
+    } catch (const std::exception& e) {
+        return failure(label, std::string("failed to load: ") + e.what());
+    }
+}
 
 SceneLoadResult loadGltfScene(const std::string& path) {
     try {

@@ -47,13 +47,15 @@ Material MaterialImporter::convert(int index) {
         m.alphaMode = AlphaMode::Blend;
     else if (!gm.alphaMode.empty() && gm.alphaMode != "OPAQUE")
         warn_(where + ": unknown alphaMode '" + gm.alphaMode + "', treated as OPAQUE");
-    if (std::isfinite(gm.alphaCutoff) && gm.alphaCutoff >= 0.0)
+    // Alpha is in [0, 1], so is a meaningful cutoff; a larger one (1e308) would also overflow the float.
+    if (gm.alphaCutoff >= 0.0 && gm.alphaCutoff <= 1.0)
         m.alphaCutoff = float(gm.alphaCutoff);
     else
-        warn_(where + ": invalid alphaCutoff, 0.5 used");
+        warn_(where + ": alphaCutoff " + str(gm.alphaCutoff) +
+              " is out of range (allowed [0, 1]); 0.5 used");
     const std::vector<double>& f = gm.pbrMetallicRoughness.baseColorFactor;
     if (f.size() == 4 && std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); }))
-        m.baseColorFactor = glm::clamp(glm::vec4(float(f[0]), float(f[1]), float(f[2]), float(f[3])), 0.0f, 1.0f);
+        m.baseColorFactor = glm::vec4(glm::clamp(glm::dvec4(f[0], f[1], f[2], f[3]), 0.0, 1.0));
     else if (!f.empty())
         warn_(where + ": invalid baseColorFactor, white used");
     m.doubleSided = gm.doubleSided;
@@ -108,7 +110,14 @@ void MaterialImporter::applyTextureTransform(const tg::TextureInfo& info, Materi
     const glm::dmat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
     const glm::dmat3 rotate(c, -s, 0, s, c, 0, 0, 0, 1);
     const glm::dmat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
-    m.uvTransform = glm::mat3(translate * rotate * scaling);
+    const glm::dmat3 transform = translate * rotate * scaling;
+    for (int col = 0; col < 3; ++col)
+        for (int row = 0; row < 3; ++row)
+            if (!fitsFloat(transform[col][row])) {
+                warn_(where + ": KHR_texture_transform beyond float range; ignored");
+                return;
+            }
+    m.uvTransform = glm::mat3(transform);
 }
 
 int MaterialImporter::importImage(int index, const std::string& where) {

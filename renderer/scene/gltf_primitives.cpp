@@ -38,6 +38,21 @@ std::optional<Mesh> convertPrimitive(const tg::Model& model, int meshIndex, int 
         pos->second < int(model.accessors.size()) && model.accessors[std::size_t(pos->second)].bufferView < 0)
         return skip("Draco-compressed geometry is not supported");
 
+    // What this primitive decodes to (positions, normals, uvs: 32 bytes a vertex; indices read and rebuilt: 8 each),
+    // counted before anything is allocated.
+    auto countOf = [&](int accessor) {
+        return accessor >= 0 && accessor < int(model.accessors.size()) ? model.accessors[std::size_t(accessor)].count
+                                                                        : std::size_t(0);
+    };
+    const std::size_t vertices = countOf(pos->second);
+    const std::size_t indexCount = p.indices >= 0 ? countOf(p.indices) : vertices;
+    const bool countable = vertices <= kMaxDecodedBytes / 32 && indexCount <= kMaxDecodedBytes / 8;
+    if (tally.budget && !(countable && tally.budget->take(vertices * 32 + indexCount * 8))) {
+        tally.budget->exceeded = true;
+        return skip("its " + str(vertices) + " vertices and " + str(indexCount) + " indices pass the scene's " +
+                    str(kMaxDecodedBytes >> 20) + " MiB decode limit");
+    }
+
     std::string err;
     std::vector<float> raw;
     if (!readFloats(model, pos->second, TINYGLTF_TYPE_VEC3, raw, err)) return skip("POSITION: " + err);

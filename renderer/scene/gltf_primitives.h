@@ -14,6 +14,7 @@ namespace shadowlab::gltf {
 struct PrimitiveTally {
     std::size_t zeroAreaTriangles = 0;  // kept, summed into one warning at the end
     bool morphWarned = false;           // morph targets are ignored: warn on the first one only
+    DecodeBudget* budget = nullptr;     // the scene's decode limit, shared with the buffer reads
 };
 
 // "mesh N 'name'" for messages.

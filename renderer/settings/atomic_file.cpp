@@ -1,5 +1,7 @@
 #include "settings/atomic_file.h"
 
+#include "settings/regular_file.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -25,9 +27,7 @@ std::string quoted(const fs::path& path) {
 
 std::string errnoText(const std::string& what) { return what + ": " + std::strerror(errno); }
 
-bool writeAll(int fd, const std::string& data) {
-    const char* p = data.data();
-    std::size_t left = data.size();
+bool writeAll(int fd, const char* p, std::size_t left) {
     while (left > 0) {
         ssize_t n = ::write(fd, p, left);
         if (n < 0) {
@@ -43,19 +43,27 @@ bool writeAll(int fd, const std::string& data) {
 }  // namespace
 
 std::string writeFileAtomically(const std::string& path, const std::string& text) {
+    return writeFileAtomically(path, text.data(), text.size());
+}
+
+std::string writeFileAtomically(const std::string& path, const void* bytes, std::size_t size) {
     if (path.empty()) return "no file name given";
-    // Replace what a symlink points to, not the link itself.
+    // Replace what a symlink points to, not the link itself, and only when that is a regular file: a dangling
+    // link is refused rather than followed to create a file somewhere the user did not name.
     fs::path target(path);
     std::error_code ec;
-    if (fs::is_symlink(target, ec)) {
+    if (fs::is_symlink(fs::symlink_status(target, ec))) {
         fs::path resolved = fs::canonical(target, ec);
-        if (!ec) target = resolved;
+        if (ec) return "it is a symbolic link to " + quoted(fs::read_symlink(target, ec)) + ", which does not exist";
+        target = resolved;
     }
     fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     fs::file_status folderStatus = fs::status(folder, ec);
     if (folderStatus.type() == fs::file_type::not_found) return "folder " + quoted(folder) + " does not exist";
     if (!fs::is_directory(folderStatus)) return quoted(folder) + " is not a folder";
-    if (fs::is_directory(target, ec)) return "it is a folder";
+    // Only a regular file is replaced: renaming over /dev/null, a FIFO or a socket would destroy it.
+    if (const std::string kind = nonRegularFileKind(target.string()); !kind.empty())
+        return "it is " + kind + ", not a regular file; ShadowLab writes only regular files";
 
     // Temporary in the same folder so rename() is atomic (same file system). O_EXCL: never reuse someone's file.
     static std::atomic<unsigned> counter{0};
@@ -80,7 +88,8 @@ std::string writeFileAtomically(const std::string& path, const std::string& text
     // Keep the permissions of the file being replaced (the new file would otherwise get 0666 & ~umask).
     struct stat old {};
     if (::stat(target.c_str(), &old) == 0 && ::fchmod(fd, old.st_mode & 07777) != 0) return abandon("fchmod");
-    if (!writeAll(fd, text)) return abandon("write");
+    if (!writeAll(fd, static_cast<const char*>(bytes), size))
+        return abandon("cannot write " + std::to_string(size) + " bytes into " + quoted(folder));
     if (::fsync(fd) != 0) return abandon("fsync");
     int closeResult = ::close(fd);
     fd = -1;

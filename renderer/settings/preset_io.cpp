@@ -1,10 +1,14 @@
 #include "settings/preset_io.h"
 
 #include "settings/atomic_file.h"
+#include "settings/json_nesting.h"
+#include "settings/regular_file.h"
 #include "settings/settings_fields.h"
 
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -113,33 +117,6 @@ std::string parseJson(const std::string& text, json& out) {
     return std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + what;
 }
 
-std::string readTextFile(const std::string& path, std::string& out) {
-    std::error_code ec;
-    fs::file_status st = fs::status(path, ec);
-    if (st.type() == fs::file_type::not_found) return path + ": no such file";
-    if (ec) return path + ": " + ec.message();
-    if (fs::is_directory(st)) return path + ": is a folder, not a preset file";
-
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) return path + ": cannot open: " + std::strerror(errno);
-    constexpr std::size_t maxBytes = 16u << 20;  // a preset is a few KiB; refuse to slurp /dev/zero or a video
-    char buf[65536];
-    std::size_t n = 0;
-    while ((n = std::fread(buf, 1, sizeof buf, file)) > 0) {
-        out.append(buf, n);
-        if (out.size() > maxBytes) {
-            std::fclose(file);
-            return path + ": larger than 16 MiB, not a preset";
-        }
-    }
-    bool readFailed = std::ferror(file) != 0;
-    int readErrno = errno;
-    std::fclose(file);
-    if (readFailed) return path + ": read error: " + std::strerror(readErrno);
-    return {};
-}
-
-
 }  // namespace
 
 nlohmann::json presetToJson(const Settings& settings, const std::string& name, const std::string& description) {
@@ -169,17 +146,19 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
                            kPresetSchema + "\")");
     const std::string versionAllowed = "(allowed " + std::to_string(kPresetSchemaVersion) + ")";
     auto version = preset.find("schemaVersion");
+    // 1.0 is the integer 1 written by a tool that writes every number as a float; 1.5 is not a version.
+    const bool integral = version != preset.end() && version->is_number() &&
+                          std::trunc(version->get<double>()) == version->get<double>();
     if (version == preset.end()) {
         r.errors.push_back("schemaVersion: missing " + versionAllowed);
-    } else if (!version->is_number_integer()) {
+    } else if (!integral) {
         r.errors.push_back("schemaVersion: expected an integer, got " + describeJsonValue(*version) + " " +
                            versionAllowed);
-    } else if (version->is_number_unsigned() ? version->get<std::uint64_t>() > kPresetSchemaVersion
-                                             : version->get<std::int64_t>() > kPresetSchemaVersion) {
+    } else if (version->get<double>() > kPresetSchemaVersion) {
         r.errors.push_back("schemaVersion: " + describeJsonValue(*version) +
                            " is newer than this ShadowLab understands " + versionAllowed +
                            "; update ShadowLab to load this preset");
-    } else if (version->get<std::int64_t>() < 1) {
+    } else if (version->get<double>() < 1) {
         r.errors.push_back("schemaVersion: " + describeJsonValue(*version) + " is not a valid version " +
                            versionAllowed);
     }
@@ -201,7 +180,7 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
         if (std::string error = field.set(settings, value); !error.empty()) r.errors.push_back(std::move(error));
     };
     auto unknown = [&](const std::string& key) {
-        std::string warning = "unknown key '" + key + "' ignored";
+        std::string warning = "unknown key '" + describeKey(key) + "' ignored";
         if (auto close = similarSettingsKeys(key); !close.empty()) warning += " (did you mean " + close.front() + "?)";
         r.warnings.push_back(std::move(warning));
     };
@@ -235,20 +214,32 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
     return r;
 }
 
-PresetLoadResult loadPresetFile(const std::string& path, const Settings& base) {
+PresetLoadResult presetFromText(const std::string& text, const Settings& base) {
     PresetLoadResult r;
-    std::string text;
-    if (std::string error = readTextFile(path, text); !error.empty()) {
+    // Before parsing: what follows walks the value recursively in places (messages that print it).
+    if (std::string error = checkJsonNesting(text); !error.empty()) {
         r.errors.push_back(std::move(error));
         return r;
     }
     json preset;
     if (std::string error = parseJson(text, preset); !error.empty()) {
-        r.errors.push_back(path + ":" + error);
+        r.errors.push_back(std::move(error));
         return r;
     }
-    r = presetFromJson(preset, base);
-    for (auto& e : r.errors) e = path + ": " + e;
+    return presetFromJson(preset, base);
+}
+
+PresetLoadResult loadPresetFile(const std::string& path, const Settings& base) {
+    PresetLoadResult r;
+    std::string text;
+    // A preset is a few KiB; the limit refuses a video or a log file quickly.
+    if (std::string error = readRegularFile(path, kMaxPresetBytes, text); !error.empty()) {
+        r.errors.push_back(std::move(error));
+        return r;
+    }
+    r = presetFromText(text, base);
+    // Syntax errors start with line:column and join the path without a space (path:3:7: ...).
+    for (auto& e : r.errors) e = path + (!e.empty() && std::isdigit(static_cast<unsigned char>(e[0])) ? ":" : ": ") + e;
     for (auto& w : r.warnings) w = path + ": " + w;
     return r;
 }

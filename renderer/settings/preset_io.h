@@ -34,7 +34,13 @@ struct PresetLoadResult {
 // a missing or newer schemaVersion, or settings that fail Settings::validate() are errors.
 PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& base = Settings{});
 
-// As presetFromJson, plus file errors (missing, unreadable, JSON syntax error at path:line:column).
+// As presetFromJson, from JSON text: errors for text nesting deeper than kMaxJsonNesting and for JSON syntax
+// ("line:column: invalid JSON: ...").
+PresetLoadResult presetFromText(const std::string& text, const Settings& base = Settings{});
+
+inline constexpr std::size_t kMaxPresetBytes = 16u << 20;
+
+// As presetFromText, plus file errors (missing, unreadable, JSON syntax error at path:line:column).
 PresetLoadResult loadPresetFile(const std::string& path, const Settings& base = Settings{});
 
 // Writes atomically: a temporary file in the same folder, fsync, rename over path. Any failure leaves the previous

@@ -1,5 +1,7 @@
 #include "settings/recent_files.h"
 
+#include "settings/regular_file.h"
+
 #include "settings/atomic_file.h"
 #include "settings/user_config.h"
 
@@ -39,14 +41,13 @@ RecentFilesLoad loadRecentFiles(const fs::path& file) {
     std::error_code ec;
     if (!fs::exists(file, ec)) return out;
     const std::string name = file.string();
-    std::ifstream in(file);
-    if (!in) {
-        out.error = name + ": cannot open for reading";
+    std::string text;
+    // A list of ten paths: 1 MiB is generous, and a FIFO or device put in its place is refused, not read.
+    if (std::string error = readRegularFile(name, 1u << 20, text); !error.empty()) {
+        out.error = std::move(error);
         return out;
     }
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+    const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (json.is_discarded()) {
         out.error = name + ": not valid JSON";
         return out;
@@ -68,8 +69,9 @@ std::string saveRecentFiles(const fs::path& file, const RecentFiles& files) {
         !error.empty())
         return failed + error;
     const nlohmann::json json = {{"recentFiles", files.items()}};
-    if (std::string error = writeFileAtomically(file.string(), json.dump(2) + "\n"); !error.empty())
-        return failed + error;
+    // replace: a path that is not UTF-8 is saved with U+FFFD rather than throwing.
+    const std::string text = json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    if (std::string error = writeFileAtomically(file.string(), text); !error.empty()) return failed + error;
     return {};
 }
 

@@ -1,5 +1,7 @@
 #include "settings/settings_fields.h"
 
+#include "settings/json_nesting.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -374,6 +376,8 @@ const SettingsField* findSettingsField(std::string_view key) {
 }
 
 std::vector<std::string> similarSettingsKeys(std::string_view key) {
+    // No key is near a long string, and edit distance costs length squared: a 16 MB key would take seconds.
+    if (key.size() > kMaxSuggestedKeyLength) return {};
     const std::string query = lower(key);
     const std::string_view queryName = [&] {
         std::string_view q = query;
@@ -397,38 +401,74 @@ std::vector<std::string> similarSettingsKeys(std::string_view key) {
     return out;
 }
 
+namespace {
+
+constexpr std::size_t kMaxDescribedLength = 80;
+
+// Appends a short text of `value` to `out`, stopping once `out` is longer than a message shows: deep or huge values
+// cost no more than a short one, and the walk's depth is bounded (no stack overflow on "[[[[...").
+void describeInto(std::string& out, const json& value, int depth) {
+    if (out.size() > kMaxDescribedLength) return;
+    if (value.is_number_float()) {
+        out += formatNumber(value.get<double>());
+    } else if (value.is_string()) {
+        // Cut before quoting: a 16 MB string is not escaped whole; bytes that are not UTF-8 print as U+FFFD.
+        const std::string& s = value.get_ref<const std::string&>();
+        out += json(s.substr(0, kMaxDescribedLength)).dump(-1, ' ', false, json::error_handler_t::replace);
+    } else if (value.is_structured()) {
+        const bool array = value.is_array();
+        out += array ? "[" : "{";
+        if (depth >= 8 && !value.empty()) out += "...";
+        else {
+            bool first = true;
+            for (auto it = value.begin(); it != value.end() && out.size() <= kMaxDescribedLength; ++it) {
+                out += first ? "" : ", ";
+                first = false;
+                if (!array) out += json(it.key()).dump(-1, ' ', false, json::error_handler_t::replace) + ": ";
+                describeInto(out, *it, depth + 1);
+            }
+        }
+        out += array ? "]" : "}";
+    } else {
+        out += value.dump();  // null, true/false, integers
+    }
+}
+
+}  // namespace
+
 std::string describeJsonValue(const json& value) {
     std::string text;
-    if (value.is_number_float()) {
-        text = formatNumber(value.get<double>());
-    } else if (value.is_array()) {
-        std::vector<std::string> items;
-        for (const auto& v : value) items.push_back(describeJsonValue(v));
-        text = "[" + joined(items) + "]";
-    } else {
-        text = value.dump();  // strings come out quoted, which is what we want in a message
-    }
-    constexpr std::size_t maxLength = 80;
-    if (text.size() > maxLength) text = text.substr(0, maxLength - 3) + "...";
+    describeInto(text, value, 0);
+    if (text.size() > kMaxDescribedLength) text = text.substr(0, kMaxDescribedLength - 3) + "...";
+    return text;
+}
+
+std::string describeKey(std::string_view key) {
+    constexpr std::size_t shown = 60;
+    std::string text = json(std::string(key.substr(0, shown))).dump(-1, ' ', false, json::error_handler_t::replace);
+    text = text.substr(1, text.size() - 2);  // the escaping without the quotes
+    if (key.size() > shown) text += "... (" + std::to_string(key.size()) + " bytes)";
     return text;
 }
 
 std::string applySettingOverride(Settings& settings, std::string_view keyEqualsValue) {
     auto eq = keyEqualsValue.find('=');
     if (eq == std::string_view::npos)
-        return "--set expects key=value, got '" + std::string(keyEqualsValue) + "'";
+        return "--set expects key=value, got '" + describeKey(keyEqualsValue) + "'";
     std::string_view key = trim(keyEqualsValue.substr(0, eq));
     std::string_view text = trim(keyEqualsValue.substr(eq + 1));
 
     const SettingsField* field = findSettingsField(key);
     if (!field) {
         std::vector<std::string> close = similarSettingsKeys(key);
-        if (!close.empty()) return "unknown setting '" + std::string(key) + "' (did you mean " + joined(close) + "?)";
+        if (!close.empty()) return "unknown setting '" + describeKey(key) + "' (did you mean " + joined(close) + "?)";
         std::vector<std::string> all;
         for (const auto& f : settingsFields()) all.push_back(f.key);
-        return "unknown setting '" + std::string(key) + "' (valid keys: " + joined(all) + ")";
+        return "unknown setting '" + describeKey(key) + "' (valid keys: " + joined(all) + ")";
     }
 
+    if (std::string deep = checkJsonNesting(text); !deep.empty())
+        return problem(field->key, "the value " + deep.substr(deep.find("nests")), field->allowed);
     json value = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (value.is_discarded()) {
         const bool numeric = field->kind == SettingsFieldKind::Float || field->kind == SettingsFieldKind::Int;

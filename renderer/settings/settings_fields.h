@@ -43,7 +43,9 @@ const std::vector<SettingsField>& settingsFields();
 // nullptr when the key is unknown. Exact, case-sensitive match.
 const SettingsField* findSettingsField(std::string_view key);
 
-// Keys close to an unknown one (typos, missing group, wrong case), best first; empty when nothing is close.
+// Keys close to an unknown one (typos, missing group, wrong case), best first; empty when nothing is close or the
+// key is longer than kMaxSuggestedKeyLength (no key is near it, and the search costs length squared).
+inline constexpr std::size_t kMaxSuggestedKeyLength = 64;
 std::vector<std::string> similarSettingsKeys(std::string_view key);
 
 // `--set key=value`. The value is read as JSON when it parses (numbers, true/false, [1,2,3], "quoted"), otherwise
@@ -52,6 +54,10 @@ std::vector<std::string> similarSettingsKeys(std::string_view key);
 std::string applySettingOverride(Settings& settings, std::string_view keyEqualsValue);
 
 // A JSON value as a user would type it, for messages (NaN and infinities included, long values shortened).
+// Bounded in time and depth whatever the value; bytes that are not UTF-8 print as U+FFFD.
 std::string describeJsonValue(const nlohmann::json& value);
+
+// A key as a message shows it: at most 60 bytes (then "... (N bytes)"), escaped, never invalid UTF-8.
+std::string describeKey(std::string_view key);
 
 }  // namespace shadowlab

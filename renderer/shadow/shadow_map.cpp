@@ -1,5 +1,9 @@
 #include "shadow/shadow_map.h"
 
+#include "settings/settings_fields.h"
+
+#include <algorithm>
+
 #include "gl/gl_errors.h"
 
 namespace shadowlab {
@@ -33,9 +37,14 @@ int depthFormatBytes(DepthFormat format) {
 
 std::string ShadowMap::ensure(int resolution, DepthFormat format, int maxTextureSize) {
     if (texture_ && resolution == resolution_ && format == format_) return {};
-    if (resolution < 1 || resolution > maxTextureSize)
-        return "shadow.resolution: " + std::to_string(resolution) + " is outside what this GPU allows [1, " +
-               std::to_string(maxTextureSize) + "]; keeping the " + std::to_string(resolution_) + "² map";
+    // The key's own range, narrowed by the GPU: the same bounds the preset table states.
+    const SettingsField& key = *findSettingsField("shadow.resolution");
+    const int lo = int(key.min), hi = std::min(int(key.max), maxTextureSize);
+    if (resolution < lo || resolution > hi)
+        return "shadow.resolution: " + std::to_string(resolution) + " is outside what this GPU allows [" +
+               std::to_string(lo) + ", " + std::to_string(hi) + "] (GL_MAX_TEXTURE_SIZE " +
+               std::to_string(maxTextureSize) + "); " +
+               (texture_ ? "keeping the " + std::to_string(resolution_) + "² map" : std::string("no shadow map yet"));
 
     gl::drainErrors();
     gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
