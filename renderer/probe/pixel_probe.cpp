@@ -87,6 +87,7 @@ std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Se
                                             camera.position - stats.renderOrigin, samples_);
         !error.empty())
         return error;
+    glUseProgram(0);  // a host that saves and restores the current program (ImGui's backend) never holds ours
     renderer_ = &renderer;
     scene_ = &scene;
     settings_ = settings;

@@ -13,8 +13,9 @@ const std::vector<Panel>& panels() {
         {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel},
         {"Sampling", PanelColumn::Right, 0.17f, drawSamplingPanel},
         {"Shadow map viewer", PanelColumn::Right, 0.48f, drawShadowMapViewerPanel},
-        {"Stats", PanelColumn::Bottom, 0.5f, drawStatsPanel},
-        {"Accuracy", PanelColumn::Bottom, 0.5f, drawAccuracyPanel},
+        {"Stats", PanelColumn::Bottom, 0.3f, drawStatsPanel},
+        {"Accuracy", PanelColumn::Bottom, 0.4f, drawAccuracyPanel},
+        {"Probe", PanelColumn::Bottom, 0.3f, drawProbePanel},
     };
     return all;
 }
