@@ -3,6 +3,7 @@
 #include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
+#include "cli/probe_command.h"
 #include "cli/render_command.h"
 #include "cli/tune_command.h"
 #include "editor_window/edit_command.h"
@@ -84,6 +85,16 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--set", exportOptions.overrides, "override a setting: key=value (repeatable)");
     exportCmd->add_option("--format", exportOptions.format, "d3d12 | d3d11 | vulkan | gl | json")->required();
     exportCmd->add_option("--out", exportOptions.out, "write to this file (default: standard output)");
+    cli::ProbeOptions probe;
+    CLI::App* probeCmd = app.add_subcommand("probe", "Why is this pixel shadowed: taps, stored depths, bias terms, S on CPU and GPU");
+    probeCmd->add_option("--scene", probe.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    probeCmd->add_option("--preset", probe.preset, "a preset JSON path, or the name of a shipped preset");
+    probeCmd->add_option("--set", probe.overrides, "override a setting: key=value (repeatable)");
+    probeCmd->add_option("--width", probe.width, "view width")->capture_default_str();
+    probeCmd->add_option("--height", probe.height, "view height")->capture_default_str();
+    probeCmd->add_option("--pixel", probe.pixel, "X,Y: the pixel, y down from the top")->required();
+    probeCmd->add_option("--json", probe.json, "also write the probe as JSON");
+    probeCmd->add_flag("--measure", probe.measure, "also measure the view: the exact visibility and the error's cause");
 
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
@@ -101,6 +112,7 @@ int main(int argc, char** argv) {
     if (*measureCmd) return cli::runMeasure(measure);
     if (*tuneCmd) return cli::runTune(tune);
     if (*exportCmd) return cli::runExport(exportOptions);
+    if (*probeCmd) return cli::runProbe(probe);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

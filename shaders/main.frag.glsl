@@ -1,6 +1,7 @@
 #version 450 core
 // Main pass: projects the pixel into light space and compares depths. The renderer prepends #defines:
-//   filter  FILTER_POINT | FILTER_HARDWARE_2X2 | FILTER_PCF (PCF_KERNEL n) | FILTER_POISSON
+//   filter  FILTER_POINT | FILTER_HARDWARE_2X2 | FILTER_PCF (PCF_KERNEL n) | FILTER_POISSON (POISSON_TAPS, POISSON_DISK)
+//           (renderer/shading/filter_taps.cpp: the one list of taps, shared with the pixel probe)
 //   view    VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH
 //   LIGHT_PERSPECTIVE (spot light), NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
 // Only the features a frame uses are compiled in; kernel sizes are compile-time constants.
@@ -35,14 +36,8 @@ uniform sampler2D uBaseColorTexture;
 #endif
 
 #ifdef FILTER_POISSON
-const int POISSON_TAPS = 16;
-const vec2 POISSON_DISK[POISSON_TAPS] = vec2[](
-    vec2(-0.94201624, -0.39906216), vec2(0.94558609, -0.76890725), vec2(-0.09418410, -0.92938870),
-    vec2(0.34495938, 0.29387760), vec2(-0.91588581, 0.45771432), vec2(-0.81544232, -0.87912464),
-    vec2(-0.38277543, 0.27676845), vec2(0.97484398, 0.75648379), vec2(0.44323325, -0.97511554),
-    vec2(0.53742981, -0.47373420), vec2(-0.26496911, -0.41893023), vec2(0.79197514, 0.19090188),
-    vec2(-0.24188840, 0.99706507), vec2(-0.81409955, 0.91437590), vec2(0.19984126, 0.78641367),
-    vec2(0.14383161, -0.14100790));
+// POISSON_TAPS and POISSON_DISK come from renderer/shading/filter_taps.cpp (the probe reads the same taps).
+const vec2 POISSON_DISK_TAPS[POISSON_TAPS] = vec2[](POISSON_DISK);
 uniform float uPoissonRadiusTexels;
 #endif
 
@@ -67,7 +62,7 @@ float shadowFactor(vec3 lightTex) {
 #elif defined(FILTER_POISSON)
     float sum = 0.0;
     for (int i = 0; i < POISSON_TAPS; ++i)
-        sum += texture(uShadowMap, vec3(lightTex.xy + POISSON_DISK[i] * uPoissonRadiusTexels * uShadowTexel, ref));
+        sum += texture(uShadowMap, vec3(lightTex.xy + POISSON_DISK_TAPS[i] * uPoissonRadiusTexels * uShadowTexel, ref));
     return sum / float(POISSON_TAPS);
 #endif
 }

@@ -102,6 +102,7 @@ void Editor::renderFrame() {
     }
     renderViewport();
     pollAccuracy();
+    runProbe();
     if (screenshotRequested_) takeScreenshot();
 }
 
@@ -381,7 +382,8 @@ void Editor::dropFiles(const std::vector<std::string>& paths) {
 }
 
 bool Editor::busy() const {
-    if (loader_.busy() || state_.animateLight || screenshotRequested_ || windowScreenshotPath_) return true;
+    if (loader_.busy() || state_.animateLight || screenshotRequested_ || windowScreenshotPath_ || state_.probe.request)
+        return true;
     // Nothing to draw into (no scene yet, or a minimized window): wait for events rather than spin.
     if (!state_.scene || !orbit_ || viewportRect_.z < 16.0f || viewportRect_.w < 16.0f) return false;
     if (!lastRendered_) return true;

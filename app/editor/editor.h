@@ -103,6 +103,9 @@ private:
     void pollAccuracy();
     void adoptAccuracyResult(AccuracyJobResult result);
     void uploadAccuracyOverlay();
+    void probeViewportInput(ImVec2 imagePos);  // a click (no drag) or P held over the view asks for a probe
+    void drawProbeMarker(ImVec2 imagePos);     // a ring around the probed pixel
+    void runProbe();                           // the pending probe, or the same pixel again once the view changed
 
     void handleShortcuts();
     ImVec4 viewportWindowRect() const;
@@ -153,6 +156,7 @@ private:
     // Accuracy: the worker (its thread and GL context start with the first job), what the running job measures,
     // and the automatic measurement's bookkeeping.
     std::unique_ptr<AccuracyWorker> accuracyWorker_;
+    std::unique_ptr<PixelProbe> probe_;  // made on the first probe (its G-buffer shaders)
     std::optional<AccuracyViewKey> accuracyJobKey_;
     std::optional<AccuracyViewKey> lastSeenAccuracyKey_;  // the view as of the newest change
     double lastAccuracyChange_ = 0.0;                     // when the view or settings last changed

@@ -5,6 +5,7 @@ namespace shadowlab::editor::keys {
 
 inline constexpr int kF = 70;
 inline constexpr int kO = 79;
+inline constexpr int kP = 80;  // held over the viewport: probe the pixel under the cursor
 inline constexpr int kQ = 81;
 inline constexpr int kS = 83;
 inline constexpr int kF12 = 301;

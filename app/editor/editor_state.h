@@ -4,6 +4,7 @@
 #include "editor/accuracy_state.h"
 #include "editor/control_rects.h"
 #include "editor/preset_session.h"
+#include "editor/probe_state.h"
 #include "editor/settings_edit.h"
 #include "frame/frame_stats.h"
 #include "overlay/shadow_map_view.h"
@@ -84,6 +85,7 @@ struct EditorState {
 
     MapViewerState viewer;
     AccuracyState accuracy;  // the Accuracy panel and the viewport's accuracy overlay
+    ProbeState probe;        // the Probe panel: why the clicked pixel is lit or shadowed
 
     // Scene panel
     std::optional<SceneLoadProgress> loading;  // while a scene loads

@@ -146,6 +146,8 @@ void Editor::drawViewport() {
             draw->AddText(ImVec2(imagePos.x + 12, imagePos.y + 12), IM_COL32(200, 200, 200, 255),
                           state_.loading ? "loading the scene..." : "no frame yet");
         }
+        drawProbeMarker(imagePos);
+        probeViewportInput(imagePos);
         viewportCameraInput(imageSize);
     }
     drawStatusBar();

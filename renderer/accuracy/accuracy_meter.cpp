@@ -335,6 +335,9 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
         (kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba) =
             makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
                         boundary, settings.light.ambient);
+    report.pixelClass = m.visibility.classes;
+    report.pixelShadow = shadowFactor;
+    report.pixelCause = metrics.causes;
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");

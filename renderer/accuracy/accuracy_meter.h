@@ -116,6 +116,11 @@ struct AccuracyReport {
     std::vector<std::uint8_t> overlayRgba;
     std::vector<std::uint8_t> causeOverlayRgba;
 
+    // Per pixel, row 0 = TOP, for the pixel probe: the reference's verdict, the tool's S and the mismatch's cause.
+    std::vector<PixelClass> pixelClass;
+    std::vector<float> pixelShadow;
+    std::vector<MismatchCause> pixelCause;
+
     double causePercentOfWrong(MismatchCause cause) const;  // share of wrong pixels this cause explains
     // The cause of the most mismatched pixels beyond k (else "within k of a true edge"; None when nothing mismatches).
     MismatchCause mainCause() const;

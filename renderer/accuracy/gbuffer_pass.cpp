@@ -124,6 +124,8 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
     out.width = width;
     out.height = height;
     out.draw.assign(count, -1);
+    out.instance.assign(count, -1);
+    out.triangle.assign(count, -1);
     out.point.assign(count, glm::dvec3(0.0));
     out.normal.assign(count, glm::dvec3(0.0));
     out.finite.assign(count, 0);
@@ -141,6 +143,8 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
             const Instance& instance = *drawInstance[d];
             const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
             if (triangle >= mesh.triangleCount()) continue;
+            out.instance[i] = std::int32_t(&instance - scene.instances.data());
+            out.triangle[i] = std::int32_t(triangle);
             const glm::dmat4 model = toOrigin * glm::dmat4(instance.transform);
             glm::dvec3 v[3];
             for (int k = 0; k < 3; ++k)

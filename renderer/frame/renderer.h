@@ -35,6 +35,8 @@ public:
     void waitForTimings(FrameStats& stats);
 
     const ShadowMap& shadowMap() const { return shadowMap_; }
+    // The scene as last uploaded (null before the first frame): the pixel probe's G-buffer draws the same draws.
+    const GpuScene* gpuScene() const { return gpuScene_.get(); }
     const GlInfo& glInfo() const { return info_; }
 
 private:

@@ -58,6 +58,21 @@ double weightedMedian(std::vector<std::pair<double, double>>& samples) {
 
 }  // namespace
 
+double polygonOffsetDepth(const ShadowMapSettings& shadow, DepthFormat format, double maxDepth, double slope) {
+    double o = double(shadow.slopeScaledDepthBias) * slope + double(shadow.depthBias) * depthStepAt(format, maxDepth);
+    if (shadow.depthBiasClamp > 0.0f) o = std::min(o, double(shadow.depthBiasClamp));
+    return o;
+}
+
+double windowDepthSlope(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a;
+    const double det = e1.x * e2.y - e2.x * e1.y;
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return -1.0;
+    const double dzdx = (e1.z * e2.y - e2.z * e1.y) / det;
+    const double dzdy = (e2.z * e1.x - e1.z * e2.x) / det;
+    return std::max(std::abs(dzdx), std::abs(dzdy));
+}
+
 BiasTerm biasTerm(const LightSpace& light, double depth, double atDepth) {
     BiasTerm t;
     t.depth = depth;
@@ -106,11 +121,8 @@ ReceiverDepths receiverDepths(const Scene& scene, const LightSpace& light, const
             r.minDepth = std::min(r.minDepth, depth);
             r.maxDepth = std::max(r.maxDepth, depth);
             depths.emplace_back(depth, area);
-            if (area > 0.0) {  // edge-on triangles have no finite slope and cover no texel
-                const double dzdx = (e1.z * e2.y - e2.z * e1.y) / det;
-                const double dzdy = (e2.z * e1.x - e1.z * e2.x) / det;
-                slopes.emplace_back(std::max(std::abs(dzdx), std::abs(dzdy)), area);
-            }
+            if (area > 0.0)  // edge-on triangles have no finite slope and cover no texel
+                slopes.emplace_back(windowDepthSlope(glm::dvec3(a), glm::dvec3(b), glm::dvec3(c)), area);
         }
     }
     if (!r.valid) return ReceiverDepths{};
@@ -139,8 +151,7 @@ BiasReport biasReport(const ShadowMapSettings& shadow, DepthFormat format, const
     b.medianSlope = receivers.medianSlope;
     b.slope = biasTerm(light, double(shadow.slopeScaledDepthBias) * receivers.medianSlope, median);
     b.clamp = biasTerm(light, double(shadow.depthBiasClamp), median);
-    double total = double(shadow.depthBias) * depthStepAt(format, median) + b.slope.depth;
-    if (shadow.depthBiasClamp > 0.0f) total = std::min(total, double(shadow.depthBiasClamp));
+    const double total = polygonOffsetDepth(shadow, format, median, receivers.medianSlope);
     b.total = biasTerm(light, total, median);
     const bool nearCoarser = clipDepthStepAt(nearDepth) >= clipDepthStepAt(farDepth);
     const double coarsest = nearCoarser ? nearDepth : farDepth;

@@ -30,6 +30,13 @@ double clipDepthStepAt(double depth);
 // r for a triangle whose largest window depth is `depth` (clamped into the format's range).
 double depthStepAt(DepthFormat format, double depth);
 
+// The polygon offset o a caster triangle gets: min(SlopeScaledDepthBias x slope + DepthBias x r(maxDepth), clamp).
+double polygonOffsetDepth(const ShadowMapSettings& shadow, DepthFormat format, double maxDepth, double slope);
+
+// m of a triangle from its vertices in the map's window space (x, y in texels, z window depth): the largest of
+// |dz/dx|, |dz/dy|, as the GPU computes it for the polygon offset. Negative for an edge-on triangle (no slope).
+double windowDepthSlope(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+
 // A depth difference `depth`, taken at window depth `atDepth` (spot lights' depth is not linear in distance), in
 // world units and texels.
 BiasTerm biasTerm(const LightSpace& light, double depth, double atDepth);

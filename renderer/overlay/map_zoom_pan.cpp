@@ -33,6 +33,12 @@ void MapZoomPan::zoomAt(double viewX, double viewY, double factor, int viewWidth
     center_ = anchor - glm::dvec2((viewX - 0.5 * viewWidth) * s, (0.5 * viewHeight - viewY) * s);
 }
 
+void MapZoomPan::focus(const glm::dvec2& uv, double zoom, int viewWidth, int viewHeight, int resolution) {
+    zoom_ = 1.0;
+    zoomAt(0.5 * viewWidth, 0.5 * viewHeight, zoom, viewWidth, viewHeight, resolution);
+    center_ = glm::clamp(uv, glm::dvec2(0.0), glm::dvec2(1.0));
+}
+
 void MapZoomPan::pan(double dx, double dy, int viewWidth, int viewHeight) {
     const double s = uvPerPixel(zoom_, viewWidth, viewHeight);
     // The map follows the mouse; view y grows downward, uv v upward. The centre stays on the map.
@@ -43,6 +49,12 @@ glm::dvec2 viewToUv(const UvRect& rect, double viewX, double viewY, int viewWidt
     const double fx = viewX / double(std::max(1, viewWidth));
     const double fy = viewY / double(std::max(1, viewHeight));
     return {rect.min.x + fx * (rect.max.x - rect.min.x), rect.max.y - fy * (rect.max.y - rect.min.y)};
+}
+
+glm::dvec2 uvToView(const UvRect& rect, const glm::dvec2& uv, int viewWidth, int viewHeight) {
+    const double fx = (uv.x - rect.min.x) / (rect.max.x - rect.min.x);
+    const double fy = (rect.max.y - uv.y) / (rect.max.y - rect.min.y);
+    return {fx * std::max(1, viewWidth), fy * std::max(1, viewHeight)};
 }
 
 std::optional<glm::ivec2> texelAtView(const UvRect& rect, double viewX, double viewY, int viewWidth, int viewHeight,

@@ -32,6 +32,9 @@ public:
     // one of the map's `resolution` texels covers kMaxTexelPixels].
     void zoomAt(double viewX, double viewY, double factor, int viewWidth, int viewHeight, int resolution);
 
+    // Centres the view on map point `uv` at `zoom` (clamped as zoomAt clamps it): "zoom to the probe's taps".
+    void focus(const glm::dvec2& uv, double zoom, int viewWidth, int viewHeight, int resolution);
+
     // Moves the map with the mouse: (dx, dy) in view pixels, y down.
     void pan(double dx, double dy, int viewWidth, int viewHeight);
 
@@ -42,6 +45,9 @@ private:
 
 // View pixels (x right, y down, pixel centres at +0.5) -> map uv, through the visible rectangle.
 glm::dvec2 viewToUv(const UvRect& rect, double viewX, double viewY, int viewWidth, int viewHeight);
+
+// Map uv -> view pixels (x right, y down): the inverse of viewToUv.
+glm::dvec2 uvToView(const UvRect& rect, const glm::dvec2& uv, int viewWidth, int viewHeight);
 
 // The texel (x right, y up: GL's texel addressing, as texelFetch and glGetTextureSubImage use) under a view
 // position; nullopt when the position is off the map.

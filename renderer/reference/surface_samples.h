@@ -12,6 +12,8 @@ struct SurfaceSamples {
     int width = 0;
     int height = 0;
     std::vector<std::int32_t> draw;   // the draw (instance with geometry) seen; -1 = background
+    std::vector<std::int32_t> instance;  // index into Scene::instances of that draw; -1 = background
+    std::vector<std::int32_t> triangle;  // the triangle of that instance's mesh; -1 = background
     std::vector<glm::dvec3> point;    // render-origin-relative
     std::vector<glm::dvec3> normal;   // unit geometric normal, turned toward the camera
     std::vector<std::uint8_t> finite; // 1 when point and normal are finite

@@ -1,20 +1,12 @@
 #include "shading/shader_variants.h"
 
 #include "gl/program.h"
+#include "shading/filter_taps.h"
 
 namespace shadowlab {
 
 std::vector<std::string> MainVariantKey::defines() const {
-    std::vector<std::string> d;
-    switch (filter) {
-        case FilterKind::Point: d.push_back("FILTER_POINT"); break;
-        case FilterKind::Hardware2x2: d.push_back("FILTER_HARDWARE_2X2"); break;
-        case FilterKind::Pcf:
-            d.push_back("FILTER_PCF");
-            d.push_back("PCF_KERNEL " + std::to_string(kernel));
-            break;
-        case FilterKind::Poisson: d.push_back("FILTER_POISSON"); break;
-    }
+    std::vector<std::string> d = filterDefines(filter, kernel);
     switch (view) {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "gl/gl_errors.h"
+#include "shading/filter_taps.h"
 
 namespace shadowlab {
 
@@ -88,7 +89,7 @@ void ShadowMap::configureSamplers(const SamplerSettings& sampler, FilterKind fil
     const float border[4] = {sampler.borderDepth, sampler.borderDepth, sampler.borderDepth, sampler.borderDepth};
     glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
     // Hardware 2x2 and Poisson taps use the comparison's bilinear filter; point and grid PCF compare single texels.
-    const bool linear = filter == FilterKind::Hardware2x2 || filter == FilterKind::Poisson;
+    const bool linear = filterIsBilinear(filter);
     glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, linear ? GL_LINEAR : GL_NEAREST);
     glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, linear ? GL_LINEAR : GL_NEAREST);
     glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);

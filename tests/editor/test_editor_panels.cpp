@@ -35,7 +35,7 @@ TEST_P(EditorLayout, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheS
     EditorHarness h(testOptions(testFolder(name)), width, height);
     h.settle();
     const std::vector<std::string> expected = {"Scene", "Presets", "Light", "Projection", "Shadow map",
-                                               "Sampling", "Shadow map viewer", "Stats", "Accuracy"};
+                                               "Sampling", "Shadow map viewer", "Stats", "Accuracy", "Probe"};
     ASSERT_EQ(panels().size(), expected.size());
     std::vector<ControlRect> rects;
     for (const std::string& title : expected) {

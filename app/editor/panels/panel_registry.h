@@ -48,5 +48,6 @@ void drawSamplingPanel(PanelContext&);
 void drawShadowMapViewerPanel(PanelContext&);
 void drawStatsPanel(PanelContext&);
 void drawAccuracyPanel(PanelContext&);
+void drawProbePanel(PanelContext&);
 
 }  // namespace shadowlab::editor

@@ -39,6 +39,37 @@ void contrastControls(MapViewerState& v, bool spot, EditorState& state) {
     }
 }
 
+// The probe's taps over the map picture: each compared texel outlined green (lit) or red (shadowed), orange when
+// rounding decides, and a yellow cross at the lookup. Texels smaller than a few pixels get a minimum-size marker.
+void drawProbeTaps(const PixelProbeReport& r, const UvRect& visible, ImVec2 pos, int size, EditorState& state) {
+    if (r.resolution < 1) return;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->PushClipRect(pos, ImVec2(pos.x + float(size), pos.y + float(size)), true);
+    const double res = double(r.resolution);
+    auto at = [&](double u, double v) {
+        const glm::dvec2 p = uvToView(visible, {u, v}, size, size);
+        return ImVec2(pos.x + float(p.x), pos.y + float(p.y));
+    };
+    for (const ProbeTap& tap : r.taps)
+        for (const ProbeTexel& t : tap.texels) {
+            if (t.border) continue;
+            ImVec2 a = at(t.texel.x / res, (t.texel.y + 1) / res), b = at((t.texel.x + 1) / res, t.texel.y / res);
+            if (b.x - a.x < 3.0f) {
+                const ImVec2 c((a.x + b.x) * 0.5f, (a.y + b.y) * 0.5f);
+                a = ImVec2(c.x - 1.5f, c.y - 1.5f), b = ImVec2(c.x + 1.5f, c.y + 1.5f);
+            }
+            const ImU32 colour = t.uncertain ? IM_COL32(255, 170, 0, 255)
+                                 : t.lit     ? IM_COL32(60, 220, 80, 255)
+                                             : IM_COL32(240, 50, 50, 255);
+            draw->AddRect(a, b, colour, 0.0f, 0, 1.5f);
+        }
+    const ImVec2 c = at(r.lightTexture.x, r.lightTexture.y);
+    draw->AddLine(ImVec2(c.x - 6, c.y), ImVec2(c.x + 6, c.y), IM_COL32(255, 230, 0, 255), 1.5f);
+    draw->AddLine(ImVec2(c.x, c.y - 6), ImVec2(c.x, c.y + 6), IM_COL32(255, 230, 0, 255), 1.5f);
+    draw->PopClipRect();
+    state.controls.record("viewer.probeLookup", ControlRect{c.x - 6, c.y - 6, 12, 12});
+}
+
 }  // namespace
 
 void drawShadowMapViewerPanel(PanelContext& ctx) {
@@ -53,6 +84,16 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
     ImGui::SameLine();
     if (ImGui::SmallButton("fit")) v.zoomPan.reset();
     state.controls.recordLastItem("viewer.fit");
+    const PixelProbeReport* probe = state.probe.report && state.probe.report->ok ? &*state.probe.report : nullptr;
+    bool focusProbe = false;
+    if (probe) {
+        ImGui::SameLine();
+        focusProbe = ImGui::SmallButton("zoom to probe");
+        state.controls.recordLastItem("viewer.zoomToProbe");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Centre on the probed pixel's texel, its taps outlined: green lit, red shadowed, orange "
+                              "decided by rounding; the yellow cross is the lookup");
+    }
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float side = std::floor(std::max(0.0f, std::min(avail.x, avail.y - ImGui::GetTextLineHeightWithSpacing())));
@@ -77,7 +118,10 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
         v.zoomPan.zoomAt(mx, my, std::pow(1.25, double(io.MouseWheel)), size, size, resolution);
     if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
         v.zoomPan.pan(io.MouseDelta.x, io.MouseDelta.y, size, size);
+    if (focusProbe)  // about 24 texels across the picture: every tap of a 9x9 kernel shows
+        v.zoomPan.focus(glm::dvec2(probe->lightTexture), double(resolution) / 24.0, size, size, resolution);
     v.options.visible = v.zoomPan.visibleRect(size, size);
+    if (probe && v.texture != 0 && v.textureWidth == size) drawProbeTaps(*probe, v.options.visible, pos, size, state);
     if (ImGui::IsItemHovered()) v.hoverTexel = texelAtView(v.options.visible, mx, my, size, size, resolution);
 
     if (!v.error.empty()) {

@@ -1,0 +1,79 @@
+#include "cli/probe_command.h"
+
+#include "cli/command_input.h"
+#include "cli/settings_from_cli.h"
+#include "context/headless_context.h"
+#include "probe/probe_description.h"
+#include "scene/scene_source.h"
+#include "settings/atomic_file.h"
+
+#include <charconv>
+#include <iostream>
+
+namespace shadowlab::cli {
+
+bool parsePixel(const std::string& text, int& x, int& y, std::string& error) {
+    const std::size_t comma = text.find(',');
+    auto number = [](std::string_view s, int& out) {
+        const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+        return ec == std::errc() && end == s.data() + s.size() && !s.empty();
+    };
+    if (comma == std::string::npos || !number(std::string_view(text).substr(0, comma), x) ||
+        !number(std::string_view(text).substr(comma + 1), y)) {
+        error = "--pixel '" + text + "': expected X,Y (two integers, y down from the top), e.g. --pixel 640,360";
+        return false;
+    }
+    return true;
+}
+
+int runProbe(const ProbeOptions& options) {
+    int x = 0, y = 0;
+    std::string pixelError;
+    if (!parsePixel(options.pixel, x, y, pixelError)) return fail(pixelError);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    if (!settings) return 2;
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    if (x < 0 || y < 0 || x >= options.width || y >= options.height)
+        return fail("--pixel " + options.pixel + " is outside the " + std::to_string(options.width) + "x" +
+                    std::to_string(options.height) + " view (x in [0, " + std::to_string(options.width - 1) +
+                    "], y in [0, " + std::to_string(options.height - 1) + "])");
+    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    if (!loaded.scene) return fail(loaded.error);
+    const Scene& scene = *loaded.scene;
+
+    try {
+        HeadlessContext context;
+        Renderer renderer;
+        PixelProbe probe;
+        const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
+        if (std::string error = probe.capture(renderer, scene, *settings, camera, options.width, options.height);
+            !error.empty())
+            return fail(error);
+        for (const std::string& w : probe.stats().warnings) std::cerr << "warning: " << w << "\n";
+        std::optional<AccuracyReport> measured;
+        if (options.measure) {
+            AccuracyMeter meter;
+            measured = meter.measure(scene, *settings, camera, options.width, options.height);
+            if (!measured->ok) return fail("--measure: " + measured->error);
+        }
+        const PixelProbeReport report = probe.at(x, y, measured ? &*measured : nullptr);
+        if (!report.ok) return fail(report.error);
+        std::cout << "scene " << scene.name << "\n";
+        for (const std::string& line : describeProbe(report)) std::cout << line << "\n";
+        if (!options.json.empty()) {
+            nlohmann::json json = probeToJson(report);
+            json["scene"] = options.scene;
+            json["preset"] = options.preset;
+            if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
+                return fail(error);
+            std::cout << "wrote " << options.json << "\n";
+        }
+        if (!report.agrees) return fail("the CPU's shadow factor and the GPU's disagree at this pixel (a bug)");
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    return 0;
+}
+
+}  // namespace shadowlab::cli

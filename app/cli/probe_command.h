@@ -1,0 +1,27 @@
+#pragma once
+// `shadowlab probe`: why one pixel is shadowed — its surface point, light-space position and texel, the receiver's
+// depth, every filter tap's stored depth and comparison, each bias term at this surface, and S recomputed on the CPU
+// next to the GPU's value; with --measure also the exact visibility and the error's cause.
+#include <string>
+#include <vector>
+
+namespace shadowlab::cli {
+
+struct ProbeOptions {
+    std::string scene = "builtin:textbook";
+    std::string preset;
+    std::vector<std::string> overrides;
+    int width = 1280;
+    int height = 720;
+    std::string pixel;  // "X,Y", y down from the top
+    std::string json;   // optional
+    bool measure = false;
+};
+
+// "X,Y" -> the pixel; false (and `error` set) when it is not two integers.
+bool parsePixel(const std::string& text, int& x, int& y, std::string& error);
+
+// Exit code 0 unless it failed (bad input or pixel, no GL, a file that cannot be written).
+int runProbe(const ProbeOptions& options);
+
+}  // namespace shadowlab::cli

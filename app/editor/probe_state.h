@@ -1,0 +1,21 @@
+#pragma once
+// What the Probe panel and the shadow map viewer's tap highlights show: the newest pixel probe of the viewport
+// (issue 13, "Why this pixel"), the view it was made for, and a pending request from a click or P held over a pixel.
+#include "editor/accuracy_state.h"
+#include "probe/pixel_probe.h"
+
+#include <glm/ext/vector_int2.hpp>
+
+#include <optional>
+#include <string>
+
+namespace shadowlab::editor {
+
+struct ProbeState {
+    std::optional<glm::ivec2> request;      // a viewport pixel (y down) to probe on the next frame
+    std::optional<PixelProbeReport> report;  // the newest probe
+    std::optional<AccuracyViewKey> key;      // the view it was made for; a changed view re-probes the same pixel
+    bool withMeasurement = false;            // the report carries the Accuracy panel's verdict for its pixel
+};
+
+}  // namespace shadowlab::editor

@@ -1,0 +1,313 @@
+#include "probe/pixel_probe.h"
+
+#include "shading/filter_taps.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace shadowlab {
+
+namespace {
+
+// Window-space texture coordinate (x, y in [0, 1]) and depth of a render-origin-relative point, as toLightTexture in
+// main.frag.glsl computes it (there in float).
+glm::dvec3 toLightTexture(const LightSpace& light, const glm::dvec3& p) {
+    const glm::dvec4 clip = light.viewProjection() * glm::dvec4(p, 1.0);
+    return glm::dvec3(clip) / clip.w * 0.5 + 0.5;
+}
+
+// The texel GL reads for integer coordinate i under the address mode; nullopt = the border (clamp-to-border only).
+std::optional<int> addressTexel(int i, int resolution, AddressMode mode) {
+    switch (mode) {
+        case AddressMode::Wrap: return ((i % resolution) + resolution) % resolution;
+        case AddressMode::ClampToEdge: return std::clamp(i, 0, resolution - 1);
+        case AddressMode::ClampToBorder:
+            if (i < 0 || i >= resolution) return std::nullopt;
+            return i;
+    }
+    return i;
+}
+
+// Float rounding the GPU's lookup carries: its position is interpolated and transformed in float. Returns the
+// uncertainty of the receiver's depth (depth units) and of its texel coordinate (texels), from the gradients of
+// toLightTexture at the lookup and a position error of a few float steps of its largest coordinate.
+std::pair<double, double> lookupUncertainty(const LightSpace& light, const glm::dvec3& lookup, int resolution) {
+    const double scale = std::max({std::abs(lookup.x), std::abs(lookup.y), std::abs(lookup.z), 1e-6});
+    const double positionError = scale * std::ldexp(1.0, -20);  // 16 float steps
+    const double h = std::max(scale * 1e-6, 1e-9);
+    double depthGradient = 0.0, texelGradient = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::dvec3 e(0.0);
+        e[axis] = h;
+        const glm::dvec3 d = (toLightTexture(light, lookup + e) - toLightTexture(light, lookup - e)) / (2.0 * h);
+        depthGradient += d.z * d.z;
+        texelGradient = std::max(texelGradient, std::max(std::abs(d.x), std::abs(d.y)));
+    }
+    const double depthEps = positionError * std::sqrt(depthGradient) + std::ldexp(1.0, -21);
+    const double texelEps = positionError * texelGradient * resolution * std::sqrt(3.0) +
+                            resolution * std::ldexp(1.0, -21);
+    return {depthEps, texelEps};
+}
+
+}  // namespace
+
+std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w, int h) {
+    std::vector<float> depth(std::size_t(w) * std::size_t(h));
+    if (!map.valid() || w < 1 || h < 1) return depth;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(map.texture(), 0, x0, y0, 0, w, h, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         GLsizei(depth.size() * sizeof(float)), depth.data());
+    return depth;
+}
+
+std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Settings& settings,
+                                const Camera& camera, int width, int height) {
+    renderer_ = nullptr;
+    Settings shadowView = settings;
+    shadowView.view = ViewMode::Shadow;  // the main pass writes S itself, into a float target
+    if (std::string error = target_.resize(width, height, GL_RGBA32F); !error.empty()) return error;
+    FrameStats stats = renderer.render(scene, shadowView, camera, target_);
+    if (!stats.ok) return stats.error;
+    const std::size_t count = std::size_t(width) * std::size_t(height);
+    std::vector<float> rgba(count * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureImage(target_.colorTexture(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)),
+                      rgba.data());
+    shadow_.assign(count, 0.0f);
+    for (int row = 0; row < height; ++row)
+        for (int x = 0; x < width; ++x)
+            shadow_[std::size_t(row) * std::size_t(width) + std::size_t(x)] =
+                rgba[(std::size_t(height - 1 - row) * std::size_t(width) + std::size_t(x)) * 4];
+    if (std::string error = gbuffer_.render(*renderer.gpuScene(), stats.cameraViewProjection, width, height,
+                                            camera.position - stats.renderOrigin, samples_);
+        !error.empty())
+        return error;
+    glUseProgram(0);  // a host that saves and restores the current program (ImGui's backend) never holds ours
+    renderer_ = &renderer;
+    scene_ = &scene;
+    settings_ = settings;
+    camera_ = camera;
+    stats_ = std::move(stats);
+    return {};
+}
+
+PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) const {
+    PixelProbeReport r;
+    r.x = x;
+    r.y = y;
+    r.width = samples_.width;
+    r.height = samples_.height;
+    if (!renderer_) {
+        r.error = "no frame captured to probe";
+        return r;
+    }
+    if (x < 0 || y < 0 || x >= samples_.width || y >= samples_.height) {
+        r.error = "pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                  std::to_string(samples_.width) + "x" + std::to_string(samples_.height) + " view";
+        return r;
+    }
+    const std::size_t i = std::size_t(y) * std::size_t(samples_.width) + std::size_t(x);
+    if (samples_.draw[i] < 0 || samples_.triangle[i] < 0) {
+        r.error = "pixel " + std::to_string(x) + "," + std::to_string(y) + " shows no surface (background)";
+        return r;
+    }
+    if (!samples_.finite[i]) {
+        r.error = "pixel " + std::to_string(x) + "," + std::to_string(y) + ": the surface point is not finite";
+        return r;
+    }
+    const Scene& scene = *scene_;
+    const LightSpace& light = stats_.light;
+    const glm::dvec3 origin = stats_.renderOrigin;
+    const int res = stats_.shadowMapResolution;
+    r.resolution = res;
+    r.format = stats_.shadowMapFormat;
+    r.filter = settings_.filter;
+    r.addressMode = settings_.sampler.addressMode;
+
+    // The surface: the G-buffer's exact point, its triangle, and the main pass's interpolated normal.
+    const glm::dvec3 p = samples_.point[i];
+    r.world = p + origin;
+    r.geometricNormal = samples_.normal[i];
+    r.instance = samples_.instance[i];
+    r.triangle = samples_.triangle[i];
+    const Instance& instance = scene.instances[std::size_t(r.instance)];
+    const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
+    r.meshName = mesh.name;
+    const glm::dmat4 model = glm::dmat4(instance.transform);
+    glm::dvec3 v[3], n[3];
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t index = mesh.indices[std::size_t(r.triangle) * 3 + std::size_t(k)];
+        v[k] = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0)) - origin;
+        n[k] = index < mesh.normals.size() ? glm::dvec3(mesh.normals[index]) : glm::dvec3(0.0);
+    }
+    const glm::dvec3 cross = glm::cross(v[1] - v[0], v[2] - v[0]);
+    const double area2 = glm::dot(cross, cross);
+    glm::dvec3 bary(1.0 / 3.0);
+    if (area2 > 0.0) {
+        bary.x = glm::dot(glm::cross(v[1] - p, v[2] - p), cross) / area2;
+        bary.y = glm::dot(glm::cross(v[2] - p, v[0] - p), cross) / area2;
+        bary.z = 1.0 - bary.x - bary.y;
+    }
+    const GpuDraw& draw = renderer_->gpuScene()->draws()[std::size_t(samples_.draw[i])];
+    const glm::dvec3 eye = camera_.position - origin;
+    // gl_FrontFacing: counter-clockwise in the window, clockwise for mirrored instances (face_culling.cpp).
+    r.frontFacing = (glm::dot(cross, eye - p) > 0.0) != draw.mirrored;
+    glm::dvec3 shading = glm::dmat3(draw.normalMatrix) * (bary.x * n[0] + bary.y * n[1] + bary.z * n[2]);
+    shading = glm::length(shading) > 0.0 ? glm::normalize(shading) : r.geometricNormal;
+    r.shadingNormal = r.frontFacing ? shading : -shading;
+
+    // The lookup: moved along the normal by normalOffset texels' world size, as main.frag.glsl does.
+    const double texelWorld = light.perspective
+                                  ? 2.0 * light.tanHalfFov / light.resolution * glm::dot(p - light.position, light.direction)
+                                  : light.texelWorldSize;
+    const double offsetWorld = settings_.shadow.normalOffset > 0.0f ? settings_.shadow.normalOffset * texelWorld : 0.0;
+    const glm::dvec3 lookup = p + r.shadingNormal * offsetWorld;
+    r.lookupWorld = lookup + origin;
+    r.lightView = glm::dvec3(light.view * glm::dvec4(lookup, 1.0));
+    r.lightTexture = toLightTexture(light, lookup);
+    r.texelCoord = glm::dvec2(r.lightTexture) * double(res);
+    r.texel = glm::ivec2(int(std::floor(r.texelCoord.x)), int(std::floor(r.texelCoord.y)));
+    r.insideMap = r.lightTexture.x >= 0.0 && r.lightTexture.x <= 1.0 && r.lightTexture.y >= 0.0 &&
+                  r.lightTexture.y <= 1.0;
+    if (light.perspective) {
+        const glm::dvec3 toLight = glm::normalize(light.position - p);
+        r.inCone = glm::dot(-toLight, light.direction) >= std::cos(std::atan(light.tanHalfFov));
+    }
+    r.receiverDepth = std::min(r.lightTexture.z, 1.0);
+    if (r.format != DepthFormat::D32F) r.receiverDepth = std::max(r.receiverDepth, 0.0);  // fixed point clamps
+    const auto [depthEps, texelEps] = lookupUncertainty(light, lookup, res);
+    r.depthUncertainty = depthEps;
+
+    // The taps: which texels each compares, read back from the map in one rectangle.
+    const double texelStep = double(1.0f / float(res));  // uShadowTexel
+    struct Candidate {
+        std::vector<std::pair<int, double>> xs, ys;  // texel index (before addressing) and weight
+        std::vector<int> altXs, altYs;                // a nearest tap's other possible texel under rounding
+    };
+    std::vector<Candidate> candidates;
+    int minX = res, minY = res, maxX = -1, maxY = -1;
+    auto note = [&](int tx, int ty) {
+        const std::optional<int> ax = addressTexel(tx, res, r.addressMode), ay = addressTexel(ty, res, r.addressMode);
+        if (!ax || !ay) return;
+        minX = std::min(minX, *ax), maxX = std::max(maxX, *ax), minY = std::min(minY, *ay), maxY = std::max(maxY, *ay);
+    };
+    for (const FilterTap& tap : filterTaps(settings_.filter)) {
+        ProbeTap t;
+        t.offsetTexels = tap.offsetTexels;
+        t.bilinear = tap.bilinear;
+        t.texelCoord = (glm::dvec2(r.lightTexture) + tap.offsetTexels * texelStep) * double(res);
+        Candidate c;
+        for (int axis = 0; axis < 2; ++axis) {
+            auto& list = axis == 0 ? c.xs : c.ys;
+            auto& alt = axis == 0 ? c.altXs : c.altYs;
+            if (tap.bilinear) {
+                const double u = t.texelCoord[axis] - 0.5;
+                const double i0 = std::floor(u);
+                list = {{int(i0), 1.0 - (u - i0)}, {int(i0) + 1, u - i0}};
+            } else {
+                const double i0 = std::floor(t.texelCoord[axis]);
+                const double frac = t.texelCoord[axis] - i0;
+                list = {{int(i0), 1.0}};
+                if (frac < texelEps) alt.push_back(int(i0) - 1);
+                if (1.0 - frac < texelEps) alt.push_back(int(i0) + 1);
+            }
+        }
+        for (const auto& [tx, wx] : c.xs)
+            for (const auto& [ty, wy] : c.ys) note(tx, ty);
+        for (int tx : c.altXs) note(tx, c.ys[0].first);
+        for (int ty : c.altYs) note(c.xs[0].first, ty);
+        for (int tx : c.altXs)
+            for (int ty : c.altYs) note(tx, ty);
+        r.taps.push_back(std::move(t));
+        candidates.push_back(std::move(c));
+    }
+    const int rectW = maxX >= minX ? maxX - minX + 1 : 0, rectH = maxY >= minY ? maxY - minY + 1 : 0;
+    const std::vector<float> stored = readShadowMapRect(renderer_->shadowMap(), minX, minY, rectW, rectH);
+    auto compare = [&](int tx, int ty, double weight) {
+        ProbeTexel texel;
+        texel.weight = weight;
+        const std::optional<int> ax = addressTexel(tx, res, r.addressMode), ay = addressTexel(ty, res, r.addressMode);
+        texel.border = !ax || !ay;
+        texel.texel = texel.border ? glm::ivec2(tx, ty) : glm::ivec2(*ax, *ay);
+        texel.stored = texel.border ? double(settings_.sampler.borderDepth)
+                                    : double(stored[std::size_t(*ay - minY) * std::size_t(rectW) + std::size_t(*ax - minX)]);
+        texel.lit = r.receiverDepth <= texel.stored;
+        texel.uncertain = std::abs(r.receiverDepth - texel.stored) <= depthEps;
+        return texel;
+    };
+    double sum = 0.0, low = 0.0, high = 0.0;
+    bool anyBilinear = false;
+    for (std::size_t k = 0; k < r.taps.size(); ++k) {
+        ProbeTap& t = r.taps[k];
+        const Candidate& c = candidates[k];
+        t.value = t.low = t.high = 0.0;
+        for (const auto& [tx, wx] : c.xs)
+            for (const auto& [ty, wy] : c.ys) {
+                ProbeTexel texel = compare(tx, ty, wx * wy);
+                t.value += texel.weight * (texel.lit ? 1.0 : 0.0);
+                t.low += texel.weight * (texel.lit && !texel.uncertain ? 1.0 : 0.0);
+                t.high += texel.weight * (texel.lit || texel.uncertain ? 1.0 : 0.0);
+                r.uncertainComparisons += texel.uncertain ? 1 : 0;
+                t.texels.push_back(texel);
+            }
+        // A nearest tap whose coordinate sits on a texel edge may read the neighbour instead.
+        std::vector<std::pair<int, int>> others;
+        for (int tx : c.altXs) others.emplace_back(tx, c.ys[0].first);
+        for (int ty : c.altYs) others.emplace_back(c.xs[0].first, ty);
+        for (int tx : c.altXs)
+            for (int ty : c.altYs) others.emplace_back(tx, ty);
+        for (const auto& [tx, ty] : others) {
+            const ProbeTexel other = compare(tx, ty, 1.0);
+            t.low = std::min(t.low, other.lit && !other.uncertain ? 1.0 : 0.0);
+            t.high = std::max(t.high, other.lit || other.uncertain ? 1.0 : 0.0);
+            ++r.uncertainComparisons;
+        }
+        anyBilinear = anyBilinear || t.bilinear;
+        sum += t.value, low += t.low, high += t.high;
+    }
+    const double taps = double(std::max<std::size_t>(r.taps.size(), 1));
+    const double cone = r.inCone ? 1.0 : 0.0;
+    r.shadowCpu = sum / taps * cone;
+    r.shadowLow = low / taps * cone;
+    r.shadowHigh = high / taps * cone;
+    // Bilinear comparisons weigh texels with the GPU's sub-texel precision (8 bits in D3D's rules and llvmpipe).
+    r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;
+    r.shadowGpu = double(shadow_[i]);
+    r.agrees = r.shadowGpu >= r.shadowLow - r.tolerance && r.shadowGpu <= r.shadowHigh + r.tolerance;
+
+    // The bias this surface gets as a caster: its own triangle's slope in the map, r at its largest depth.
+    glm::dvec3 window[3];
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 t = toLightTexture(light, v[k]);
+        window[k] = {t.x * res, t.y * res, std::clamp(t.z, 0.0, 1.0)};
+    }
+    const double slope = windowDepthSlope(window[0], window[1], window[2]);
+    const double maxDepth = std::max({window[0].z, window[1].z, window[2].z});
+    const ShadowMapSettings& shadow = settings_.shadow;
+    const double atDepth = std::clamp(r.receiverDepth, 0.0, 1.0);
+    r.bias.depthSlope = std::max(slope, 0.0);
+    r.bias.step = depthStepAt(r.format, maxDepth);
+    r.bias.constant = biasTerm(light, double(shadow.depthBias) * r.bias.step, atDepth);
+    r.bias.slope = biasTerm(light, double(shadow.slopeScaledDepthBias) * r.bias.depthSlope, atDepth);
+    r.bias.clamp = biasTerm(light, double(shadow.depthBiasClamp), atDepth);
+    r.bias.total = biasTerm(light, polygonOffsetDepth(shadow, r.format, maxDepth, r.bias.depthSlope), atDepth);
+    r.bias.normalOffsetWorld = offsetWorld;
+    r.bias.normalOffsetTexels = double(shadow.normalOffset);
+
+    if (measured && measured->ok && measured->width == r.width && measured->height == r.height &&
+        measured->pixelClass.size() > i) {
+        r.measured = true;
+        r.exact = measured->pixelClass[i];
+        r.cause = measured->pixelCause[i];
+        r.measuredShadow = measured->pixelShadow[i];
+    }
+    r.ok = true;
+    return r;
+}
+
+}  // namespace shadowlab

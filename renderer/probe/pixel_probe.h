@@ -1,0 +1,127 @@
+#pragma once
+// "Why is THIS pixel dark?": for one main-view pixel of a frame, the surface point (double), its place in the
+// shadow map, every filter tap's stored depths and comparisons, each bias term at this surface, and the shadow factor
+// S recomputed on the CPU next to the GPU's own value at that pixel. Knows no window, UI or CLI.
+#include "accuracy/accuracy_meter.h"
+#include "accuracy/gbuffer_pass.h"
+#include "frame/renderer.h"
+#include "light/depth_bias.h"
+#include "reference/surface_samples.h"
+
+#include <glm/ext/vector_double2.hpp>
+#include <glm/ext/vector_int2.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+// One stored texel a tap compares against.
+struct ProbeTexel {
+    glm::ivec2 texel{0};     // after the address mode (row 0 = the map's bottom, as GL stores it); see `border`
+    bool border = false;     // outside the map with clamp-to-border: compared against sampler.borderDepth
+    double stored = 0.0;     // the depth the map holds there (bias of its caster included)
+    double weight = 1.0;     // bilinear weight inside its tap (1 for a nearest tap)
+    bool lit = false;        // receiver depth <= stored (GL_LEQUAL)
+    bool uncertain = false;  // |receiver - stored| is within float rounding: the GPU may decide either way
+};
+
+struct ProbeTap {
+    glm::dvec2 offsetTexels{0.0};  // from filter_taps.h, as the shader adds it
+    glm::dvec2 texelCoord{0.0};    // where it samples, in texels (texture coordinate x resolution)
+    bool bilinear = false;
+    std::vector<ProbeTexel> texels;  // 1 (nearest) or 4 (bilinear)
+    double value = 0.0;            // the tap's result in [0, 1]
+    double low = 0.0, high = 0.0;  // what the GPU can get, its uncertain comparisons and texel choice either way
+};
+
+// The bias at this surface, in the units depth_bias.h reports.
+struct ProbeBias {
+    double depthSlope = 0.0;  // m of the surface's triangle in the map (window depth per texel); 0 if edge-on
+    double step = 0.0;        // r at the receiver's depth (the format's minimum resolvable difference)
+    BiasTerm constant;        // DepthBias x r
+    BiasTerm slope;           // SlopeScaledDepthBias x m
+    BiasTerm clamp;           // DepthBiasClamp (depth 0 = none)
+    BiasTerm total;           // what the surface gets as a caster: min(constant + slope, clamp)
+    double normalOffsetWorld = 0.0;   // the lookup's move along the normal, world units
+    double normalOffsetTexels = 0.0;  // the same, in this surface's texels (the setting)
+};
+
+struct PixelProbeReport {
+    bool ok = false;
+    std::string error;  // when !ok: why (pixel outside the view, background, a frame that failed)
+    int x = 0, y = 0;   // pixel, y down from the top
+    int width = 0, height = 0;
+
+    glm::dvec3 world{0.0};           // the surface point, world coordinates (double)
+    glm::dvec3 geometricNormal{0.0}; // toward the camera
+    glm::dvec3 shadingNormal{0.0};   // the main pass's interpolated normal, flipped on back faces
+    bool frontFacing = true;
+    int instance = -1, triangle = -1;
+    std::string meshName;
+    glm::dvec3 lookupWorld{0.0};     // world + normal offset: where the map is read
+    glm::dvec3 lightView{0.0};       // the lookup in the light's view space (x, y across, z toward the light)
+    glm::dvec3 lightTexture{0.0};    // texture coordinates (x, y in [0, 1] inside the map) and window depth z
+    glm::dvec2 texelCoord{0.0};      // lightTexture.xy x resolution
+    glm::ivec2 texel{0};             // the texel it falls in
+    bool insideMap = true;           // lightTexture.xy within [0, 1]
+    bool inCone = true;              // spot: inside the cone (else S = 0)
+    double receiverDepth = 0.0;      // what each tap compares: min(z, 1) (fixed-point formats also clamp at 0)
+    double depthUncertainty = 0.0;   // float rounding of the GPU's receiver depth, in depth
+
+    int resolution = 0;
+    DepthFormat format = DepthFormat::D32F;
+    FilterSettings filter;
+    AddressMode addressMode = AddressMode::ClampToBorder;
+    std::vector<ProbeTap> taps;
+    ProbeBias bias;
+
+    double shadowCpu = 0.0;   // S recomputed here from the stored texels
+    double shadowLow = 0.0, shadowHigh = 0.0;  // range the GPU may give (uncertain comparisons, filter weights)
+    double shadowGpu = 0.0;   // S as the main pass wrote it at this pixel
+    double tolerance = 0.0;   // filter precision: the bilinear weights' sub-texel steps (0 for nearest taps)
+    bool agrees = false;      // shadowGpu within [shadowLow - tolerance, shadowHigh + tolerance]
+    int uncertainComparisons = 0;
+
+    // From an accuracy measurement of the same view, when one was given.
+    bool measured = false;
+    PixelClass exact = PixelClass::Background;
+    MismatchCause cause = MismatchCause::None;
+    float measuredShadow = 0.0f;
+};
+
+class PixelProbe {
+public:
+    // Needs a current GL 4.5 context; throws std::runtime_error if the G-buffer's shaders do not build.
+    PixelProbe() = default;
+
+    // Renders the frame to probe (the shadow factor into a float target, and the G-buffer) with `renderer`, whose
+    // shadow map is the one probed. "" or why not. Keep renderer and scene unchanged until the last at().
+    std::string capture(Renderer& renderer, const Scene& scene, const Settings& settings, const Camera& camera,
+                        int width, int height);
+    bool captured() const { return renderer_ != nullptr; }
+
+    // One pixel of the captured frame (y down from the top). `measured`: an accuracy report of the same view (its
+    // exact visibility and cause are copied), or null.
+    PixelProbeReport at(int x, int y, const AccuracyReport* measured = nullptr) const;
+
+    const FrameStats& stats() const { return stats_; }
+    const SurfaceSamples& samples() const { return samples_; }
+
+private:
+    GBufferPass gbuffer_;
+    RenderTarget target_;
+    const Renderer* renderer_ = nullptr;
+    const Scene* scene_ = nullptr;
+    Settings settings_;
+    Camera camera_;
+    FrameStats stats_;
+    SurfaceSamples samples_;
+    std::vector<float> shadow_;  // row 0 = top
+};
+
+// The stored depth of texels [x0, x0+w) x [y0, y0+h) of a shadow map (row 0 = bottom), read back from the GPU.
+std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w, int h);
+
+}  // namespace shadowlab

@@ -1,0 +1,181 @@
+#include "probe/probe_description.h"
+
+#include "shadow/shadow_map.h"
+
+#include <cstdio>
+
+namespace shadowlab {
+
+namespace {
+
+std::string format(const char* pattern, auto... values) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, pattern, values...);
+    return buf;
+}
+
+std::string vec(const glm::dvec3& v) { return format("(%.9g, %.9g, %.9g)", v.x, v.y, v.z); }
+
+std::string units(const BiasTerm& t) {
+    return format("%.3g depth = %.3g world units = %.3g texels", t.depth, t.world, t.texels);
+}
+
+const char* filterName(const FilterSettings& f) {
+    switch (f.kind) {
+        case FilterKind::Point: return "point";
+        case FilterKind::Hardware2x2: return "hardware 2x2";
+        case FilterKind::Pcf: return "PCF";
+        case FilterKind::Poisson: return "Poisson";
+    }
+    return "?";
+}
+
+const char* className(PixelClass c) {
+    switch (c) {
+        case PixelClass::Background: return "background";
+        case PixelClass::NonFinite: return "non-finite";
+        case PixelClass::FacingAway: return "facing away from the light (unlit, not scored)";
+        case PixelClass::OutsideCone: return "outside the spot cone (V = 0)";
+        case PixelClass::Lit: return "lit (V = 1)";
+        case PixelClass::Shadowed: return "shadowed (V = 0)";
+    }
+    return "?";
+}
+
+int litTaps(const PixelProbeReport& r) {
+    int n = 0;
+    for (const ProbeTap& t : r.taps) n += t.value >= 0.5 ? 1 : 0;
+    return n;
+}
+
+nlohmann::json toJson(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+nlohmann::json toJson(const BiasTerm& t) { return {{"depth", t.depth}, {"world", t.world}, {"texels", t.texels}}; }
+
+}  // namespace
+
+std::string probeSummary(const PixelProbeReport& r) {
+    if (!r.ok) return r.error;
+    return format("S = %.4f (GPU %.4f, %s): %d of %zu taps lit%s", r.shadowCpu, r.shadowGpu,
+                  r.agrees ? "agree" : "DISAGREE", litTaps(r), r.taps.size(),
+                  r.uncertainComparisons ? format(", %d comparison(s) within float rounding",
+                                                  r.uncertainComparisons).c_str()
+                                         : "");
+}
+
+std::string describeTap(const PixelProbeReport& r, const ProbeTap& t) {
+    std::string line = format("tap (%+.2f, %+.2f) at texel coord (%.3f, %.3f): ", t.offsetTexels.x, t.offsetTexels.y,
+                              t.texelCoord.x, t.texelCoord.y);
+    for (std::size_t k = 0; k < t.texels.size(); ++k) {
+        const ProbeTexel& x = t.texels[k];
+        line += format("%s%s[%d,%d] %.9g %s%s", k ? "; " : "", x.border ? "border" : "", x.texel.x, x.texel.y,
+                       x.stored, x.lit ? "lit" : "shadow", x.uncertain ? "?" : "");
+        if (t.bilinear) line += format(" w%.3f", x.weight);
+        line += format(" (%+.3g)", x.stored - r.receiverDepth);
+    }
+    return line + format(" -> %.3f", t.value);
+}
+
+std::vector<std::string> describeProbe(const PixelProbeReport& r) {
+    std::vector<std::string> lines;
+    if (!r.ok) {
+        lines.push_back("no probe: " + r.error);
+        return lines;
+    }
+    lines.push_back(format("pixel %d,%d of %dx%d: ", r.x, r.y, r.width, r.height) + probeSummary(r));
+    lines.push_back("surface: world " + vec(r.world) + format(" on '%s' (instance %d, triangle %d), %s face",
+                                                              r.meshName.c_str(), r.instance, r.triangle,
+                                                              r.frontFacing ? "front" : "back"));
+    lines.push_back("  geometric normal " + vec(r.geometricNormal) + ", shading normal " + vec(r.shadingNormal));
+    lines.push_back("lookup (normal offset applied): world " + vec(r.lookupWorld));
+    lines.push_back("  light view " + vec(r.lightView) +
+                    format(", map coord (%.6f, %.6f) = texel coord (%.3f, %.3f) in texel [%d,%d] of %d²%s%s",
+                           r.lightTexture.x, r.lightTexture.y, r.texelCoord.x, r.texelCoord.y, r.texel.x, r.texel.y,
+                           r.resolution, r.insideMap ? "" : " (outside the map: the address mode decides)",
+                           r.inCone ? "" : " (outside the spot cone: S = 0)"));
+    lines.push_back(format("receiver depth %.9g (window depth %.9g, %s; float rounding +-%.2g)", r.receiverDepth,
+                           r.lightTexture.z, depthFormatName(r.format), r.depthUncertainty));
+    lines.push_back(format("bias at this surface (depth slope m = %.3g per texel, r = %.3g):", r.bias.depthSlope,
+                           r.bias.step));
+    lines.push_back("  constant DepthBias x r: " + units(r.bias.constant));
+    lines.push_back("  slope-scaled SlopeScaledDepthBias x m: " + units(r.bias.slope));
+    lines.push_back(r.bias.clamp.depth > 0.0 ? "  clamp DepthBiasClamp: " + units(r.bias.clamp)
+                                              : std::string("  clamp: none"));
+    lines.push_back("  total (as a caster, in the map): " + units(r.bias.total));
+    lines.push_back(format("  normal offset %.3g texels = %.3g world units along the shading normal",
+                           r.bias.normalOffsetTexels, r.bias.normalOffsetWorld));
+    lines.push_back(format("filter %s%s: %zu taps (stored depth, lit if receiver <= stored; ? = within float "
+                           "rounding; (+x) = stored - receiver)",
+                           filterName(r.filter),
+                           r.filter.kind == FilterKind::Pcf ? format(" %dx%d", r.filter.kernel, r.filter.kernel).c_str()
+                           : r.filter.kind == FilterKind::Poisson ? format(" radius %g", double(r.filter.poissonRadius)).c_str()
+                                                                  : "",
+                           r.taps.size()));
+    for (const ProbeTap& t : r.taps) lines.push_back("  " + describeTap(r, t));
+    lines.push_back(format("shadow factor: CPU %.6f (possible %.6f..%.6f), GPU %.6f, tolerance %.2g: %s", r.shadowCpu,
+                           r.shadowLow, r.shadowHigh, r.shadowGpu, r.tolerance, r.agrees ? "agree" : "DISAGREE"));
+    if (r.measured) {
+        lines.push_back(std::string("exact visibility: ") + className(r.exact) +
+                        format("; measured S %.4f", double(r.measuredShadow)) +
+                        (r.cause != MismatchCause::None
+                             ? std::string("; wrong because: ") + causeInfo(r.cause).name + " (" +
+                                   causeInfo(r.cause).remedy + ")"
+                             : std::string("; not mismatched")));
+    }
+    return lines;
+}
+
+nlohmann::json probeToJson(const PixelProbeReport& r) {
+    nlohmann::json j;
+    j["ok"] = r.ok;
+    j["pixel"] = {r.x, r.y};
+    j["view"] = {r.width, r.height};
+    if (!r.ok) {
+        j["error"] = r.error;
+        return j;
+    }
+    j["surface"] = {{"world", toJson(r.world)},
+                    {"geometricNormal", toJson(r.geometricNormal)},
+                    {"shadingNormal", toJson(r.shadingNormal)},
+                    {"frontFacing", r.frontFacing},
+                    {"mesh", r.meshName},
+                    {"instance", r.instance},
+                    {"triangle", r.triangle}};
+    j["lookupWorld"] = toJson(r.lookupWorld);
+    j["lightView"] = toJson(r.lightView);
+    j["lightTexture"] = toJson(r.lightTexture);
+    j["texelCoord"] = {r.texelCoord.x, r.texelCoord.y};
+    j["texel"] = {r.texel.x, r.texel.y};
+    j["insideMap"] = r.insideMap;
+    j["inCone"] = r.inCone;
+    j["resolution"] = r.resolution;
+    j["depthFormat"] = depthFormatName(r.format);
+    j["receiverDepth"] = r.receiverDepth;
+    j["depthUncertainty"] = r.depthUncertainty;
+    j["bias"] = {{"depthSlope", r.bias.depthSlope},          {"step", r.bias.step},
+                 {"constant", toJson(r.bias.constant)},       {"slopeScaled", toJson(r.bias.slope)},
+                 {"clamp", toJson(r.bias.clamp)},             {"total", toJson(r.bias.total)},
+                 {"normalOffsetWorld", r.bias.normalOffsetWorld}, {"normalOffsetTexels", r.bias.normalOffsetTexels}};
+    nlohmann::json taps = nlohmann::json::array();
+    for (const ProbeTap& t : r.taps) {
+        nlohmann::json texels = nlohmann::json::array();
+        for (const ProbeTexel& x : t.texels)
+            texels.push_back({{"texel", {x.texel.x, x.texel.y}}, {"border", x.border}, {"stored", x.stored},
+                              {"weight", x.weight}, {"lit", x.lit}, {"uncertain", x.uncertain}});
+        taps.push_back({{"offsetTexels", {t.offsetTexels.x, t.offsetTexels.y}},
+                        {"texelCoord", {t.texelCoord.x, t.texelCoord.y}},
+                        {"bilinear", t.bilinear},
+                        {"texels", texels},
+                        {"value", t.value}});
+    }
+    j["filter"] = {{"kind", filterName(r.filter)}, {"kernel", r.filter.kernel},
+                   {"poissonRadius", r.filter.poissonRadius}, {"taps", taps}};
+    j["shadow"] = {{"cpu", r.shadowCpu}, {"low", r.shadowLow},  {"high", r.shadowHigh},
+                   {"gpu", r.shadowGpu}, {"tolerance", r.tolerance}, {"agree", r.agrees},
+                   {"uncertainComparisons", r.uncertainComparisons}};
+    if (r.measured)
+        j["accuracy"] = {{"exact", className(r.exact)}, {"measuredShadow", r.measuredShadow},
+                         {"cause", causeInfo(r.cause).key}};
+    return j;
+}
+
+}  // namespace shadowlab

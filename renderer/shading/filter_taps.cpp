@@ -1,0 +1,66 @@
+#include "shading/filter_taps.h"
+
+#include <cstdio>
+
+namespace shadowlab {
+
+const std::array<glm::vec2, kPoissonTaps>& poissonDisk() {
+    static const std::array<glm::vec2, kPoissonTaps> disk = {{
+        {-0.94201624f, -0.39906216f}, {0.94558609f, -0.76890725f}, {-0.09418410f, -0.92938870f},
+        {0.34495938f, 0.29387760f},   {-0.91588581f, 0.45771432f}, {-0.81544232f, -0.87912464f},
+        {-0.38277543f, 0.27676845f},  {0.97484398f, 0.75648379f},  {0.44323325f, -0.97511554f},
+        {0.53742981f, -0.47373420f},  {-0.26496911f, -0.41893023f}, {0.79197514f, 0.19090188f},
+        {-0.24188840f, 0.99706507f},  {-0.81409955f, 0.91437590f}, {0.19984126f, 0.78641367f},
+        {0.14383161f, -0.14100790f},
+    }};
+    return disk;
+}
+
+bool filterIsBilinear(FilterKind kind) { return kind == FilterKind::Hardware2x2 || kind == FilterKind::Poisson; }
+
+std::vector<FilterTap> filterTaps(const FilterSettings& filter) {
+    std::vector<FilterTap> taps;
+    switch (filter.kind) {
+        case FilterKind::Point: taps.push_back({{0.0, 0.0}, false}); break;
+        case FilterKind::Hardware2x2: taps.push_back({{0.0, 0.0}, true}); break;
+        case FilterKind::Pcf: {
+            const int r = filter.kernel / 2;
+            for (int y = -r; y <= r; ++y)
+                for (int x = -r; x <= r; ++x) taps.push_back({{double(x), double(y)}, false});
+            break;
+        }
+        case FilterKind::Poisson:
+            for (const glm::vec2& p : poissonDisk()) taps.push_back({glm::dvec2(p * filter.poissonRadius), true});
+            break;
+    }
+    return taps;
+}
+
+std::vector<std::string> filterDefines(FilterKind kind, int kernel) {
+    std::vector<std::string> d;
+    switch (kind) {
+        case FilterKind::Point: d.push_back("FILTER_POINT"); break;
+        case FilterKind::Hardware2x2: d.push_back("FILTER_HARDWARE_2X2"); break;
+        case FilterKind::Pcf:
+            d.push_back("FILTER_PCF");
+            d.push_back("PCF_KERNEL " + std::to_string(kernel));
+            break;
+        case FilterKind::Poisson: {
+            d.push_back("FILTER_POISSON");
+            d.push_back("POISSON_TAPS " + std::to_string(kPoissonTaps));
+            std::string values;
+            char buf[64];
+            for (const glm::vec2& p : poissonDisk()) {
+                // %.9g round-trips a float: the GPU gets exactly the probe's numbers.
+                std::snprintf(buf, sizeof buf, "%svec2(%.9g, %.9g)", values.empty() ? "" : ", ", double(p.x),
+                              double(p.y));
+                values += buf;
+            }
+            d.push_back("POISSON_DISK " + values);
+            break;
+        }
+    }
+    return d;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,210 @@
+// Issue 13, "Why this pixel": the probe's CPU shadow factor, rebuilt from the stored texels its filter taps read,
+// equals the GPU's S at the same pixel for every filter, address mode and light; where the taps disagree (acne at
+// zero bias, shadow edges) it says which ones and why.
+#include "gl_fixture.h"
+#include "probe/pixel_probe.h"
+#include "probe/probe_description.h"
+#include "shading/filter_taps.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace shadowlab::test {
+namespace {
+
+class PixelProbeTest : public GlTest {};
+
+struct Sweep {
+    int surfaces = 0, lit = 0, shadowed = 0, partial = 0, mixedTaps = 0, uncertain = 0, disagree = 0;
+    std::string firstDisagreement;
+};
+
+// Probes every `step`-th pixel of a w x h view and checks CPU against GPU.
+Sweep sweep(const Scene& scene, const Settings& settings, int w = 160, int h = 90, int step = 3) {
+    Renderer renderer;
+    PixelProbe probe;
+    const Camera camera = cameraFor(settings.camera, scene, double(w) / h);
+    const std::string error = probe.capture(renderer, scene, settings, camera, w, h);
+    EXPECT_EQ(error, "");
+    Sweep s;
+    for (int y = 0; y < h; y += step)
+        for (int x = 0; x < w; x += step) {
+            const PixelProbeReport r = probe.at(x, y);
+            if (!r.ok) continue;
+            ++s.surfaces;
+            s.lit += r.shadowGpu == 1.0;
+            s.shadowed += r.shadowGpu == 0.0;
+            s.partial += r.shadowGpu > 0.0 && r.shadowGpu < 1.0;
+            s.uncertain += r.shadowLow != r.shadowHigh;
+            int litTaps = 0;
+            for (const ProbeTap& t : r.taps) litTaps += t.value > 0.5;
+            s.mixedTaps += litTaps > 0 && litTaps < int(r.taps.size());
+            if (!r.agrees) {
+                ++s.disagree;
+                if (s.firstDisagreement.empty())
+                    for (const std::string& line : describeProbe(r)) s.firstDisagreement += line + "\n";
+            }
+        }
+    return s;
+}
+
+Settings withFilter(Settings s, FilterKind kind, int kernel = 3, int resolution = 2048) {
+    s.filter.kind = kind;
+    s.filter.kernel = kernel;
+    s.shadow.resolution = resolution;
+    return s;
+}
+
+TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryFilter) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    for (const auto& [name, settings] :
+         {std::pair{"point", withFilter(base, FilterKind::Point)}, std::pair{"hardware2x2", withFilter(base, FilterKind::Hardware2x2)},
+          std::pair{"pcf3", withFilter(base, FilterKind::Pcf, 3)}, std::pair{"poisson", withFilter(base, FilterKind::Poisson)},
+          // A coarse map: wide bilinear and PCF edges, so many pixels weigh texels of both sides.
+          std::pair{"hardware2x2 256", withFilter(base, FilterKind::Hardware2x2, 3, 256)},
+          std::pair{"pcf5 256", withFilter(base, FilterKind::Pcf, 5, 256)}}) {
+        const Sweep s = sweep(scene, settings, 320, 180, 2);
+        SCOPED_TRACE(name);
+        EXPECT_GT(s.surfaces, 5000);
+        EXPECT_EQ(s.disagree, 0) << s.firstDisagreement;
+        // The view holds lit floor, shadow and (filtered) edges: the test covers all three.
+        EXPECT_GT(s.lit, 100);
+        EXPECT_GT(s.shadowed, 20);
+        if (settings.filter.kind != FilterKind::Point) EXPECT_GE(s.partial, settings.shadow.resolution < 2048 ? 20 : 1);
+        EXPECT_LT(s.uncertain, s.surfaces / 20) << "rounding decides too many pixels";
+    }
+}
+
+TEST_F(PixelProbeTest, ExplainsTheMoireOfAWideKernel) {
+    // The default bias with a 7x7 kernel: the far taps reach 3 texels from the lookup, where the sloped floor's own
+    // depth (3 x m) passes its bias (0.8 texels + the normal offset): most of the lit floor reads S < 1, and the
+    // probe shows those taps shadowed, in agreement with the GPU.
+    const Scene scene = loadBuiltin("textbook");
+    const Sweep s = sweep(scene, withFilter(loadShippedPreset("default"), FilterKind::Pcf, 7), 160, 90, 2);
+    EXPECT_EQ(s.disagree, 0) << s.firstDisagreement;
+    EXPECT_GT(s.mixedTaps, s.surfaces / 2);
+    EXPECT_LT(s.lit, s.surfaces / 10);
+    EXPECT_LT(s.uncertain, s.surfaces / 20);
+}
+
+TEST_F(PixelProbeTest, AcneAtZeroBiasIsExplainedTapByTap) {
+    // Zero bias and no normal offset on a grazing light: each receiver meets its own surface in the map, so its taps
+    // split into lit and shadowed ones — the stripes of acne. The probe must still agree with the GPU.
+    const Scene scene = loadBuiltin("grazing");
+    Settings s = loadShippedPreset("default");
+    s.shadow.depthBias = 0.0f;
+    s.shadow.slopeScaledDepthBias = 0.0f;
+    s.shadow.normalOffset = 0.0f;
+    const Sweep acne = sweep(scene, s);
+    EXPECT_EQ(acne.disagree, 0) << acne.firstDisagreement;
+    EXPECT_GT(acne.mixedTaps, acne.surfaces / 10) << "zero bias should split the taps of many receivers";
+    EXPECT_GT(acne.partial, acne.surfaces / 10);
+    // The shipped bias removes most of that.
+    const Sweep biased = sweep(scene, loadShippedPreset("default"));
+    EXPECT_EQ(biased.disagree, 0) << biased.firstDisagreement;
+    EXPECT_LT(biased.mixedTaps, acne.mixedTaps / 3);
+}
+
+TEST_F(PixelProbeTest, SpotLightWrapAndBorderAgreeToo) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings spot = loadShippedPreset("default");
+    spot.light.type = LightType::Spot;
+    spot.light.position = {3.0f, 9.0f, 2.0f};
+    spot.light.direction = {-0.3f, -1.0f, -0.2f};
+    spot.light.spotConeDeg = 70.0f;
+    const Sweep s = sweep(scene, spot);
+    EXPECT_EQ(s.disagree, 0) << s.firstDisagreement;
+    EXPECT_GT(s.shadowed, 20);
+    Settings wrap = loadShippedPreset("default");
+    wrap.projection.autoFit = false;
+    wrap.projection.orthoSize = 8.0f;  // the view reaches outside the light's volume
+    wrap.projection.nearPlane = 0.1f;
+    wrap.projection.farPlane = 60.0f;
+    for (AddressMode mode : {AddressMode::Wrap, AddressMode::ClampToEdge, AddressMode::ClampToBorder}) {
+        wrap.sampler.addressMode = mode;
+        const Sweep w = sweep(scene, withFilter(wrap, FilterKind::Hardware2x2));
+        EXPECT_EQ(w.disagree, 0) << int(mode) << "\n" << w.firstDisagreement;
+    }
+}
+
+TEST_F(PixelProbeTest, ReportsTheBiasTermsAndTapsOfOneFloorPixel) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings s = topDownShadowView(loadShippedPreset("default"));
+    s.light.direction = {0.0f, -1.0f, 0.0f};
+    s.shadow.depthBias = 4.0f;
+    s.shadow.slopeScaledDepthBias = 3.0f;
+    s.shadow.depthBiasClamp = 0.01f;
+    s.shadow.normalOffset = 1.5f;
+    s.filter = {FilterKind::Pcf, 5, 2.0f};
+    Renderer renderer;
+    PixelProbe probe;
+    const int w = 200, h = 200;
+    const Camera camera = cameraFor(s.camera, scene, 1.0);
+    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    // The first lit floor pixel from the top left: away from every caster.
+    PixelProbeReport r;
+    for (int y = 0; y < h && !r.ok; y += 5)
+        for (int x = 0; x < w && !r.ok; x += 5) {
+            r = probe.at(x, y);
+            if (r.ok && (std::abs(r.world.y) > 1e-6 || r.shadowGpu != 1.0)) r.ok = false;
+        }
+    ASSERT_TRUE(r.ok) << "no lit floor pixel";
+    EXPECT_NEAR(r.world.y, 0.0, 1e-9);  // the floor, rebuilt in double
+    EXPECT_EQ(r.taps.size(), 25u);
+    EXPECT_EQ(filterTaps(s.filter).size(), 25u);
+    EXPECT_DOUBLE_EQ(r.taps.front().offsetTexels.x, -2.0);
+    EXPECT_DOUBLE_EQ(r.shadowCpu, 1.0);
+    EXPECT_TRUE(r.agrees);
+    // A floor facing a straight-down light has no depth slope: the slope term is 0, the constant is 4 r, the clamp
+    // does not bite, and the normal offset is 1.5 texels of the map's world size, straight up.
+    const double texel = probe.stats().light.texelWorldSize;
+    EXPECT_NEAR(r.bias.depthSlope, 0.0, 1e-12);
+    EXPECT_NEAR(r.bias.constant.depth, 4.0 * depthStepAt(DepthFormat::D32F, r.receiverDepth), 1e-12);
+    EXPECT_NEAR(r.bias.total.depth, r.bias.constant.depth, 1e-12);
+    EXPECT_NEAR(r.bias.clamp.depth, 0.01, 1e-9);
+    EXPECT_NEAR(r.bias.normalOffsetWorld, 1.5 * texel, 1e-6 * texel);
+    EXPECT_NEAR(r.lookupWorld.y - r.world.y, 1.5 * texel, 1e-6 * texel);
+    // The stored depth of the floor's own texel is the floor's depth plus its bias (every tap reads the floor).
+    for (const ProbeTap& t : r.taps)
+        for (const ProbeTexel& x : t.texels) {
+            EXPECT_FALSE(x.border);
+            EXPECT_NEAR(x.stored, r.receiverDepth + r.bias.total.depth + 1.5 * texel / (probe.stats().light.farPlane - probe.stats().light.nearPlane), 1e-6);
+        }
+    // Outside the view and on the background: refused with the reason.
+    EXPECT_FALSE(probe.at(w, 0).ok);
+    EXPECT_NE(probe.at(0, 0).error.find("background"), std::string::npos);
+    EXPECT_NE(probe.at(-1, 5).error.find("outside the 200x200 view"), std::string::npos);
+}
+
+TEST_F(PixelProbeTest, CopiesTheMeasurementsVerdictAndCause) {
+    const Scene scene = loadBuiltin("grazing");
+    Settings s = loadShippedPreset("default");
+    s.shadow.depthBias = 0.0f;
+    s.shadow.slopeScaledDepthBias = 0.0f;
+    s.shadow.normalOffset = 0.0f;
+    const int w = 160, h = 90;
+    const Camera camera = cameraFor(s.camera, scene, double(w) / h);
+    AccuracyMeter meter;
+    const AccuracyReport measured = meter.measure(scene, s, camera, w, h);
+    ASSERT_TRUE(measured.ok) << measured.error;
+    Renderer renderer;
+    PixelProbe probe;
+    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    int acne = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const PixelProbeReport r = probe.at(x, y, &measured);
+            if (!r.ok || !r.measured) continue;
+            EXPECT_NEAR(r.measuredShadow, r.shadowGpu, 1e-6);  // the same frame
+            if (r.cause == MismatchCause::SelfShadowing) {
+                ++acne;
+                EXPECT_EQ(r.exact, PixelClass::Lit);
+                EXPECT_LT(r.shadowCpu, 1.0);
+            }
+        }
+    EXPECT_GT(acne, 50) << "zero bias on grazing: self-shadowing pixels named by the probe";
+}
+
+}  // namespace
+}  // namespace shadowlab::test
