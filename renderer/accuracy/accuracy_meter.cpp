@@ -313,21 +313,13 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     };
     input.worldPerPixel = [&](std::size_t i) { return glm::dot(m.samples.point[i] - eye, forward) * pixelPerDepth; };
     const MetricsResult metrics = computeMetrics(input);
-    report.counts = metrics.counts;
+    static_cast<AccuracyNumbers&>(report) = metrics;
     for (std::size_t i = 0; i < count; ++i) {
         report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
         const PixelClass c = m.visibility.classes[i];
         if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
             ++report.counts.shadowedNearEdge;
     }
-    report.acnePercent = metrics.acnePercent;
-    report.acneSeverity = metrics.acneSeverity;
-    report.leakPercent = metrics.leakPercent;
-    report.wrongPercent = metrics.wrongPercent;
-    report.meanError = metrics.meanError;
-    report.edgeErrorP95Texels = metrics.edgeErrorP95Texels;
-    report.edgeErrorP95World = metrics.edgeErrorP95World;
-    report.edgeErrorP95ScreenPixels = metrics.edgeErrorP95ScreenPixels;
     report.coarseMapWarning = coarseMapWarning(report);
     report.width = width;
     report.height = height;

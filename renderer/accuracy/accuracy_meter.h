@@ -87,13 +87,8 @@ struct AccuracyCost {
     double totalMs = 0.0;
 };
 
-struct AccuracyReport {
-    bool ok = false;
-    bool cancelled = false;
-    std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
-    std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
-
-    int metricsVersion = kMetricsVersion;
+// The numbers of DESIGN.md's version 2 (accuracy_metrics.h computes them; the report carries them as they are).
+struct AccuracyNumbers {
     double acnePercent = 0.0;         // acne / lit * 100
     double acneSeverity = 0.0;        // mean 1-S over acne pixels (0..1)
     double leakPercent = 0.0;         // leak / shadowed * 100
@@ -102,11 +97,20 @@ struct AccuracyReport {
     double edgeErrorP95Texels = 0.0;  // 95th percentile of dist over mismatched pixels (0 when none)
     double edgeErrorP95World = 0.0;   // the same in world units (each pixel's texel size)
     double edgeErrorP95ScreenPixels = 0.0;  // the same in main-view pixels (at each pixel's depth)
+    AccuracyCounts counts;
+};
+
+struct AccuracyReport : AccuracyNumbers {
+    bool ok = false;
+    bool cancelled = false;
+    std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
+    std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
+
+    int metricsVersion = kMetricsVersion;
     double kTexels = 1.0;             // filter radius + 1 texel
     double texelWorldSize = 0.0;      // world size of one shadow-map texel (directional; spot: at the cone's centre)
     // "" unless k covers most of the shadowed area (a coarse map): then acne and leak cannot judge (see the text).
     std::string coarseMapWarning;
-    AccuracyCounts counts;
     AccuracyCost cost;
 
     // The error overlay (accuracy_overlay.h) and the same view coloured by cause. RGBA8, width * height * 4 bytes,

@@ -42,16 +42,7 @@ struct MetricsInput {
     std::function<double(std::size_t)> worldPerPixel;
 };
 
-struct MetricsResult {
-    AccuracyCounts counts;
-    double acnePercent = 0.0;
-    double acneSeverity = 0.0;  // mean 1-S over acne pixels (0..1)
-    double leakPercent = 0.0;
-    double wrongPercent = 0.0;
-    double meanError = 0.0;  // mean |S-V| over measured pixels (0..1)
-    double edgeErrorP95Texels = 0.0;
-    double edgeErrorP95World = 0.0;
-    double edgeErrorP95ScreenPixels = 0.0;
+struct MetricsResult : AccuracyNumbers {
     std::vector<PixelMark> marks;        // per pixel, for the error overlay
     std::vector<MismatchCause> causes;   // per pixel, for the cause overlay
 };

@@ -18,7 +18,7 @@ struct TuneStep {
     float depthBias = 0.0f;          // D3D DepthBias (format depth steps)
     float slopeScaledDepthBias = 0.0f;
     float normalOffset = 0.0f;       // texels
-    CullMode cullMode = CullMode::Back;
+    CullMode cullMode = CullMode::None;
     double biasTexels = 0.0;         // the bias's size in texels (constant + slope + normal offset), for the tie-break
     double acnePercent = 0.0;
     double leakPercent = 0.0;

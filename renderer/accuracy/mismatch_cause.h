@@ -41,7 +41,7 @@ struct CauseContext {
     const EmbreeScene* bvh = nullptr;
     ReferenceLight light;        // render-origin-relative
     LightSpace lightSpace;       // the tool's light space (map bounds, near plane)
-    CullMode cullMode = CullMode::Back;
+    CullMode cullMode = CullMode::None;
     bool depthClamp = true;
     double sceneRadius = 1.0;
 };

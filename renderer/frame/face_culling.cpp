@@ -25,7 +25,7 @@ void applyViewFaceCulling(const Material* material, bool mirrored) {
 }
 
 void applyShadowFaceCulling(CullMode mode, const Material* material, bool mirrored) {
-    cull(mode != CullMode::None && !doubleSided(material), mode == CullMode::Front ? GL_FRONT : GL_BACK, mirrored);
+    cull(shadowPassCullsAny(mode, doubleSided(material)), mode == CullMode::Front ? GL_FRONT : GL_BACK, mirrored);
 }
 
 void resetFaceCulling() {

@@ -11,6 +11,14 @@
 
 namespace shadowlab {
 
+// The shadow pass's rule without GL, so the reference's cause rays apply the same one: cullMode none and
+// double-sided materials keep every face; otherwise back culling drops the faces whose front (counter-clockwise,
+// clockwise for mirrored instances) looks away from the light, front culling those that look toward it.
+inline bool shadowPassCullsAny(CullMode mode, bool doubleSided) { return mode != CullMode::None && !doubleSided; }
+inline bool shadowPassCulls(CullMode mode, bool doubleSided, bool frontFacesLight) {
+    return shadowPassCullsAny(mode, doubleSided) && (mode == CullMode::Back ? !frontFacesLight : frontFacesLight);
+}
+
 // Sets GL_CULL_FACE, glCullFace and glFrontFace for one draw of the main pass or the G-buffer.
 void applyViewFaceCulling(const Material* material, bool mirrored);
 

@@ -1,5 +1,7 @@
 #include "reference/embree_scene.h"
 
+#include "frame/face_culling.h"
+
 #include <embree3/rtcore.h>
 
 #include <glm/ext/matrix_double4x4.hpp>
@@ -36,11 +38,9 @@ void alphaOcclusionFilter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
-// Would the shadow pass cull this face? The same rule as ShadowPass::run: doubleSided or cullMode none keep it;
-// otherwise the face is front when its winding (flipped for mirrored instances) is counter-clockwise seen from
-// the light.
+// Would the shadow pass cull this face? face_culling.h's rule, with the face's winding seen from the light.
 bool culledByShadowPass(const EmbreeScene::GeometryInfo& g, unsigned primitive, const HitRules& rules) {
-    if (g.doubleSided || rules.cullMode == CullMode::None) return false;
+    if (!shadowPassCullsAny(rules.cullMode, g.doubleSided)) return false;  // no need for the winding
     const float* v = g.vertices;
     const unsigned* tri = g.indices + 3 * std::size_t(primitive);
     const glm::vec3 p0(v[3 * tri[0]], v[3 * tri[0] + 1], v[3 * tri[0] + 2]);
@@ -49,8 +49,7 @@ bool culledByShadowPass(const EmbreeScene::GeometryInfo& g, unsigned primitive, 
     glm::vec3 front = glm::cross(p1 - p0, p2 - p0);
     if (g.mirrored) front = -front;
     const glm::vec3 towardLight = rules.spot ? rules.lightPosition - p0 : -rules.lightDirection;
-    const bool facesLight = glm::dot(front, towardLight) > 0.0f;
-    return rules.cullMode == CullMode::Back ? !facesLight : facesLight;
+    return shadowPassCulls(rules.cullMode, g.doubleSided, glm::dot(front, towardLight) > 0.0f);
 }
 
 RTCRay makeRay(const glm::vec3& origin, const glm::vec3& direction, float tFar) {

@@ -21,7 +21,7 @@ struct HitRules {
     bool ignoreAlpha = false;       // MASK faces block everywhere (the alpha test is skipped)
     bool shadowPassCulling = false; // drop the faces the shadow pass culls: cullMode, unless doubleSided; the
                                     // front face follows the instance's winding (mirrored instances flip it)
-    CullMode cullMode = CullMode::Back;
+    CullMode cullMode = CullMode::None;
     bool spot = false;
     glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};  // directional: where light travels
     glm::vec3 lightPosition{0.0f};                // spot

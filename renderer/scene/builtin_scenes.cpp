@@ -223,7 +223,7 @@ constexpr Entry kScenes[] = {
     {"thin-walls", "walls 0.02, 0.1 and 0.5 thick on a floor: too much bias detaches their shadows", thinWalls},
     {"fence", "an alpha-tested (MASK) double-sided fence of slats and a rail over a floor", fence},
     {"sphere-plane", "a finely tessellated unit sphere floating over a floor: the analytic check", spherePlane},
-    {"roof", "a single-sided roof facing down over a floor, lit from above: back-face culling drops its shadow", roof},
+    {"roof", "a single-sided roof facing down over a floor, lit from above: cullMode=back drops its shadow", roof},
 };
 
 const Entry* find(const std::string& name) {

@@ -257,7 +257,9 @@ std::vector<SettingsField> buildFields() {
                            0, 1, [](auto& s) -> auto& { return s.shadow.depthBiasClamp; }));
     f.push_back(floatField("shadow.normalOffset", "Lookup moved along the surface normal, in shadow-map texels", 0,
                            16, [](auto& s) -> auto& { return s.shadow.normalOffset; }));
-    f.push_back(enumField<CullMode>("shadow.cullMode", "Faces culled in the shadow pass",
+    f.push_back(enumField<CullMode>("shadow.cullMode",
+                                    "Faces culled in the shadow pass (never those of double-sided materials; back "
+                                    "drops single-sided casters seen from behind, front detaches contact shadows)",
                                     {{CullMode::Back, "back"}, {CullMode::Front, "front"}, {CullMode::None, "none"}},
                                     [](auto& s) -> auto& { return s.shadow.cullMode; }));
 
