@@ -38,7 +38,7 @@ void drawProfileSection(EditorState& state) {
         threshold.push_back(s.surface ? float(s.threshold) : low - margin);
         stored.push_back(s.surface ? float(s.stored - s.bias) : low - margin);
     }
-    ImGui::Text("%d,%d -> %d,%d: %d acne, %d Peter Panning of %d surface samples", profile.from.x, profile.from.y,
+    ImGui::TextWrapped("%d,%d -> %d,%d: %d acne, %d Peter Panning of %d surface samples", profile.from.x, profile.from.y,
                 profile.to.x, profile.to.y, profile.acne, profile.peterPanning, profile.surfaces);
     state.controls.recordLastItem("probe.profile");
     if (low > high) return;
@@ -60,8 +60,7 @@ void drawProfileSection(EditorState& state) {
     ImGui::TextColored(ImVec4(0.16f, 0.45f, 0.95f, 1.0f), "receiver");
     ImGui::SameLine();
     ImGui::TextColored(ImVec4(0.9f, 0.51f, 0.0f, 1.0f), "receiver - bias");
-    ImGui::SameLine();
-    ImGui::Text("map texel - bias: below the orange line = shadowed");
+    ImGui::TextWrapped("grey: map texel - bias; below the orange line = shadowed");
 }
 
 }  // namespace
