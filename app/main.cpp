@@ -4,6 +4,7 @@
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
 #include "cli/probe_command.h"
+#include "cli/profile_command.h"
 #include "cli/render_command.h"
 #include "cli/tune_command.h"
 #include "editor_window/edit_command.h"
@@ -95,6 +96,19 @@ int main(int argc, char** argv) {
     probeCmd->add_option("--pixel", probe.pixel, "X,Y: the pixel, y down from the top")->required();
     probeCmd->add_option("--json", probe.json, "also write the probe as JSON");
     probeCmd->add_flag("--measure", probe.measure, "also measure the view: the exact visibility and the error's cause");
+    cli::ProfileOptions profile;
+    CLI::App* profileCmd = app.add_subcommand("profile", "Depth profile along a line: receiver depth, map texels, bias; acne and Peter Panning marked");
+    profileCmd->add_option("--scene", profile.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    profileCmd->add_option("--preset", profile.preset, "a preset JSON path, or the name of a shipped preset");
+    profileCmd->add_option("--set", profile.overrides, "override a setting: key=value (repeatable)");
+    profileCmd->add_option("--width", profile.width, "view width")->capture_default_str();
+    profileCmd->add_option("--height", profile.height, "view height")->capture_default_str();
+    profileCmd->add_option("--from", profile.from, "X0,Y0: the line's start, y down from the top")->required();
+    profileCmd->add_option("--to", profile.to, "X1,Y1: the line's end")->required();
+    profileCmd->add_option("--out", profile.out, "the chart, PNG")->required();
+    profileCmd->add_option("--json", profile.json, "also write every sample's numbers as JSON");
+    profileCmd->add_option("--plot-width", profile.plotWidth, "chart width")->capture_default_str();
+    profileCmd->add_option("--plot-height", profile.plotHeight, "chart height")->capture_default_str();
 
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
@@ -113,6 +127,7 @@ int main(int argc, char** argv) {
     if (*tuneCmd) return cli::runTune(tune);
     if (*exportCmd) return cli::runExport(exportOptions);
     if (*probeCmd) return cli::runProbe(probe);
+    if (*profileCmd) return cli::runProfile(profile);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

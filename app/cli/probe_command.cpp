@@ -12,7 +12,7 @@
 
 namespace shadowlab::cli {
 
-bool parsePixel(const std::string& text, int& x, int& y, std::string& error) {
+bool parsePixel(const std::string& text, int& x, int& y, std::string& error, const std::string& option) {
     const std::size_t comma = text.find(',');
     auto number = [](std::string_view s, int& out) {
         const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
@@ -20,7 +20,8 @@ bool parsePixel(const std::string& text, int& x, int& y, std::string& error) {
     };
     if (comma == std::string::npos || !number(std::string_view(text).substr(0, comma), x) ||
         !number(std::string_view(text).substr(comma + 1), y)) {
-        error = "--pixel '" + text + "': expected X,Y (two integers, y down from the top), e.g. --pixel 640,360";
+        error = option + " '" + text + "': expected X,Y (two integers, y down from the top), e.g. " + option +
+                " 640,360";
         return false;
     }
     return true;

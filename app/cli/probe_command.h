@@ -18,8 +18,8 @@ struct ProbeOptions {
     bool measure = false;
 };
 
-// "X,Y" -> the pixel; false (and `error` set) when it is not two integers.
-bool parsePixel(const std::string& text, int& x, int& y, std::string& error);
+// "X,Y" -> the pixel; false (and `error` set, naming `option`) when it is not two integers.
+bool parsePixel(const std::string& text, int& x, int& y, std::string& error, const std::string& option = "--pixel");
 
 // Exit code 0 unless it failed (bad input or pixel, no GL, a file that cannot be written).
 int runProbe(const ProbeOptions& options);

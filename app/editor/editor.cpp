@@ -103,6 +103,7 @@ void Editor::renderFrame() {
     renderViewport();
     pollAccuracy();
     runProbe();
+    runProfile();
     if (screenshotRequested_) takeScreenshot();
 }
 

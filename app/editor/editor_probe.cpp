@@ -1,9 +1,11 @@
 // The viewport's pixel probe: a click (press and release without a drag) or P held over a pixel asks; the next
 // frame probes it with the editor's own renderer (same shadow map) and, when the Accuracy panel's measurement is of
-// this very view, its exact verdict and cause. A changed view or setting probes the same pixel again.
+// this very view, its exact verdict and cause. A changed view or setting probes the same pixel again. Ctrl+drag
+// draws a line whose depth profile the Probe panel plots.
 #include "editor/editor.h"
 #include "editor/editor_keys.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab::editor {
@@ -11,6 +13,20 @@ namespace shadowlab::editor {
 void Editor::probeViewportInput(ImVec2 imagePos) {
     const ImGuiIO& io = ImGui::GetIO();
     const int x = int(std::floor(io.MousePos.x - imagePos.x)), y = int(std::floor(io.MousePos.y - imagePos.y));
+    ProbeState& line = state_.probe;
+    // Ctrl+drag draws the depth profile's line, from the press to the cursor, both clamped to the view.
+    const int lastX = int(viewportRect_.z) - 1, lastY = int(viewportRect_.w) - 1;
+    if (ImGui::IsItemActive() && io.MouseDown[0] && io.KeyCtrl && io.MouseDragMaxDistanceSqr[0] >= 9.0f) {
+        line.lineFrom = glm::ivec2(std::clamp(int(std::floor(io.MouseClickedPos[0].x - imagePos.x)), 0, lastX),
+                                   std::clamp(int(std::floor(io.MouseClickedPos[0].y - imagePos.y)), 0, lastY));
+        line.lineTo = glm::ivec2(std::clamp(x, 0, lastX), std::clamp(y, 0, lastY));
+        line.drawingLine = true;
+    }
+    if (line.drawingLine && !io.MouseDown[0]) {
+        line.drawingLine = false;
+        line.profileRequested = true;
+        return;
+    }
     if (x < 0 || y < 0 || x >= int(viewportRect_.z) || y >= int(viewportRect_.w)) return;
     const glm::ivec2 pixel(x, y);
     // A left click that did not move (a drag orbits instead); Shift+click pans.
@@ -29,6 +45,36 @@ void Editor::drawProbeMarker(ImVec2 imagePos) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddCircle(c, 7.0f, IM_COL32(0, 0, 0, 200), 16, 3.0f);
     draw->AddCircle(c, 7.0f, IM_COL32(255, 230, 0, 255), 16, 1.5f);
+}
+
+void Editor::drawProfileLine(ImVec2 imagePos) {
+    const ProbeState& p = state_.probe;
+    if (!p.lineFrom || !p.lineTo) return;
+    const ImVec2 a(imagePos.x + float(p.lineFrom->x) + 0.5f, imagePos.y + float(p.lineFrom->y) + 0.5f);
+    const ImVec2 b(imagePos.x + float(p.lineTo->x) + 0.5f, imagePos.y + float(p.lineTo->y) + 0.5f);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddLine(a, b, IM_COL32(0, 0, 0, 200), 3.0f);
+    draw->AddLine(a, b, IM_COL32(0, 220, 255, 255), 1.5f);
+    draw->AddCircleFilled(a, 3.0f, IM_COL32(0, 220, 255, 255));
+}
+
+void Editor::runProfile() {
+    ProbeState& p = state_.probe;
+    const std::optional<AccuracyViewKey> key = accuracyKey();
+    if (!key || !renderer_ || !p.lineFrom || !p.lineTo || p.drawingLine) return;
+    const bool follow = p.profile && p.profileKey && !(*p.profileKey == *key) && !ImGui::IsAnyMouseDown();
+    if (!p.profileRequested && !follow) return;
+    p.profileRequested = false;
+    if (!probe_) probe_ = std::make_unique<PixelProbe>();
+    DepthProfile profile;
+    if (std::string error = probe_->capture(*renderer_, *key->scene, key->settings, key->camera, key->width,
+                                            key->height);
+        !error.empty())
+        profile.error = error;
+    else
+        profile = depthProfile(*probe_, *p.lineFrom, *p.lineTo);
+    p.profile = std::move(profile);
+    p.profileKey = key;
 }
 
 void Editor::runProbe() {

@@ -147,6 +147,7 @@ void Editor::drawViewport() {
                           state_.loading ? "loading the scene..." : "no frame yet");
         }
         drawProbeMarker(imagePos);
+        drawProfileLine(imagePos);
         probeViewportInput(imagePos);
         viewportCameraInput(imageSize);
     }
@@ -160,7 +161,7 @@ void Editor::viewportCameraInput(ImVec2 size) {
     if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
         if (io.MouseDown[2] || (io.MouseDown[0] && io.KeyShift))
             orbit_->pan(io.MouseDelta.x, io.MouseDelta.y, int(size.y));
-        else if (io.MouseDown[0])
+        else if (io.MouseDown[0] && !io.KeyCtrl)  // Ctrl+drag draws the depth profile's line
             orbit_->orbit(io.MouseDelta.x, io.MouseDelta.y);
     }
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) orbit_->zoom(io.MouseWheel);

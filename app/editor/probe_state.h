@@ -2,6 +2,7 @@
 // What the Probe panel and the shadow map viewer's tap highlights show: the newest pixel probe of the viewport
 // (issue 13, "Why this pixel"), the view it was made for, and a pending request from a click or P held over a pixel.
 #include "editor/accuracy_state.h"
+#include "probe/depth_profile.h"
 #include "probe/pixel_probe.h"
 
 #include <glm/ext/vector_int2.hpp>
@@ -16,6 +17,13 @@ struct ProbeState {
     std::optional<PixelProbeReport> report;  // the newest probe
     std::optional<AccuracyViewKey> key;      // the view it was made for; a changed view re-probes the same pixel
     bool withMeasurement = false;            // the report carries the Accuracy panel's verdict for its pixel
+
+    // The depth profile: Ctrl+drag in the viewport draws its line (y down); on release it is profiled.
+    std::optional<glm::ivec2> lineFrom, lineTo;
+    bool drawingLine = false;                   // the drag is in progress
+    bool profileRequested = false;              // profile lineFrom -> lineTo on the next frame
+    std::optional<DepthProfile> profile;        // the newest profile
+    std::optional<AccuracyViewKey> profileKey;  // the view it was made for; a changed view profiles the line again
 };
 
 }  // namespace shadowlab::editor

@@ -136,4 +136,45 @@ TEST_F(EditorProbe, AMeasurementOfTheSameViewAddsTheExactVerdict) {
     EXPECT_NEAR(p.report->measuredShadow, p.report->shadowGpu, 1e-6) << "the measured frame is the probed one";
 }
 
+TEST_F(EditorProbe, CtrlDragDrawsALineWhoseDepthProfileThePanelPlots) {
+    // The depth profile in the editor: Ctrl+drag across the viewport draws a line without orbiting the camera; the
+    // Probe panel then plots the profile along it; zero bias puts acne on the floor's samples, an edit re-profiles.
+    EditorHarness& h = *harness;
+    const glm::dvec3 eyeBefore = h.editor().orbitCamera()->toCamera().position;
+    const ImVec4 view = h.editor().viewportRect();
+    const int x0 = int(view.z / 2) - 40, y0 = int(view.w / 2) + 60;
+    const ImVec2 a = windowPoint(x0, y0);
+    h.setKey(keys::kLeftControl, true);
+    h.moveMouse(a.x, a.y);
+    ImGui::GetIO().MouseDown[0] = true;
+    h.frame();
+    for (int i = 1; i <= 8; ++i) h.moveMouse(a.x + 10.0f * float(i), a.y);
+    ASSERT_TRUE(h.state().probe.drawingLine) << "the drag draws a line while it lasts";
+    ImGui::GetIO().MouseDown[0] = false;
+    h.frame(3);
+    h.setKey(keys::kLeftControl, false);
+    h.frame();
+    const glm::dvec3 eyeAfter = h.editor().orbitCamera()->toCamera().position;
+    EXPECT_EQ(eyeBefore, eyeAfter) << "a Ctrl+drag does not orbit";
+    const ProbeState& p = h.state().probe;
+    ASSERT_TRUE(p.profile.has_value()) << "releasing the drag profiles the line";
+    ASSERT_TRUE(p.profile->ok) << p.profile->error;
+    EXPECT_EQ(p.profile->from, glm::ivec2(x0, y0));
+    EXPECT_EQ(p.profile->to, glm::ivec2(x0 + 80, y0));
+    EXPECT_EQ(p.profile->samples.size(), 81u);
+    EXPECT_GT(p.profile->surfaces, 40) << "the line crosses the scene";
+    EXPECT_EQ(p.profile->acne, 0) << "the default preset";
+    EXPECT_TRUE(h.hasControl("probe.profile"));
+    EXPECT_TRUE(h.hasControl("probe.profilePlot"));
+    EXPECT_FALSE(p.report.has_value()) << "the drag probed no pixel";
+    h.saveWindow("profile-editor");
+
+    h.state().edit("shadow.depthBias", 0.0);
+    h.state().edit("shadow.slopeScaledDepthBias", 0.0);
+    h.state().edit("shadow.normalOffset", 0.0);
+    h.frame(3);
+    ASSERT_TRUE(p.profile && p.profile->ok);
+    EXPECT_GT(p.profile->acne, 0) << "zero bias: the same line now shows acne";
+}
+
 }  // namespace shadowlab::editor::test

@@ -1,0 +1,70 @@
+#include "cli/profile_command.h"
+
+#include "cli/command_input.h"
+#include "cli/probe_command.h"
+#include "cli/settings_from_cli.h"
+#include "context/headless_context.h"
+#include "image/image_io.h"
+#include "probe/depth_profile_output.h"
+#include "scene/scene_source.h"
+#include "settings/atomic_file.h"
+
+#include <iostream>
+
+namespace shadowlab::cli {
+
+int runProfile(const ProfileOptions& options) {
+    glm::ivec2 from{0}, to{0};
+    std::string error;
+    if (!parsePixel(options.from, from.x, from.y, error, "--from") || !parsePixel(options.to, to.x, to.y, error, "--to"))
+        return fail(error);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    if (!settings) return 2;
+    if (error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    for (const auto& [name, text, point] : {std::tuple{"--from", options.from, from}, std::tuple{"--to", options.to, to}})
+        if (point.x < 0 || point.y < 0 || point.x >= options.width || point.y >= options.height)
+            return fail(std::string(name) + " " + text + " is outside the " + std::to_string(options.width) + "x" +
+                        std::to_string(options.height) + " view (x in [0, " + std::to_string(options.width - 1) +
+                        "], y in [0, " + std::to_string(options.height - 1) + "])");
+    if (options.plotWidth < 200 || options.plotHeight < 120 || options.plotWidth > 8192 || options.plotHeight > 8192)
+        return fail("--plot-width/--plot-height " + std::to_string(options.plotWidth) + "x" +
+                    std::to_string(options.plotHeight) + ": expected 200..8192 x 120..8192");
+    if (error = checkOutputFolder(options.out, "--out"); !error.empty()) return fail(error);
+    if (error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    if (!loaded.scene) return fail(loaded.error);
+    const Scene& scene = *loaded.scene;
+
+    try {
+        HeadlessContext context;
+        Renderer renderer;
+        PixelProbe probe;
+        const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
+        if (error = probe.capture(renderer, scene, *settings, camera, options.width, options.height); !error.empty())
+            return fail(error);
+        for (const std::string& w : probe.stats().warnings) std::cerr << "warning: " << w << "\n";
+        const DepthProfile profile = depthProfile(probe, from, to);
+        if (!profile.ok) return fail(profile.error);
+        std::cout << "scene " << scene.name << "\n"
+                  << "line " << options.from << " -> " << options.to << ": " << profile.samples.size()
+                  << " samples, " << profile.surfaces << " on surfaces, " << profile.acne << " acne, "
+                  << profile.peterPanning << " Peter Panning\n";
+        const PlotImage image = drawLinePlot(depthProfilePlot(profile), options.plotWidth, options.plotHeight);
+        if (error = writePng(options.out, image.width, image.height, 4, image.rgba.data(), false); !error.empty())
+            return fail(error);
+        std::cout << "wrote " << options.out << "\n";
+        if (!options.json.empty()) {
+            nlohmann::json json = depthProfileToJson(profile);
+            json["scene"] = options.scene;
+            json["preset"] = options.preset;
+            json["view"] = {options.width, options.height};
+            if (error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty()) return fail(error);
+            std::cout << "wrote " << options.json << "\n";
+        }
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    return 0;
+}
+
+}  // namespace shadowlab::cli
