@@ -112,7 +112,8 @@ private:
     void drawViewport();
     void viewModeCombo();
     void drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize);
-    void viewportCameraInput(ImVec2 size);
+    void viewportCameraInput(ImVec2 pos, ImVec2 size);
+    void closePopupOnEscape();
     void drawPanels();
     void drawUnsavedChangesDialog();
     void drawSaveAsDialog();
@@ -134,6 +135,9 @@ private:
     // The camera was set before the viewport had a size: set it again (auto-framing depends on the aspect) once
     // the viewport is laid out.
     bool cameraNeedsViewport_ = false;
+    // A press on the view becomes a camera drag only if its first move stays inside the view (see
+    // viewportCameraInput); otherwise it is refused until the button is let go.
+    bool cameraDragLive_ = false, cameraDragRefused_ = false;
     void resetCameraFromSettings();
     std::vector<ImVec4> panelRects_;   // last frame's panel windows (x, y, w, h): the viewport fills the rest
 

@@ -8,6 +8,18 @@ namespace shadowlab::editor {
 
 std::string presetNameFromPath(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
+bool PresetSession::dirty(const Settings& settings) const {
+    Settings compared = settings;
+    compared.view = baseline_.view;
+    return !(compared == baseline_);
+}
+
+void PresetSession::revert(Settings& settings) const {
+    const ViewMode view = settings.view;
+    settings = baseline_;
+    settings.view = view;
+}
+
 std::string PresetSession::load(const std::string& path, bool shipped, Settings& settings) {
     PresetLoadResult loaded = loadPresetFile(path);
     if (!loaded.settings) {

@@ -18,9 +18,12 @@ public:
     std::string save(const Settings& settings);
     // Saves to `path` (refuses to replace an existing file unless `overwrite`) and makes it the current preset.
     std::string saveAs(const std::string& path, const Settings& settings, bool overwrite);
-    void revert(Settings& settings) const { settings = baseline_; }
+    // Back to the settings as last loaded or saved; the view mode stays as the user chose it (see dirty()).
+    void revert(Settings& settings) const;
 
-    bool dirty(const Settings& settings) const { return !(settings == baseline_); }
+    // The view mode (lit / shadow / light depth) is how the user looks, not what they tuned: switching it never marks
+    // the preset as changed. A save still writes it (the CLI renders the preset's `view`).
+    bool dirty(const Settings& settings) const;
     bool canSaveInPlace() const { return !path_.empty() && !shipped_; }
     const std::string& path() const { return path_; }
     const std::string& name() const { return name_; }
