@@ -419,8 +419,10 @@ void Editor::drawSaveAsDialog() {
         saveAsError_ = presetNameProblem(saveAsName_);
         if (saveAsError_.empty()) {
             const std::string path = (std::filesystem::path(state_.userPresetsDir) / (saveAsName_ + ".json")).string();
-            saveAsError_ = state_.preset.saveAs(path, state_.settings, overwrite);
+            const Settings saved = settingsToSave();
+            saveAsError_ = state_.preset.saveAs(path, saved, overwrite, state_.sceneSpec);
             if (saveAsError_.empty()) {
+                state_.settings = saved;
                 state_.say("saved preset " + path);
                 refreshPresetList();
                 ImGui::CloseCurrentPopup();
