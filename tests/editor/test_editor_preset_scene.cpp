@@ -74,3 +74,31 @@ TEST_F(EditorPresetScene, SavingRecordsTheSceneAndTheCameraShownAndLoadingBrings
 }
 
 }  // namespace shadowlab::editor::test
+
+namespace shadowlab::editor::test {
+
+TEST_F(EditorPresetScene, AScreenshotCarriesThePresetAndTheSceneAndLoadsBackAsAPreset) {
+    EditorHarness& h = *harness;
+    h.click("shadow.resolution=1K");
+    h.drag("viewport.image", 60.0f, 10.0f);
+    h.click("viewport.screenshot");
+    h.frame(2);
+    const std::string shot = h.state().lastScreenshot;
+    ASSERT_TRUE(std::filesystem::exists(shot)) << shot;
+    PresetLoadResult loaded = loadPresetFile(shot);
+    ASSERT_TRUE(loaded.settings) << loaded.errors.front();
+    EXPECT_EQ(loaded.scene, "builtin:textbook");
+    EXPECT_EQ(loaded.settings->shadow.resolution, 1024);
+    EXPECT_LT(glm::length(loaded.settings->camera.position - eye()), 1e-9) << "the camera of the picture";
+
+    // Loading the picture as a preset brings its view back; it is never saved over (Save asks for a name).
+    h.click("preset.revert");
+    h.click("viewport.frame");
+    h.editor().requestPreset(shot, false);
+    h.frame(2);
+    EXPECT_EQ(h.state().settings, *loaded.settings);
+    EXPECT_LT(glm::length(eye() - loaded.settings->camera.position), 1e-6);
+    EXPECT_FALSE(h.state().preset.canSaveInPlace());
+}
+
+}  // namespace shadowlab::editor::test
