@@ -45,7 +45,7 @@ bool applyFilter(const std::string& name, Settings& settings) {
 }  // namespace
 
 int runBench(const BenchOptions& options) {
-    std::optional<Settings> base = settingsFromCli(options.preset, options.overrides);
+    std::optional<Settings> base = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!base) return 2;
     // Every row's settings and the output path are checked before the scene, the context and the timing runs.
     if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);

@@ -15,7 +15,7 @@ int runExport(const ExportOptions& options) {
         std::cerr << "error: --format: '" << options.format << "' is not one of " << exportFormatChoices() << "\n";
         return 2;
     }
-    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkOutputFolder(options.out, "--out"); !error.empty()) return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);

@@ -14,7 +14,7 @@
 namespace shadowlab::cli {
 
 int runMeasure(const MeasureOptions& options) {
-    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);

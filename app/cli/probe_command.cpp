@@ -31,7 +31,7 @@ int runProbe(const ProbeOptions& options) {
     int x = 0, y = 0;
     std::string pixelError;
     if (!parsePixel(options.pixel, x, y, pixelError)) return fail(pixelError);
-    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (x < 0 || y < 0 || x >= options.width || y >= options.height)

@@ -8,6 +8,7 @@
 #include "gl/gl_errors.h"
 #include "image/image_io.h"
 #include "scene/scene_source.h"
+#include "settings/preset_io.h"
 #include "settings/settings_fields.h"
 #include "shadow/shadow_map_files.h"
 
@@ -18,7 +19,7 @@ namespace shadowlab::cli {
 int runRender(const RenderOptions& options) {
     std::vector<std::string> overrides = options.overrides;
     if (!options.view.empty()) overrides.push_back("view=" + options.view);
-    std::optional<Settings> settings = settingsFromCli(options.preset, overrides);
+    std::optional<Settings> settings = settingsFromCli(options.preset, overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.shadowMapExr, "--shadow-map"},
@@ -48,7 +49,11 @@ int runRender(const RenderOptions& options) {
         for (const std::string& e : gl::takeDebugErrors()) std::cerr << "GL error: " << e << "\n";
 
         const std::vector<std::uint8_t> pixels = target.readColor();
-        if (std::string error = writePng(options.out, target.width(), target.height(), 4, pixels.data(), true);
+        // The picture carries the preset that made it, with the scene and the camera used (render --preset shot.png).
+        Settings used = *settings;
+        used.camera = recordedCamera(camera, settings->camera.autoFrame);
+        if (std::string error = writePng(options.out, target.width(), target.height(), 4, pixels.data(), true,
+                                         presetPngText(used, options.scene));
             !error.empty())
             return fail(error);
         printFrameReport(std::cout, scene, renderer.glInfo(), stats);

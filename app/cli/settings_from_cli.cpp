@@ -1,6 +1,7 @@
 #include "cli/settings_from_cli.h"
 
 #include "settings/preset_io.h"
+#include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
 
 #include <filesystem>
@@ -20,7 +21,8 @@ std::string resolvePresetPath(const std::string& preset) {
     return preset;
 }
 
-std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides) {
+std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides,
+                                        const std::string& sceneSpec) {
     Settings settings;
     if (!preset.empty()) {
         PresetLoadResult loaded = loadPresetFile(resolvePresetPath(preset));
@@ -30,6 +32,9 @@ std::optional<Settings> settingsFromCli(const std::string& preset, const std::ve
             return std::nullopt;
         }
         settings = *loaded.settings;
+        if (!sceneSpec.empty())
+            if (std::string note = adaptPresetToScene(settings, loaded.scene, sceneSpec); !note.empty())
+                std::cerr << "note: " << note << "\n";
     }
     bool ok = true;
     for (const std::string& kv : overrides) {

@@ -12,7 +12,9 @@ namespace shadowlab::cli {
 // Resolves "soft" to <presets dir>/soft.json when no such file exists in the working directory.
 std::string resolvePresetPath(const std::string& preset);
 
-// nullopt after printing the errors to stderr; warnings go to stderr too.
-std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides);
+// nullopt after printing the errors to stderr; warnings go to stderr too. A preset tuned on another scene than
+// `sceneSpec` gets an auto-framed camera there and a note on stderr (preset_scene.h); --set overrides come after.
+std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides,
+                                        const std::string& sceneSpec = {});
 
 }  // namespace shadowlab::cli

@@ -29,7 +29,7 @@ std::string stepLine(const TuneStep& s) {
 }  // namespace
 
 int runTune(const TuneOptions& options) {
-    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
@@ -82,7 +82,11 @@ int runTune(const TuneOptions& options) {
                 std::to_string(options.height) + ": acne " + std::to_string(result.report.acnePercent) +
                 " %, leak " + std::to_string(result.report.leakPercent) + " %, wrong pixels " +
                 std::to_string(result.report.wrongPercent) + " % (metrics version 2).";
-            if (std::string error = savePresetFile(options.out, result.best, "tuned", description); !error.empty())
+            // The preset records the scene and the camera the bias was tuned from, so that view comes back.
+            Settings tuned = result.best;
+            tuned.camera = recordedCamera(camera, settings->camera.autoFrame);
+            if (std::string error = savePresetFile(options.out, tuned, "tuned", description, options.scene);
+                !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.out << "\n";
         }

@@ -5,6 +5,8 @@
 #include "frame/screenshot.h"
 #include "image/image_io.h"
 #include "scene/builtin_scenes.h"
+#include "settings/preset_io.h"
+#include "settings/preset_scene.h"
 #include "settings/user_config.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -138,8 +140,8 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     renderer_->sceneChanged();
     for (std::size_t i = 0; i < state_.scene->warnings.size() && i < 3; ++i)
         state_.say(state_.scene->name + ": " + state_.scene->warnings[i]);
-    // A new scene gets the preset's camera (auto-framed by default).
-    resetCameraFromSettings();
+    // A new scene gets the preset's camera (auto-framed by default, and on a scene it was not tuned on).
+    resetCameraFromSettings(/*announce=*/true);
     lastRendered_.reset();
     if (spec.rfind(kBuiltinPrefix, 0) != 0 && options_.recentFilesPath != "-") {
         state_.recentFiles.add(spec);
@@ -259,7 +261,8 @@ void Editor::takeScreenshot() {
         return;
     }
     const ScreenshotResult result =
-        writeScreenshot(target_, state_.screenshotDir, screenshotWithMap_ ? &renderer_->shadowMap() : nullptr);
+        writeScreenshot(target_, state_.screenshotDir, screenshotWithMap_ ? &renderer_->shadowMap() : nullptr,
+                        std::chrono::system_clock::now(), presetPngText(settingsToSave(), state_.sceneSpec));
     if (!result.ok()) {
         state_.lastScreenshot = "screenshot failed: " + result.error;
         state_.say(state_.lastScreenshot, true);
@@ -315,8 +318,8 @@ void Editor::performSwitch(const PendingSwitch& pending) {
                 break;
             }
             state_.fieldErrors.clear();
-            if (state_.scene) resetCameraFromSettings();
             state_.say("preset " + state_.preset.name() + " loaded from " + pending.target);
+            if (state_.scene) resetCameraFromSettings(/*announce=*/true);
             break;
         }
         case PendingSwitch::Quit:
@@ -330,10 +333,12 @@ void Editor::savePreset() {
         openSaveAs();
         return;
     }
-    if (std::string error = state_.preset.save(state_.settings); !error.empty()) {
+    const Settings saved = settingsToSave();
+    if (std::string error = state_.preset.save(saved, state_.sceneSpec); !error.empty()) {
         state_.say(error, true);
         return;
     }
+    state_.settings = saved;
     state_.say("saved preset " + state_.preset.path());
 }
 
@@ -357,11 +362,33 @@ void Editor::requestScreenshot(bool withShadowMap) {
     screenshotWithMap_ = withShadowMap;
 }
 
-void Editor::resetCameraFromSettings() {
+Camera Editor::presetCamera(std::string* note) const {
     const bool laidOut = viewportRect_.z >= 16.0f && viewportRect_.w >= 16.0f;
     const double aspect = laidOut ? double(viewportRect_.z) / double(viewportRect_.w) : 16.0 / 9.0;
-    orbit_.emplace(cameraFor(state_.settings.camera, *state_.scene, aspect), state_.scene->bounds);
-    cameraNeedsViewport_ = !laidOut;
+    Settings adapted = state_.settings;
+    std::string said = adaptPresetToScene(adapted, state_.preset.scene(), state_.sceneSpec);
+    if (note) *note = std::move(said);
+    return cameraFor(adapted.camera, *state_.scene, aspect);
+}
+
+void Editor::resetCameraFromSettings(bool announce) {
+    std::string note;
+    orbit_.emplace(presetCamera(&note), state_.scene->bounds);
+    cameraNeedsViewport_ = !(viewportRect_.z >= 16.0f && viewportRect_.w >= 16.0f);
+    if (announce && !note.empty()) state_.say(note);
+}
+
+Settings Editor::settingsToSave() const {
+    Settings out = state_.settings;
+    if (!orbit_ || !state_.scene) return out;
+    const Camera shown = orbit_->toCamera();
+    const Camera preset = presetCamera();
+    const double size = std::max(1e-12, glm::length(preset.position - preset.target));
+    const bool moved = glm::length(shown.position - preset.position) > 1e-9 * size ||
+                       glm::length(shown.target - preset.target) > 1e-9 * size;
+    const bool autoFrame = state_.settings.camera.autoFrame && samePresetScene(state_.preset.scene(), state_.sceneSpec);
+    out.camera = recordedCamera(shown, autoFrame && !moved);
+    return out;
 }
 
 void Editor::frameScene() {

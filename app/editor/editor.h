@@ -114,7 +114,8 @@ private:
     void drawViewport();
     void viewModeCombo();
     void drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize);
-    void viewportCameraInput(ImVec2 size);
+    void viewportCameraInput(ImVec2 pos, ImVec2 size);
+    void closePopupOnEscape();
     void drawPanels();
     void drawUnsavedChangesDialog();
     void drawSaveAsDialog();
@@ -136,7 +137,15 @@ private:
     // The camera was set before the viewport had a size: set it again (auto-framing depends on the aspect) once
     // the viewport is laid out.
     bool cameraNeedsViewport_ = false;
-    void resetCameraFromSettings();
+    // A press on the view becomes a camera drag only if its first move stays inside the view (see
+    // viewportCameraInput); otherwise it is refused until the button is let go.
+    bool cameraDragLive_ = false, cameraDragRefused_ = false;
+    void resetCameraFromSettings(bool announce = false);
+    // The camera the preset gives on this scene and viewport (auto-framed on a scene it was not tuned on).
+    Camera presetCamera(std::string* note = nullptr) const;
+    // The settings a save writes: the view camera actually shown (autoFrame kept only while the user has not moved
+    // the camera away from the preset's).
+    Settings settingsToSave() const;
     std::vector<ImVec4> panelRects_;   // last frame's panel windows (x, y, w, h): the viewport fills the rest
 
     std::optional<PendingSwitch> pendingSwitch_;  // waiting for the unsaved-changes answer

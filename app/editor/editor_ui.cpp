@@ -6,6 +6,7 @@
 #include "editor/panels/panel_registry.h"
 #include "settings/settings_fields.h"
 
+#include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
@@ -33,6 +34,7 @@ void Editor::buildUi() {
     state_.viewer.width = state_.viewer.height = 0;  // set again by the viewer panel when it is visible
     state_.viewer.hoverTexel.reset();
     handleShortcuts();
+    closePopupOnEscape();
     drawViewport();
     drawPanels();
     drawUnsavedChangesDialog();
@@ -50,6 +52,20 @@ void Editor::handleShortcuts() {
     if (io.KeyCtrl && ImGui::IsKeyPressed(keys::kS, false)) savePreset();
     if (io.KeyCtrl && ImGui::IsKeyPressed(keys::kQ, false)) requestQuit();
     if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed(keys::kF, false)) frameScene();
+}
+
+// Escape closes an open combo or popup (ImGui does so only with keyboard navigation on, which the editor leaves off).
+// Modal dialogs keep their own Escape handling (Cancel).
+void Editor::closePopupOnEscape() {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (g.OpenPopupStack.empty() || !ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return;
+    int level = g.OpenPopupStack.Size;
+    while (level > 0) {
+        const ImGuiWindow* window = g.OpenPopupStack[level - 1].Window;
+        if (window && (window->Flags & ImGuiWindowFlags_Modal)) break;
+        --level;
+    }
+    if (level < g.OpenPopupStack.Size) ImGui::ClosePopupToLevel(level, true);
 }
 
 ImVec4 Editor::viewportWindowRect() const {
@@ -103,6 +119,11 @@ void Editor::drawViewport() {
         ImGui::SetTooltip("Frame the scene (F). In the view: left drag orbits, middle or Shift+left drag pans, the "
                           "wheel zooms");
     ImGui::SameLine();
+    if (ImGui::Button("Reset view")) resetCameraFromSettings();
+    state_.controls.recordLastItem("viewport.resetView");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Back to the preset's camera (the view it was tuned from; auto-framed when it has none)");
+    ImGui::SameLine();
     if (ImGui::Button("Screenshot (F12)")) requestScreenshot(state_.screenshotWithShadowMap);
     state_.controls.recordLastItem("viewport.screenshot");
     if (ImGui::IsItemHovered())
@@ -149,16 +170,31 @@ void Editor::drawViewport() {
         drawProbeMarker(imagePos);
         drawProfileLine(imagePos);
         probeViewportInput(imagePos);
-        viewportCameraInput(imageSize);
+        viewportCameraInput(imagePos, imageSize);
     }
     drawStatusBar();
     ImGui::End();
 }
 
-void Editor::viewportCameraInput(ImVec2 size) {
+void Editor::viewportCameraInput(ImVec2 pos, ImVec2 size) {
     if (!orbit_) return;
     const ImGuiIO& io = ImGui::GetIO();
-    if (ImGui::IsItemActive() && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
+    const bool moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+    const auto inside = [&](ImVec2 p) {
+        return p.x >= pos.x && p.y >= pos.y && p.x < pos.x + size.x && p.y < pos.y + size.y;
+    };
+    if (!ImGui::IsItemActive()) {
+        cameraDragLive_ = cameraDragRefused_ = false;
+    } else if (moved && !cameraDragLive_ && !cameraDragRefused_) {
+        // A click on the toolbar that the window system delivered before the cursor's move reaches ImGui as a
+        // press on the view whose first move lands outside it: that is no drag (it used to orbit by the whole move).
+        const int button = io.MouseDown[2] ? 2 : 0;
+        if (inside(io.MouseClickedPos[button]) && inside(io.MousePos))
+            cameraDragLive_ = true;
+        else
+            cameraDragRefused_ = true;
+    }
+    if (cameraDragLive_ && moved) {
         if (io.MouseDown[2] || (io.MouseDown[0] && io.KeyShift))
             orbit_->pan(io.MouseDelta.x, io.MouseDelta.y, int(size.y));
         else if (io.MouseDown[0] && !io.KeyCtrl)  // Ctrl+drag draws the depth profile's line
@@ -384,8 +420,10 @@ void Editor::drawSaveAsDialog() {
         saveAsError_ = presetNameProblem(saveAsName_);
         if (saveAsError_.empty()) {
             const std::string path = (std::filesystem::path(state_.userPresetsDir) / (saveAsName_ + ".json")).string();
-            saveAsError_ = state_.preset.saveAs(path, state_.settings, overwrite);
+            const Settings saved = settingsToSave();
+            saveAsError_ = state_.preset.saveAs(path, saved, overwrite, state_.sceneSpec);
             if (saveAsError_.empty()) {
+                state_.settings = saved;
                 state_.say("saved preset " + path);
                 refreshPresetList();
                 ImGui::CloseCurrentPopup();

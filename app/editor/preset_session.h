@@ -14,24 +14,32 @@ public:
 
     // Loads a preset file. On error returns why and leaves the session and `settings` untouched.
     std::string load(const std::string& path, bool shipped, Settings& settings);
-    // Saves to the current file. Refused (with a reason) for shipped presets and unnamed sessions: use saveAs.
-    std::string save(const Settings& settings);
+    // Saves to the current file, recording `scene` as the one it was tuned on. Refused (with a reason) for shipped
+    // presets and unnamed sessions: use saveAs.
+    std::string save(const Settings& settings, const std::string& scene);
     // Saves to `path` (refuses to replace an existing file unless `overwrite`) and makes it the current preset.
-    std::string saveAs(const std::string& path, const Settings& settings, bool overwrite);
-    void revert(Settings& settings) const { settings = baseline_; }
+    std::string saveAs(const std::string& path, const Settings& settings, bool overwrite, const std::string& scene);
+    // Back to the settings as last loaded or saved; the view mode stays as the user chose it (see dirty()).
+    void revert(Settings& settings) const;
 
-    bool dirty(const Settings& settings) const { return !(settings == baseline_); }
-    bool canSaveInPlace() const { return !path_.empty() && !shipped_; }
+    // The view mode (lit / shadow / light depth) is how the user looks, not what they tuned: switching it never marks
+    // the preset as changed. A save still writes it (the CLI renders the preset's `view`).
+    bool dirty(const Settings& settings) const;
+    // A screenshot (.png carrying a preset) is never rewritten as JSON: Save As.
+    bool canSaveInPlace() const { return !path_.empty() && !shipped_ && !fromPicture(); }
     const std::string& path() const { return path_; }
     const std::string& name() const { return name_; }
     bool shipped() const { return shipped_; }
+    bool fromPicture() const { return path_.ends_with(".png"); }  // loaded from a screenshot's text chunk
     const Settings& baseline() const { return baseline_; }
+    const std::string& scene() const { return scene_; }  // the scene it was tuned on; "" when it records none
 
 private:
     Settings baseline_;         // the settings as last loaded or saved
     std::string path_;          // empty: not backed by a file
     std::string name_ = "built-in defaults";
     bool shipped_ = false;
+    std::string scene_;
 };
 
 // "acne" for ".../presets/acne.json".

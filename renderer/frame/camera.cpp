@@ -81,6 +81,15 @@ std::vector<glm::dvec3> worldVertices(const Scene& scene) {
 
 void frameScene(Camera& camera, const Scene& scene, double aspect) { framePoints(camera, worldVertices(scene), aspect); }
 
+CameraSettings recordedCamera(const Camera& used, bool autoFrame) {
+    CameraSettings out;
+    out.autoFrame = autoFrame;
+    out.position = used.position;
+    out.target = used.target;
+    out.fovYDeg = float(used.fovYDeg);
+    return out;
+}
+
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect) {
     const Bounds& bounds = scene.bounds;
     Camera camera;

@@ -28,6 +28,10 @@ struct Camera {
 // precision suits it.
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect);
 
+// The camera settings that bring `used` back (what a saved preset records): its position, target and fov, with
+// `autoFrame` as given (true: auto-framing still decides on load, the recorded values say what it chose here).
+CameraSettings recordedCamera(const Camera& used, bool autoFrame);
+
 // Share of the view's frame (0..1) reserved for the subject in its limiting dimension when auto-framing.
 inline constexpr double kAutoFrameFill = 0.9;
 

@@ -60,7 +60,7 @@ ReservedNames reserveNames(const fs::path& folder, const std::string& base, bool
 }  // namespace
 
 ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& folder, const ShadowMap* shadowMap,
-                                 std::chrono::system_clock::time_point when) {
+                                 std::chrono::system_clock::time_point when, const PngText& text) {
     ScreenshotResult result;
     const std::string failed = "screenshot not saved: ";
     if (target.width() < 1 || target.height() < 1) {
@@ -80,7 +80,7 @@ ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& 
     }
 
     const std::vector<std::uint8_t> pixels = target.readColor();
-    if (std::string error = writePng(names.view.string(), target.width(), target.height(), 4, pixels.data(), true);
+    if (std::string error = writePng(names.view.string(), target.width(), target.height(), 4, pixels.data(), true, text);
         !error.empty()) {
         std::error_code ec;
         fs::remove(names.view, ec);  // the reserved (empty or partial) file is not a screenshot

@@ -3,6 +3,7 @@
 // -2, -3, ... appended when that name is taken: an existing file is never overwritten. Optionally the shadow map
 // beside it, as float EXR and viewable PNG (same stem + "-shadowmap"). Creates the folder if missing.
 #include "frame/render_target.h"
+#include "image/png_text.h"
 #include "shadow/shadow_map.h"
 
 #include <chrono>
@@ -18,10 +19,11 @@ struct ScreenshotResult {
     bool ok() const { return error.empty(); }
 };
 
-// `shadowMap` null: the view only. On failure `error` says which file failed and why; files written before it are
+// `shadowMap` null: the view only. `text` rides in the view PNG (the preset it shows, preset_png.h). On failure `error` says which file failed and why; files written before it are
 // complete and keep their paths in the result.
 ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& folder,
                                  const ShadowMap* shadowMap = nullptr,
-                                 std::chrono::system_clock::time_point when = std::chrono::system_clock::now());
+                                 std::chrono::system_clock::time_point when = std::chrono::system_clock::now(),
+                                 const PngText& text = {});
 
 }  // namespace shadowlab

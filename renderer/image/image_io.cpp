@@ -78,7 +78,7 @@ void appendBytes(void* context, void* data, int size) {
 }  // namespace
 
 std::string writePng(const std::string& path, int width, int height, int channels, const std::uint8_t* pixels,
-                     bool flipVertically) {
+                     bool flipVertically, const PngText& text) {
     const std::string failed = "cannot write PNG '" + path + "': ";
     if (width <= 0 || height <= 0) return failed + "empty image (" + std::to_string(width) + "x" + std::to_string(height) + ")";
     if (channels < 1 || channels > 4) return failed + "unsupported channel count " + std::to_string(channels);
@@ -93,6 +93,8 @@ std::string writePng(const std::string& path, int width, int height, int channel
     if (!stbi_write_png_to_func(appendBytes, &encoded, width, height, channels, first,
                                 flipVertically ? -rowBytes : rowBytes))
         return failed + "PNG encoding failed (out of memory?)";
+    if (!text.empty())
+        if (std::string e = insertPngText(encoded, text); !e.empty()) return failed + e;
     if (std::string e = writeFileAtomically(path, encoded.data(), encoded.size()); !e.empty()) return failed + e;
     return {};
 }

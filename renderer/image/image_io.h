@@ -2,6 +2,8 @@
 // Image files: PNG screenshots (8-bit) and EXR depth dumps (32-bit float), plus readers for tests.
 // Writers return "" on success or an error message naming the file; they never create folders.
 // GL reads pixels bottom row first: pass flipVertically = true to store glReadPixels output top row first.
+#include "image/png_text.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -10,8 +12,9 @@
 namespace shadowlab {
 
 // channels: 1 (gray), 2 (gray+alpha), 3 (RGB) or 4 (RGBA); pixels: width*height*channels bytes, rows packed.
+// `text`: iTXt chunks to carry (png_text.h), e.g. the preset a screenshot was rendered with.
 std::string writePng(const std::string& path, int width, int height, int channels, const std::uint8_t* pixels,
-                     bool flipVertically);
+                     bool flipVertically, const PngText& text = {});
 
 // One FLOAT channel named "Z" (OpenEXR's standard name for depth), ZIP compressed (lossless), so the values read
 // back bit-exact. depth: width*height floats, rows packed.

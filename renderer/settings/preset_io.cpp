@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kMetaKeys[] = {"schema", "schemaVersion", "name", "description"};
+const char* const kMetaKeys[] = {"schema", "schemaVersion", "name", "description", "scene"};
 
 bool isMetaKey(const std::string& key) {
     return std::find_if(std::begin(kMetaKeys), std::end(kMetaKeys), [&](const char* m) { return key == m; }) !=
@@ -35,12 +35,14 @@ bool isGroup(std::string_view name) {
 }
 
 // Built as ordered_json so a saved file reads in Settings order: schema first, then shadow, light, ...
-ordered_json buildPreset(const Settings& settings, const std::string& name, const std::string& description) {
+ordered_json buildPreset(const Settings& settings, const std::string& name, const std::string& description,
+                         const std::string& scene) {
     ordered_json out = ordered_json::object();
     out["schema"] = kPresetSchema;
     out["schemaVersion"] = kPresetSchemaVersion;
     out["name"] = name;
     out["description"] = description;
+    if (!scene.empty()) out["scene"] = scene;
     for (const SettingsField& f : settingsFields()) {
         ordered_json value = f.get(settings);
         if (f.group().empty())
@@ -119,13 +121,15 @@ std::string parseJson(const std::string& text, json& out) {
 
 }  // namespace
 
-nlohmann::json presetToJson(const Settings& settings, const std::string& name, const std::string& description) {
-    return json(buildPreset(settings, name, description));
+nlohmann::json presetToJson(const Settings& settings, const std::string& name, const std::string& description,
+                            const std::string& scene) {
+    return json(buildPreset(settings, name, description, scene));
 }
 
-std::string presetToText(const Settings& settings, const std::string& name, const std::string& description) {
+std::string presetToText(const Settings& settings, const std::string& name, const std::string& description,
+                         const std::string& scene) {
     std::string out;
-    writeJson(out, buildPreset(settings, name, description), 0);
+    writeJson(out, buildPreset(settings, name, description, scene), 0);
     out += "\n";
     return out;
 }
@@ -164,14 +168,15 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
     }
     if (!r.errors.empty()) return r;
 
-    for (const char* key : {"name", "description"}) {
+    for (const char* key : {"name", "description", "scene"}) {
         auto it = preset.find(key);
         if (it == preset.end()) continue;
         if (!it->is_string()) {
             r.errors.push_back(std::string(key) + ": expected a string, got " + describeJsonValue(*it));
             continue;
         }
-        (std::string_view(key) == "name" ? r.name : r.description) = it->get<std::string>();
+        const std::string_view k = key;
+        (k == "name" ? r.name : k == "description" ? r.description : r.scene) = it->get<std::string>();
     }
 
     // Everything goes into a copy; the caller sees it only if nothing at all went wrong.
@@ -237,6 +242,16 @@ PresetLoadResult loadPresetFile(const std::string& path, const Settings& base) {
         r.errors.push_back(std::move(error));
         return r;
     }
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
+    if (isPng(bytes, text.size())) {
+        std::optional<std::string> embedded = findPngText(bytes, text.size(), kPresetPngKeyword);
+        if (!embedded) {
+            r.errors.push_back(path + ": this PNG carries no ShadowLab preset (no '" + kPresetPngKeyword +
+                               "' text chunk; only screenshots written by ShadowLab have one)");
+            return r;
+        }
+        text = std::move(*embedded);
+    }
     r = presetFromText(text, base);
     // Syntax errors start with line:column and join the path without a space (path:3:7: ...).
     for (auto& e : r.errors) e = path + (!e.empty() && std::isdigit(static_cast<unsigned char>(e[0])) ? ":" : ": ") + e;
@@ -244,14 +259,19 @@ PresetLoadResult loadPresetFile(const std::string& path, const Settings& base) {
     return r;
 }
 
+PngText presetPngText(const Settings& settings, const std::string& scene) {
+    return {{kPresetPngKeyword, presetToText(settings, "screenshot", "", scene)}};
+}
+
 std::string savePresetFile(const std::string& path, const Settings& settings, const std::string& name,
-                           const std::string& description) {
+                           const std::string& description, const std::string& scene) {
     const std::string failed = "cannot save preset '" + path + "'";
     if (path.empty()) return "cannot save preset: no file name given";
     if (auto problems = settings.validate(); !problems.empty())
         return failed + ": the settings are invalid: " + problems.front();
 
-    if (std::string error = writeFileAtomically(path, presetToText(settings, name, description)); !error.empty())
+    if (std::string error = writeFileAtomically(path, presetToText(settings, name, description, scene));
+        !error.empty())
         return failed + ": " + error;
     return {};
 }

@@ -57,6 +57,8 @@ expect_ok tune "$SHADOWLAB" tune --scene builtin:textbook --preset default --set
 grep -q "zero bias" tune.out && pass "tune prints its path" || fail "tune path missing"
 grep -q "^result" tune.out && pass "tune prints the result" || fail "tune result missing: $(tail -5 tune.out)"
 grep -q "wrote tuned.json" tune.out && [ -f tuned.json ] && pass "tune writes the preset" || fail "no tuned.json"
+grep -q '"scene": "builtin:textbook"' tuned.json && pass "the tuned preset records its scene" \
+  || fail "no scene in tuned.json"
 expect_ok measure-tuned "$SHADOWLAB" measure --scene builtin:textbook --preset ./tuned.json --width 320 --height 180 \
   --json tuned-measure.json
 tuned_acne=$(json_number tuned-measure.json acnePercent)

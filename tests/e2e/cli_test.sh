@@ -56,6 +56,15 @@ expect_ok keys "$SHADOWLAB" keys
 grep -q "shadow.slopeScaledDepthBias" keys.out && pass "keys lists the bias" || fail "keys output"
 
 # Bad input: a clear message naming what is wrong, and a non-zero exit.
+# A render carries its preset: rendering from the picture gives the same picture (same settings, scene and camera).
+expect_ok shot "$SHADOWLAB" render --scene builtin:fence --preset soft --set shadow.depthBias=3.5 --view shadow \
+  --width 96 --height 64 --out shot.png
+expect_ok shot-again "$SHADOWLAB" render --scene builtin:fence --preset shot.png --width 96 --height 64 --out again.png
+cmp -s shot.png again.png && pass "render --preset shot.png reproduces shot.png" || fail "shot.png and again.png differ"
+expect_error shot-other-scene "tuned on builtin:fence" "$SHADOWLAB" render --scene builtin:textbook --preset shot.png \
+  --set no.such=1 --out other.png
+expect_error png-without-preset "carries no ShadowLab preset" "$SHADOWLAB" render --preset fence-map.png --out x.png
+
 expect_error bad-key "no.such" "$SHADOWLAB" render --set no.such=1 --out x.png
 expect_error bad-range "shadow.resolution" "$SHADOWLAB" render --set shadow.resolution=0 --out x.png
 expect_error bad-nan "shadow.depthBias" "$SHADOWLAB" render --set shadow.depthBias=nan --out x.png

@@ -1,6 +1,7 @@
 // Presets: JSON shape, partial presets over a base, warnings for unknown keys, all-or-nothing errors, exact float
 // round trips through files, atomic saves that never lose the previous file, and the shipped presets.
 #include "settings/preset_io.h"
+#include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
 
 #include <gtest/gtest.h>
@@ -263,6 +264,66 @@ TEST(Presets, FileRoundTripIsExact) {
     ASSERT_EQ(savePresetFile(path, *r.settings, r.name, r.description), "");
     EXPECT_EQ(readFile(path), text);
     EXPECT_EQ(filesIn(dir.path), std::set<std::string>{"awkward.json"});
+}
+
+TEST(Presets, APresetRecordsItsSceneAndCameraAndOldPresetsLoadUnchanged) {
+    TempFolder dir;
+    const std::string path = dir / "tuned.json";
+    Settings s;
+    s.camera.autoFrame = false;
+    s.camera.position = {1.25, 2.5, -3.0};
+    s.camera.target = {0.5, 0.0, 0.25};
+    s.camera.fovYDeg = 35.0f;
+    ASSERT_EQ(savePresetFile(path, s, "tuned", "", "/data/scenes/Lantern.gltf"), "");
+    EXPECT_EQ(json::parse(readFile(path))["scene"], "/data/scenes/Lantern.gltf");
+    PresetLoadResult r = loadPresetFile(path);
+    ASSERT_TRUE(r.settings) << joinLines(r.errors);
+    EXPECT_TRUE(r.warnings.empty()) << joinLines(r.warnings);
+    EXPECT_EQ(r.scene, "/data/scenes/Lantern.gltf");
+    EXPECT_EQ(r.settings->camera, s.camera);
+
+    // A preset written before presets had a scene: no key, no warning, the same settings as before.
+    json old = presetToJson(s, "old");
+    ASSERT_FALSE(old.contains("scene"));
+    PresetLoadResult o = presetFromJson(old);
+    ASSERT_TRUE(o.settings) << joinLines(o.errors);
+    EXPECT_TRUE(o.warnings.empty()) << joinLines(o.warnings);
+    EXPECT_EQ(o.scene, "");
+    EXPECT_EQ(*o.settings, s);
+
+    // A scene that is not a string is an error naming the key.
+    json bad = presetToJson(s);
+    bad["scene"] = 3;
+    PresetLoadResult b = presetFromJson(bad);
+    EXPECT_FALSE(b.settings);
+    ASSERT_FALSE(b.errors.empty());
+    EXPECT_TRUE(contains(b.errors.front(), "scene: expected a string")) << b.errors.front();
+}
+
+TEST(Presets, OnAnotherSceneTheCameraAutoFramesAndSaysSo) {
+    Settings s;
+    s.camera.autoFrame = false;
+    s.camera.position = {1.0, 2.0, 3.0};
+
+    // The scene it was tuned on (or one that records none): the camera comes back as saved, nothing to say.
+    for (const std::string& recorded : {std::string("builtin:textbook"), std::string()}) {
+        Settings same = s;
+        EXPECT_EQ(adaptPresetToScene(same, recorded, "builtin:textbook"), "");
+        EXPECT_EQ(same, s);
+    }
+    // Another scene: auto-framed, and the note names both scenes.
+    Settings other = s;
+    const std::string note = adaptPresetToScene(other, "builtin:textbook", "builtin:contact");
+    EXPECT_TRUE(other.camera.autoFrame);
+    EXPECT_EQ(other.camera.fovYDeg, s.camera.fovYDeg);
+    EXPECT_TRUE(contains(note, "builtin:textbook") && contains(note, "builtin:contact")) << note;
+    EXPECT_TRUE(contains(note, "auto-framed")) << note;
+
+    // Two spellings of one file are the same scene.
+    TempFolder dir;
+    writeFile(dir / "a.gltf", "{}");
+    EXPECT_TRUE(samePresetScene(dir / "a.gltf", (dir.path / "." / "a.gltf").string()));
+    EXPECT_FALSE(samePresetScene(dir / "a.gltf", dir / "b.gltf"));
 }
 
 TEST(Presets, SaveKeepsPermissionsOfTheReplacedFile) {

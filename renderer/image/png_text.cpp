@@ -1,0 +1,105 @@
+#include "image/png_text.h"
+
+#include <array>
+#include <cstring>
+
+namespace shadowlab {
+
+namespace {
+
+// PNG's CRC-32 (ISO 3309, polynomial 0xedb88320) over the chunk type and data.
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size, std::uint32_t crc = 0) {
+    static const std::array<std::uint32_t, 256> table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t n = 0; n < 256; ++n) {
+            std::uint32_t c = n;
+            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xedb88320u ^ (c >> 1) : c >> 1;
+            t[n] = c;
+        }
+        return t;
+    }();
+    crc = ~crc;
+    for (std::size_t i = 0; i < size; ++i) crc = table[(crc ^ data[i]) & 0xffu] ^ (crc >> 8);
+    return ~crc;
+}
+
+std::uint32_t readBE32(const std::uint8_t* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | std::uint32_t(p[3]);
+}
+
+void appendBE32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(std::uint8_t(v >> shift));
+}
+
+std::vector<std::uint8_t> chunk(const char type[4], const std::vector<std::uint8_t>& data) {
+    std::vector<std::uint8_t> out;
+    appendBE32(out, std::uint32_t(data.size()));
+    out.insert(out.end(), type, type + 4);
+    out.insert(out.end(), data.begin(), data.end());
+    appendBE32(out, crc32(out.data() + 4, data.size() + 4));
+    return out;
+}
+
+bool validKeyword(const std::string& k) {
+    if (k.empty() || k.size() > 79 || k.front() == ' ' || k.back() == ' ') return false;
+    for (unsigned char c : k)
+        if (!((c >= 32 && c <= 126) || c >= 161)) return false;
+    return true;
+}
+
+}  // namespace
+
+bool isPng(const std::uint8_t* bytes, std::size_t size) {
+    return size >= sizeof kPngSignature && std::memcmp(bytes, kPngSignature, sizeof kPngSignature) == 0;
+}
+
+std::string insertPngText(std::vector<std::uint8_t>& png, const PngText& entries) {
+    // Signature, then IHDR: length 13, "IHDR", 13 bytes, CRC.
+    constexpr std::size_t kAfterIhdr = 8 + 4 + 4 + 13 + 4;
+    if (!isPng(png.data(), png.size()) || png.size() < kAfterIhdr || std::memcmp(png.data() + 12, "IHDR", 4) != 0)
+        return "not a PNG with an IHDR chunk first";
+    std::vector<std::uint8_t> chunks;
+    for (const auto& [keyword, text] : entries) {
+        if (!validKeyword(keyword)) return "'" + keyword + "' is not a PNG text keyword (1-79 printable bytes)";
+        // iTXt: keyword NUL, compression flag 0, method 0, language tag "" NUL, translated keyword "" NUL, text.
+        std::vector<std::uint8_t> data(keyword.begin(), keyword.end());
+        data.insert(data.end(), {0, 0, 0, 0, 0});
+        data.insert(data.end(), text.begin(), text.end());
+        const std::vector<std::uint8_t> c = chunk("iTXt", data);
+        chunks.insert(chunks.end(), c.begin(), c.end());
+    }
+    png.insert(png.begin() + static_cast<long>(kAfterIhdr), chunks.begin(), chunks.end());
+    return {};
+}
+
+std::optional<std::string> findPngText(const std::uint8_t* bytes, std::size_t size, const std::string& keyword) {
+    if (!isPng(bytes, size)) return std::nullopt;
+    std::size_t at = sizeof kPngSignature;
+    while (at + 12 <= size) {
+        const std::uint32_t length = readBE32(bytes + at);
+        if (length > size - at - 12) return std::nullopt;  // truncated or corrupt: stop, never read past the end
+        const std::uint8_t* type = bytes + at + 4;
+        const std::uint8_t* data = type + 4;
+        const bool crcOk = crc32(type, std::size_t(length) + 4) == readBE32(data + length);
+        const bool tEXt = std::memcmp(type, "tEXt", 4) == 0, iTXt = std::memcmp(type, "iTXt", 4) == 0;
+        if (crcOk && (tEXt || iTXt) && length > keyword.size() && std::memcmp(data, keyword.data(), keyword.size()) == 0 &&
+            data[keyword.size()] == 0) {
+            std::size_t p = keyword.size() + 1;
+            if (tEXt) return std::string(reinterpret_cast<const char*>(data + p), length - p);
+            // iTXt: compression flag, method, language tag NUL, translated keyword NUL, then the text.
+            if (p + 2 <= length && data[p] == 0) {
+                p += 2;
+                for (int field = 0; field < 2 && p < length; ++field) {
+                    while (p < length && data[p] != 0) ++p;
+                    ++p;
+                }
+                if (p <= length) return std::string(reinterpret_cast<const char*>(data + p), length - p);
+            }
+        }
+        if (std::memcmp(type, "IEND", 4) == 0) break;
+        at += std::size_t(length) + 12;
+    }
+    return std::nullopt;
+}
+
+}  // namespace shadowlab
