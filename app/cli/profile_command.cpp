@@ -18,7 +18,7 @@ int runProfile(const ProfileOptions& options) {
     std::string error;
     if (!parsePixel(options.from, from.x, from.y, error, "--from") || !parsePixel(options.to, to.x, to.y, error, "--to"))
         return fail(error);
-    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides);
+    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     for (const auto& [name, text, point] : {std::tuple{"--from", options.from, from}, std::tuple{"--to", options.to, to}})
