@@ -15,6 +15,12 @@ int fail(const std::string& message) {
     return 1;
 }
 
+std::string checkPixelInView(const std::string& option, const std::string& text, int x, int y, int width, int height) {
+    if (x >= 0 && y >= 0 && x < width && y < height) return "";
+    return option + " " + text + " is outside the " + std::to_string(width) + "x" + std::to_string(height) +
+           " view (x in [0, " + std::to_string(width - 1) + "], y in [0, " + std::to_string(height - 1) + "])";
+}
+
 std::string checkViewSize(int width, int height) {
     if (width >= 1 && height >= 1 && width <= 16384 && height <= 16384) return "";
     return "--width/--height must be in [1, 16384], got " + std::to_string(width) + "x" + std::to_string(height);

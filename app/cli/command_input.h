@@ -12,6 +12,8 @@ int fail(const std::string& message);
 
 // "" when --width/--height can be rendered, else why not.
 std::string checkViewSize(int width, int height);
+// "" when pixel (x, y) lies in a width x height view, else why, naming the option and its text as given.
+std::string checkPixelInView(const std::string& option, const std::string& text, int x, int y, int width, int height);
 
 // Loads SCENE (a path or builtin:NAME) and prints the loader's warnings to stderr; on failure .error says why.
 SceneLoadResult loadSceneForCommand(const std::string& spec);

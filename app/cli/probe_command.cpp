@@ -34,10 +34,9 @@ int runProbe(const ProbeOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    if (x < 0 || y < 0 || x >= options.width || y >= options.height)
-        return fail("--pixel " + options.pixel + " is outside the " + std::to_string(options.width) + "x" +
-                    std::to_string(options.height) + " view (x in [0, " + std::to_string(options.width - 1) +
-                    "], y in [0, " + std::to_string(options.height - 1) + "])");
+    if (std::string error = checkPixelInView("--pixel", options.pixel, x, y, options.width, options.height);
+        !error.empty())
+        return fail(error);
     if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);

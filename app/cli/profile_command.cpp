@@ -22,10 +22,8 @@ int runProfile(const ProfileOptions& options) {
     if (!settings) return 2;
     if (error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     for (const auto& [name, text, point] : {std::tuple{"--from", options.from, from}, std::tuple{"--to", options.to, to}})
-        if (point.x < 0 || point.y < 0 || point.x >= options.width || point.y >= options.height)
-            return fail(std::string(name) + " " + text + " is outside the " + std::to_string(options.width) + "x" +
-                        std::to_string(options.height) + " view (x in [0, " + std::to_string(options.width - 1) +
-                        "], y in [0, " + std::to_string(options.height - 1) + "])");
+        if (error = checkPixelInView(name, text, point.x, point.y, options.width, options.height); !error.empty())
+            return fail(error);
     if (options.plotWidth < 200 || options.plotHeight < 120 || options.plotWidth > 8192 || options.plotHeight > 8192)
         return fail("--plot-width/--plot-height " + std::to_string(options.plotWidth) + "x" +
                     std::to_string(options.plotHeight) + ": expected 200..8192 x 120..8192");
