@@ -131,8 +131,12 @@ int main(int argc, char** argv) {
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {
-        for (const SettingsField& field : settingsFields())
-            std::cout << field.key << "  " << field.allowed << "  " << field.description << "\n";
+        // Light fields once, as "lights.#.<key>" (# = the light's index, 0..kMaxLights-1).
+        for (const SettingsField* field : settingsKeyListing())
+            std::cout << field->pattern() << "  " << field->allowed << "  " << field->description << "\n";
+        std::cout << "\nSchema-1 keys, still accepted:\n";
+        for (const SettingsField& alias : schema1Aliases())
+            std::cout << alias.key << "  = " << alias.aliasOf << "\n";
         return 0;
     }
     // No subcommand: the editor on the built-in default scene.

@@ -93,7 +93,7 @@ int runBench(const BenchOptions& options) {
             }
             for (const std::string& filter : options.filters) {
                 Settings settings = *base;
-                settings.shadow.resolution = resolution;
+                settings.lights[0].shadow.resolution = resolution;
                 applyFilter(filter, settings);  // checked above
                 std::vector<double> shadowMs, mainMs;
                 double wallTotal = 0.0;

@@ -55,7 +55,7 @@ int runTune(const TuneOptions& options) {
                      [&](const TuneStep& step) { std::cout << stepLine(step) << std::endl; });
         if (!result.ok) return fail(result.error);
 
-        const ShadowMapSettings& best = result.closest.shadow;
+        const ShadowMapSettings& best = result.closest.lights[0].shadow;
         const std::string cull = cullModeName(best.cullMode);
         if (result.reachedLimit) {
             std::cout << "\nresult: DepthBias " << best.depthBias << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias

@@ -29,11 +29,9 @@ std::string staleReason(const AccuracyViewKey& measured, const AccuracyViewKey& 
     auto add = [&](const std::string& part) { reason += (reason.empty() ? "" : "; ") + part; };
     std::string keys;
     int changedKeys = 0;
-    for (const SettingsField& field : settingsFields()) {
-        if (field.key == "view") continue;
-        if (field.get(measured.settings) != field.get(now.settings)) {
-            if (++changedKeys <= 3) keys += (keys.empty() ? "" : ", ") + field.key;
-        }
+    for (const std::string& key : diffSettings(measured.settings, now.settings).keys) {
+        if (key == "view") continue;
+        if (++changedKeys <= 3) keys += (keys.empty() ? "" : ", ") + key;
     }
     if (changedKeys > 3) keys += " and " + std::to_string(changedKeys - 3) + " more";
     if (!keys.empty()) add(keys + " changed");

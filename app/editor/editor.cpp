@@ -156,11 +156,11 @@ Settings Editor::effectiveSettings() const {
         // The preview turns the light around the vertical axis through the scene's centre.
         const glm::dmat4 turn =
             glm::rotate(glm::dmat4(1.0), glm::radians(state_.animatedAzimuthDeg), glm::dvec3(0.0, 1.0, 0.0));
-        s.light.direction = glm::vec3(turn * glm::dvec4(glm::dvec3(s.light.direction), 0.0));
+        s.lights[0].direction = glm::vec3(turn * glm::dvec4(glm::dvec3(s.lights[0].direction), 0.0));
         const glm::dvec3 center = state_.scene && !state_.scene->bounds.empty
                                       ? glm::dvec3(state_.scene->bounds.center())
                                       : glm::dvec3(0.0);
-        s.light.position = glm::vec3(center + glm::dvec3(turn * glm::dvec4(glm::dvec3(s.light.position) - center, 0.0)));
+        s.lights[0].position = glm::vec3(center + glm::dvec3(turn * glm::dvec4(glm::dvec3(s.lights[0].position) - center, 0.0)));
     }
     return s;
 }
@@ -202,14 +202,14 @@ void Editor::renderViewport() {
     for (const std::string& warning : stats.warnings)
         if (!state_.lastMessage() || state_.lastMessage()->text != warning) state_.say(warning, true);
     // A map the GPU refused (too big, out of memory): the settings go back to the map still in use.
-    if (stats.shadowMapResolution != state_.settings.shadow.resolution ||
-        stats.shadowMapFormat != state_.settings.shadow.format) {
+    if (stats.shadowMapResolution != state_.settings.lights[0].shadow.resolution ||
+        stats.shadowMapFormat != state_.settings.lights[0].shadow.format) {
         state_.fieldErrors["shadow.resolution"] =
             stats.warnings.empty() ? "the GPU refused this shadow map; the previous one is kept" : stats.warnings.front();
-        state_.settings.shadow.resolution = stats.shadowMapResolution;
-        state_.settings.shadow.format = stats.shadowMapFormat;
-        key.settings.shadow.resolution = stats.shadowMapResolution;
-        key.settings.shadow.format = stats.shadowMapFormat;
+        state_.settings.lights[0].shadow.resolution = stats.shadowMapResolution;
+        state_.settings.lights[0].shadow.format = stats.shadowMapFormat;
+        key.settings.lights[0].shadow.resolution = stats.shadowMapResolution;
+        key.settings.lights[0].shadow.format = stats.shadowMapFormat;
     }
     if (state_.showLightFrustum) {
         if (std::string error = frustum_->draw(stats, target_); !error.empty())

@@ -101,11 +101,11 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
 
     if (result.tune) {
         const TuneResult& tune = *result.tune;
-        const ShadowMapSettings& best = tune.best.shadow;
+        const ShadowMapSettings& best = tune.best.lights[0].shadow;
         // A result goes into the edited settings through the key table, like a slider would (the preset shows
         // its unsaved marker); the numbers then describe exactly these settings. No result within the acne limit:
         // nothing is applied, and the settings keep what the user had.
-        const ShadowMapSettings& closest = tune.closest.shadow;
+        const ShadowMapSettings& closest = tune.closest.lights[0].shadow;
         bool applied = false;
         if (tune.reachedLimit) {
             applied = state_.edit("shadow.depthBias", best.depthBias) &&

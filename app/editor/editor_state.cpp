@@ -19,13 +19,13 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
     if (error.empty()) {
         fieldErrors.erase(std::string(key));
         if (key == "shadow.depthBias" || key == "shadow.depthFormat") undo.reset();  // its numbers are gone
-        if (key == "shadow.depthFormat" && settings.shadow.format != before.shadow.format) {
+        if (key == "shadow.depthFormat" && settings.lights[0].shadow.format != before.lights[0].shadow.format) {
             // The receivers' depth decides D32F's step; the newest frame knows it.
             const std::optional<double> receiverDepth =
                 haveStats && stats.bias.valid ? std::optional(stats.bias.receiverDepthMedian) : std::nullopt;
-            const DepthFormatChange change = changeDepthFormat(before.shadow, settings.shadow.format, receiverDepth);
+            const DepthFormatChange change = changeDepthFormat(before.lights[0].shadow, settings.lights[0].shadow.format, receiverDepth);
             if (!change.note.empty()) {
-                settings.shadow = change.shadow;
+                settings.lights[0].shadow = change.shadow;
                 undo = UndoStep{before, change.note};
                 say(change.note);
             }
@@ -40,8 +40,8 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
 void EditorState::undoLastStep() {
     if (!undo) return;
     // Only what the step changed: edits made since (slope, filter, ...) stay.
-    settings.shadow.format = undo->before.shadow.format;
-    settings.shadow.depthBias = undo->before.shadow.depthBias;
+    settings.lights[0].shadow.format = undo->before.lights[0].shadow.format;
+    settings.lights[0].shadow.depthBias = undo->before.lights[0].shadow.depthBias;
     const std::string note = undo->note;
     undo.reset();
     say("Undone: " + note);

@@ -280,8 +280,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     causeContext.bvh = m.bvh.get();
     causeContext.light = light;
     causeContext.lightSpace = stats.light;
-    causeContext.cullMode = settings.shadow.cullMode;
-    causeContext.depthClamp = settings.projection.depthClamp;
+    causeContext.cullMode = settings.lights[0].shadow.cullMode;
+    causeContext.depthClamp = settings.lights[0].projection.depthClamp;
     causeContext.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
     std::vector<MismatchCause> causes(count, MismatchCause::None);
     const int chunks = int((mismatched.size() + 63) / 64);
@@ -326,7 +326,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     for (OverlayKind kind : {OverlayKind::Error, OverlayKind::Cause})
         (kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba) =
             makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
-                        boundary, settings.light.ambient);
+                        boundary, settings.ambient);
     report.pixelClass = m.visibility.classes;
     report.pixelShadow = shadowFactor;
     report.pixelCause = metrics.causes;

@@ -42,7 +42,7 @@ struct Family {
 
 std::string cullModeName(CullMode mode) {
     Settings s;
-    s.shadow.cullMode = mode;
+    s.lights[0].shadow.cullMode = mode;
     return findSettingsField("shadow.cullMode")->get(s).get<std::string>();
 }
 
@@ -81,7 +81,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
 
     // DepthBias units per texel, from the light space the renderer will build for these settings.
     Settings lit = start;
-    lit.light = effectiveLight(start, scene);
+    lit.lights[0] = effectiveLight(start, scene);
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
     std::string lightError;
     const std::optional<LightSpace> lightSpace = buildLightSpace(lit, scene.bounds, origin, lightError);
@@ -91,7 +91,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     }
     // At the receivers' actual depths: D32F's step follows the depth's exponent.
     const double unitTexels =
-        depthBiasUnitTexels(*lightSpace, start.shadow.format, receiverDepths(scene, *lightSpace, origin));
+        depthBiasUnitTexels(*lightSpace, start.lights[0].shadow.format, receiverDepths(scene, *lightSpace, origin));
     if (!(unitTexels > 0.0)) {
         result.error = "cannot relate DepthBias to texels for this light";
         return finish();
@@ -99,10 +99,10 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
 
     auto settingsFor = [&](const Candidate& c, CullMode cull) {
         Settings s = start;
-        s.shadow.cullMode = cull;
-        s.shadow.depthBias = float(std::min(c.constantTexels / unitTexels, kMaxDepthBiasUnits));
-        s.shadow.slopeScaledDepthBias = float(std::min(c.slope, kMaxSlope));
-        s.shadow.normalOffset = float(std::min(c.normal, kMaxNormalTexels));
+        s.lights[0].shadow.cullMode = cull;
+        s.lights[0].shadow.depthBias = float(std::min(c.constantTexels / unitTexels, kMaxDepthBiasUnits));
+        s.lights[0].shadow.slopeScaledDepthBias = float(std::min(c.slope, kMaxSlope));
+        s.lights[0].shadow.normalOffset = float(std::min(c.normal, kMaxNormalTexels));
         return s;
     };
 
@@ -140,10 +140,10 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         TuneStep step;
         step.index = int(result.path.size()) + 1;
         step.phase = phase;
-        step.depthBias = s.shadow.depthBias;
-        step.slopeScaledDepthBias = s.shadow.slopeScaledDepthBias;
-        step.normalOffset = s.shadow.normalOffset;
-        step.cullMode = s.shadow.cullMode;
+        step.depthBias = s.lights[0].shadow.depthBias;
+        step.slopeScaledDepthBias = s.lights[0].shadow.slopeScaledDepthBias;
+        step.normalOffset = s.lights[0].shadow.normalOffset;
+        step.cullMode = s.lights[0].shadow.cullMode;
         step.biasTexels = magnitude;
         step.acnePercent = report.acnePercent;
         step.leakPercent = report.leakPercent;
@@ -168,9 +168,9 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     };
 
     // 1. The given preset, and no bias at all.
-    const Candidate given{double(start.shadow.depthBias) * unitTexels, start.shadow.slopeScaledDepthBias,
-                          start.shadow.normalOffset};
-    const CullMode startCull = start.shadow.cullMode;
+    const Candidate given{double(start.lights[0].shadow.depthBias) * unitTexels, start.lights[0].shadow.slopeScaledDepthBias,
+                          start.lights[0].shadow.normalOffset};
+    const CullMode startCull = start.lights[0].shadow.cullMode;
     measure("start (the given settings)", start, given.magnitude());
     std::size_t culled = lastCulled;
     const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}, startCull), 0.0);

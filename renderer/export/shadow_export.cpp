@@ -20,22 +20,22 @@ const char* exportFormatChoices() { return "d3d12|d3d11|vulkan|gl|json"; }
 ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light, const std::string& sceneLabel) {
     ShadowExport e;
     e.sceneLabel = sceneLabel;
-    e.shadow = settings.shadow;
+    e.shadow = settings.lights[0].shadow;
     e.sampler = settings.sampler;
     e.filter = settings.filter;
-    e.depthClamp = settings.projection.depthClamp;
+    e.depthClamp = settings.lights[0].projection.depthClamp;
     e.perspective = light.perspective;
-    switch (settings.shadow.format) {
+    switch (settings.lights[0].shadow.format) {
         case DepthFormat::D16: e.depthBits = 16; e.floatDepth = false; break;
         case DepthFormat::D24: e.depthBits = 24; e.floatDepth = false; break;
         case DepthFormat::D32F: e.depthBits = 32; e.floatDepth = true; break;
     }
     // UNORM: r = 1 / (2^n - 1). Float: r = 2^(exponent(max depth of the primitive) - 23), 2^-24 for depths in [0.5, 1).
-    e.depthStep = depthStepAt(settings.shadow.format, 0.75);  // D32F: the step for depths in [0.5, 1)
-    e.d3dDepthBias = int(std::lround(double(settings.shadow.depthBias)));
-    e.d3dDepthBiasError = double(e.d3dDepthBias) - double(settings.shadow.depthBias);
+    e.depthStep = depthStepAt(settings.lights[0].shadow.format, 0.75);  // D32F: the step for depths in [0.5, 1)
+    e.d3dDepthBias = int(std::lround(double(settings.lights[0].shadow.depthBias)));
+    e.d3dDepthBiasError = double(e.d3dDepthBias) - double(settings.lights[0].shadow.depthBias);
     e.texelWorldSize = light.texelWorldSize;
-    e.normalOffsetWorld = double(settings.shadow.normalOffset) * light.texelWorldSize;
+    e.normalOffsetWorld = double(settings.lights[0].shadow.normalOffset) * light.texelWorldSize;
     e.nearPlane = light.nearPlane;
     e.farPlane = light.farPlane;
     e.linearCompare = settings.filter.kind == FilterKind::Hardware2x2 || settings.filter.kind == FilterKind::Poisson;
@@ -49,13 +49,13 @@ std::optional<ShadowExport> exportForScene(const Settings& requested, const Scen
         return std::nullopt;
     }
     Settings settings = requested;
-    settings.light = effectiveLight(requested, scene);
+    settings.lights[0] = effectiveLight(requested, scene);
     // The renderer's origin (the scene's centre); the light's sizes do not depend on it.
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
     const std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, origin, error);
     if (!light) return std::nullopt;
     ShadowExport e = makeShadowExport(settings, *light, sceneLabel);
-    e.bias = biasReport(settings.shadow, settings.shadow.format, *light, receiverDepths(scene, *light, origin));
+    e.bias = biasReport(settings.lights[0].shadow, settings.lights[0].shadow.format, *light, receiverDepths(scene, *light, origin));
     return e;
 }
 

@@ -101,7 +101,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     // Settings with the scene's light applied (light.useSceneLight); normal offset needs no separate copy.
     Settings settings = requested;
-    settings.light = effectiveLight(requested, scene);
+    settings.lights[0] = effectiveLight(requested, scene);
     stats.lightSource = describeLightSource(requested, scene);
 
     const std::size_t fingerprint = sceneFingerprint(scene);
@@ -115,7 +115,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.sceneTriangles = scene.triangleCount();
 
     // A resolution the GPU refuses keeps the previous map (and says so); with no map at all there is no frame.
-    const std::string mapError = shadowMap_.ensure(settings.shadow.resolution, settings.shadow.format,
+    const std::string mapError = shadowMap_.ensure(settings.lights[0].shadow.resolution, settings.lights[0].shadow.format,
                                                    info_.maxTextureSize);
     if (!mapError.empty()) {
         if (!shadowMap_.valid()) {
@@ -123,8 +123,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             return stats;
         }
         stats.warnings.push_back(mapError);
-        settings.shadow.resolution = shadowMap_.resolution();
-        settings.shadow.format = shadowMap_.format();
+        settings.lights[0].shadow.resolution = shadowMap_.resolution();
+        settings.lights[0].shadow.format = shadowMap_.format();
     }
     stats.shadowMapReallocated = shadowMap_.generation() != mapGenerationRendered_;
 
@@ -143,17 +143,17 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         receivers_->lightViewProjection != light->viewProjection() || receivers_->resolution != light->resolution)
         receivers_ = Receivers{fingerprint, light->viewProjection(), light->resolution,
                                receiverDepths(scene, *light, stats.renderOrigin)};
-    stats.bias = biasReport(settings.shadow, shadowMap_.format(), *light, receivers_->depths);
-    if (settings.shadow.depthBiasClamp != 0.0f && !shadowPass_->hasPolygonOffsetClamp())
+    stats.bias = biasReport(settings.lights[0].shadow, shadowMap_.format(), *light, receivers_->depths);
+    if (settings.lights[0].shadow.depthBiasClamp != 0.0f && !shadowPass_->hasPolygonOffsetClamp())
         stats.warnings.push_back("shadow.depthBiasClamp: glPolygonOffsetClamp is not available; the clamp is ignored");
 
-    const ShadowInputs inputs{fingerprint, light->viewProjection(), settings.shadow,
-                              settings.projection.depthClamp};
+    const ShadowInputs inputs{fingerprint, light->viewProjection(), settings.lights[0].shadow,
+                              settings.lights[0].projection.depthClamp};
     const std::string reason = shadowPassReason(inputs, stats.shadowMapReallocated);
     if (!reason.empty()) {
         timer_.begin(TimedPass::Shadow);
         const ShadowPassCounts counts =
-            shadowPass_->run(*gpuScene_, *light, settings.shadow, settings.projection.depthClamp, shadowMap_);
+            shadowPass_->run(*gpuScene_, *light, settings.lights[0].shadow, settings.lights[0].projection.depthClamp, shadowMap_);
         timer_.end(TimedPass::Shadow);
         stats.shadowPass = {true, reason, timer_.latestMilliseconds(TimedPass::Shadow)};
         stats.castersDrawn = counts.castersDrawn;

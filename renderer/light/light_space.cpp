@@ -56,8 +56,8 @@ glm::dmat3 lightBasis(const glm::dvec3& directionIn) {
 }
 
 LightSettings effectiveLight(const Settings& settings, const Scene& scene) {
-    LightSettings light = settings.light;
-    if (!settings.light.useSceneLight) return light;
+    LightSettings light = settings.lights[0];
+    if (!settings.useSceneLights) return light;
     for (const SceneLight& sl : scene.lights) {
         if (sl.type == SceneLightType::Point) continue;  // point lights need cube maps: not supported yet
         light.type = sl.type == SceneLightType::Spot ? LightType::Spot : LightType::Directional;
@@ -79,9 +79,9 @@ std::string describeLightSource(const Settings& settings, const Scene& scene) {
     }
     const bool hasPointLights = usable < int(scene.lights.size());
     const std::string pointNote = hasPointLights ? "; its point lights are not supported (they need cube maps)" : "";
-    if (settings.light.useSceneLight && first)
+    if (settings.useSceneLights && first)
         return "the scene's light '" + (first->name.empty() ? std::string("unnamed") : first->name) + "'" + pointNote;
-    if (settings.light.useSceneLight) return "the settings' light (the scene has no directional or spot light" +
+    if (settings.useSceneLights) return "the settings' light (the scene has no directional or spot light" +
                                              pointNote + ")";
     if (usable > 0)
         return "the settings' light (the scene has " + std::to_string(usable) +
@@ -105,8 +105,8 @@ bool allFinite(const glm::mat4& m) {
 
 std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
                                           std::string& error) {
-    const LightSettings& light = settings.light;
-    const ProjectionSettings& proj = settings.projection;
+    const LightSettings& light = settings.lights[0];
+    const ProjectionSettings& proj = settings.lights[0].projection;
     const glm::dvec3 dir(light.direction);
     const double dirLength = glm::length(dir);
     if (!std::isfinite(dirLength) || dirLength < 1e-12) {
@@ -115,7 +115,7 @@ std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds
     }
     LightSpace ls;
     ls.direction = dir / dirLength;
-    ls.resolution = std::max(settings.shadow.resolution, 1);
+    ls.resolution = std::max(settings.lights[0].shadow.resolution, 1);
     const glm::dmat3 basis = lightBasis(ls.direction);
 
     // The scene's bounding sphere, relative to the render origin (empty scenes get a unit sphere).

@@ -165,7 +165,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     const double texelWorld = light.perspective
                                   ? 2.0 * light.tanHalfFov / light.resolution * glm::dot(p - light.position, light.direction)
                                   : light.texelWorldSize;
-    const double offsetWorld = settings_.shadow.normalOffset > 0.0f ? settings_.shadow.normalOffset * texelWorld : 0.0;
+    const double offsetWorld = settings_.lights[0].shadow.normalOffset > 0.0f ? settings_.lights[0].shadow.normalOffset * texelWorld : 0.0;
     const glm::dvec3 lookup = p + r.shadingNormal * offsetWorld;
     r.lookupWorld = lookup + origin;
     r.lightView = glm::dvec3(light.view * glm::dvec4(lookup, 1.0));
@@ -288,7 +288,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     }
     const double slope = windowDepthSlope(window[0], window[1], window[2]);
     const double maxDepth = std::max({window[0].z, window[1].z, window[2].z});
-    const ShadowMapSettings& shadow = settings_.shadow;
+    const ShadowMapSettings& shadow = settings_.lights[0].shadow;
     const double atDepth = std::clamp(r.receiverDepth, 0.0, 1.0);
     r.bias.depthSlope = std::max(slope, 0.0);
     r.bias.step = depthStepAt(r.format, maxDepth);

@@ -29,12 +29,7 @@ bool isMetaKey(const std::string& key) {
            std::end(kMetaKeys);
 }
 
-bool isGroup(std::string_view name) {
-    return !name.empty() && std::any_of(settingsFields().begin(), settingsFields().end(),
-                                        [&](const SettingsField& f) { return f.group() == name; });
-}
-
-// Built as ordered_json so a saved file reads in Settings order: schema first, then shadow, light, ...
+// Built as ordered_json so a saved file reads in Settings order: schema first, then ambient, lights, sampler, ...
 ordered_json buildPreset(const Settings& settings, const std::string& name, const std::string& description,
                          const std::string& scene) {
     ordered_json out = ordered_json::object();
@@ -43,13 +38,24 @@ ordered_json buildPreset(const Settings& settings, const std::string& name, cons
     out["name"] = name;
     out["description"] = description;
     if (!scene.empty()) out["scene"] = scene;
-    for (const SettingsField& f : settingsFields()) {
-        ordered_json value = f.get(settings);
+    auto put = [](ordered_json& object, const SettingsField& f, ordered_json value) {
         if (f.group().empty())
-            out[std::string(f.name())] = std::move(value);
+            object[std::string(f.name())] = std::move(value);
         else
-            out[std::string(f.group())][std::string(f.name())] = std::move(value);
+            object[std::string(f.group())][std::string(f.name())] = std::move(value);
+    };
+    const auto& globals = globalSettingsFields();
+    // ambient and useSceneLights first, then the lights, then the rest (sampler, filter, camera, view).
+    auto global = globals.begin();
+    for (; global != globals.end() && global->group().empty() && global->key != "view"; ++global)
+        put(out, *global, global->get(settings));
+    out["lights"] = ordered_json::array();
+    for (std::size_t i = 0; i < settings.lights.size() && i < kMaxLights; ++i) {
+        ordered_json light = ordered_json::object();
+        for (const SettingsField& f : lightSettingsFields(i)) put(light, f, f.get(settings));
+        out["lights"].push_back(std::move(light));
     }
+    for (; global != globals.end(); ++global) put(out, *global, global->get(settings));
     return out;
 }
 
@@ -72,6 +78,15 @@ void writeJson(std::string& out, const ordered_json& v, int indent) {
                })) {
         out += "[";
         for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + scalar(v[i]);
+        out += "]";
+    } else if (v.is_array() && !v.empty()) {  // the lights: one object after another, indented like the rest
+        out += "[\n";
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            out.append(static_cast<std::size_t>(indent + 2), ' ');
+            writeJson(out, v[i], indent + 2);
+            out += i + 1 < v.size() ? ",\n" : "\n";
+        }
+        out.append(static_cast<std::size_t>(indent), ' ');
         out += "]";
     } else if (v.is_structured()) {
         out += v.dump(indent + 2, ' ', false, json::error_handler_t::replace);
@@ -134,6 +149,98 @@ std::string presetToText(const Settings& settings, const std::string& name, cons
     return out;
 }
 
+namespace {
+
+void unknownKey(PresetLoadResult& r, const std::string& key) {
+    std::string warning = "unknown key '" + describeKey(key) + "' ignored";
+    if (auto close = similarSettingsKeys(key); !close.empty()) warning += " (did you mean " + close.front() + "?)";
+    r.warnings.push_back(std::move(warning));
+}
+
+// Is some key "<prefix>..."? ("shadow." is a group, "lights.2.projection." too.)
+bool isGroupPrefix(const std::string& prefix) {
+    auto under = [&](const SettingsField& f) { return f.key.starts_with(prefix); };
+    auto anyUnder = [&](const std::vector<SettingsField>& fields) {
+        return std::any_of(fields.begin(), fields.end(), under);
+    };
+    if (prefix.starts_with("lights.")) {
+        const std::size_t dot = prefix.find('.', 7);
+        const SettingsField* type =
+            dot == std::string::npos ? nullptr : findSettingsField(prefix.substr(0, dot + 1) + "type");
+        return type && anyUnder(lightSettingsFields(std::size_t(type->light)));
+    }
+    return anyUnder(globalSettingsFields()) || anyUnder(schema1Aliases());
+}
+
+void setField(const SettingsField& field, Settings& settings, const json& value, PresetLoadResult& r) {
+    if (std::string error = field.set(settings, value); !error.empty()) r.errors.push_back(std::move(error));
+}
+
+// The members of `object` as settings under `prefix` ("" at the top, "lights.1." in a light): a member is a key
+// ("view": "lit") or a group of keys ("shadow": {"depthBias": 2}).
+void applyMembers(const json& object, const std::string& prefix, Settings& settings, PresetLoadResult& r) {
+    for (const auto& [member, value] : object.items()) {
+        if (prefix.empty() && (isMetaKey(member) || member == "lights")) continue;
+        const std::string key = prefix + member;
+        const SettingsField* field = findSettingsField(key);
+        if (field && member.find('.') == std::string::npos) {
+            setField(*field, settings, value, r);
+        } else if (member.find('.') == std::string::npos && isGroupPrefix(key + ".")) {
+            if (!value.is_object()) {
+                r.errors.push_back(key + ": expected an object of " + key + ".* settings, got " +
+                                   describeJsonValue(value));
+                continue;
+            }
+            for (const auto& [name, memberValue] : value.items()) {
+                if (const SettingsField* f = findSettingsField(key + "." + name))
+                    setField(*f, settings, memberValue, r);
+                else
+                    unknownKey(r, key + "." + name);
+            }
+        } else if (field) {
+            // A dotted key: easy to write by hand, but presets nest them.
+            const std::size_t dot = member.find('.');
+            r.warnings.push_back("unknown key '" + key + "' ignored (write it nested: \"" + member.substr(0, dot) +
+                                 "\": {\"" + member.substr(dot + 1) + "\": ...})");
+        } else {
+            unknownKey(r, key);
+        }
+    }
+}
+
+void applyPresetMembers(const json& preset, Settings& settings, PresetLoadResult& r, bool schema1) {
+    applyMembers(preset, "", settings, r);
+    auto lights = preset.find("lights");
+    if (lights == preset.end()) return;
+    if (schema1) {
+        unknownKey(r, "lights");
+        return;
+    }
+    if (!lights->is_array()) {
+        r.errors.push_back("lights: expected a list of lights, got " + describeJsonValue(*lights));
+        return;
+    }
+    if (lights->size() > kMaxLights) {
+        r.errors.push_back("lights: " + std::to_string(lights->size()) + " lights (allowed at most " +
+                           std::to_string(kMaxLights) + ")");
+        return;
+    }
+    // The list replaces the base's: a light keeps the base's values for keys it omits (new ones take defaults).
+    settings.lights.resize(lights->size());
+    for (std::size_t i = 0; i < lights->size(); ++i) {
+        const json& light = (*lights)[i];
+        const std::string prefix = "lights." + std::to_string(i) + ".";
+        if (!light.is_object()) {
+            r.errors.push_back(prefix.substr(0, prefix.size() - 1) + ": expected an object, got " +
+                               describeJsonValue(light));
+            continue;
+        }
+        applyMembers(light, prefix, settings, r);
+    }
+}
+
+}  // namespace
+
 PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& base) {
     PresetLoadResult r;
     if (!preset.is_object()) {
@@ -148,7 +255,7 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
     else if (!schema->is_string() || *schema != kPresetSchema)
         r.errors.push_back("schema: " + describeJsonValue(*schema) + " is not a ShadowLab preset (allowed \"" +
                            kPresetSchema + "\")");
-    const std::string versionAllowed = "(allowed " + std::to_string(kPresetSchemaVersion) + ")";
+    const std::string versionAllowed = "(allowed 1 to " + std::to_string(kPresetSchemaVersion) + ")";
     auto version = preset.find("schemaVersion");
     // 1.0 is the integer 1 written by a tool that writes every number as a float; 1.5 is not a version.
     const bool integral = version != preset.end() && version->is_number() &&
@@ -181,39 +288,10 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
 
     // Everything goes into a copy; the caller sees it only if nothing at all went wrong.
     Settings settings = base;
-    auto apply = [&](const SettingsField& field, const json& value) {
-        if (std::string error = field.set(settings, value); !error.empty()) r.errors.push_back(std::move(error));
-    };
-    auto unknown = [&](const std::string& key) {
-        std::string warning = "unknown key '" + describeKey(key) + "' ignored";
-        if (auto close = similarSettingsKeys(key); !close.empty()) warning += " (did you mean " + close.front() + "?)";
-        r.warnings.push_back(std::move(warning));
-    };
-    for (const auto& [key, value] : preset.items()) {
-        if (isMetaKey(key)) continue;
-        if (const SettingsField* field = findSettingsField(key); field && field->group().empty()) {
-            apply(*field, value);
-        } else if (isGroup(key)) {
-            if (!value.is_object()) {
-                r.errors.push_back(key + ": expected an object of " + key + ".* settings, got " +
-                                   describeJsonValue(value));
-                continue;
-            }
-            for (const auto& [member, memberValue] : value.items()) {
-                std::string dotted = key + "." + member;
-                if (const SettingsField* f = findSettingsField(dotted))
-                    apply(*f, memberValue);
-                else
-                    unknown(dotted);
-            }
-        } else if (field) {
-            // A dotted key at the top level: easy to write by hand, but presets nest them.
-            r.warnings.push_back("unknown key '" + key + "' ignored (write it nested: \"" +
-                                 std::string(field->group()) + "\": {\"" + std::string(field->name()) + "\": ...})");
-        } else {
-            unknown(key);
-        }
-    }
+    const bool schema1 = version->get<double>() < 2;
+    // A schema-1 preset is a one-light scene: its keys address light 0 through the aliases.
+    if (schema1) settings.lights.resize(1);
+    applyPresetMembers(preset, settings, r, schema1);
     if (r.errors.empty()) r.errors = settings.validate();  // cross-field rules (near < far, ...)
     if (r.errors.empty()) r.settings = settings;
     return r;

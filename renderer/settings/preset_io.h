@@ -1,8 +1,12 @@
 #pragma once
 // Presets: a Settings as a schema-versioned JSON object, nested by the dotted keys of settings_fields.h:
-//   {"schema": "shadowlab-preset", "schemaVersion": 1, "name": "...", "description": "...", "scene": "...",
-//    "shadow": {"resolution": 2048, ...}, "light": {...}, "projection": {...}, "sampler": {...},
-//    "filter": {...}, "camera": {...}, "view": "lit"}
+//   {"schema": "shadowlab-preset", "schemaVersion": 2, "name": "...", "description": "...", "scene": "...",
+//    "ambient": 0.15, "useSceneLights": false,
+//    "lights": [{"type": "directional", "direction": [...], ..., "shadow": {"resolution": 2048, ...},
+//                "projection": {...}}, ...],
+//    "sampler": {...}, "filter": {...}, "camera": {...}, "view": "lit"}
+// Schema 1 (one light: "shadow", "light", "projection" groups at the top) loads as a one-light scene and is saved
+// as schema 2.
 // "scene" (optional; older presets have none) is the scene the preset was tuned on, as given to --scene or opened in
 // the editor; the camera group then holds the camera that was used there (see preset_scene.h).
 // Floats are written as the shortest decimal that reads back to the same float, so save -> load is exact.
@@ -18,7 +22,7 @@
 namespace shadowlab {
 
 inline constexpr const char* kPresetSchema = "shadowlab-preset";
-inline constexpr int kPresetSchemaVersion = 1;
+inline constexpr int kPresetSchemaVersion = 2;  // 2: a list of lights; 1 (one light) still loads
 
 nlohmann::json presetToJson(const Settings& settings, const std::string& name = {},
                             const std::string& description = {}, const std::string& scene = {});

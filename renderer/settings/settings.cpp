@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace shadowlab {
 
@@ -13,16 +14,22 @@ std::vector<std::string> Settings::validate() const {
 
     // Per-field ranges: a value is valid exactly when its own set() would accept it again, so the table stays the
     // only place that knows a range. The scratch copy keeps this const.
-    for (const SettingsField& field : settingsFields()) {
+    if (lights.size() > kMaxLights)
+        problems.push_back("lights: " + std::to_string(lights.size()) + " lights (allowed at most " +
+                           std::to_string(kMaxLights) + ")");
+    for (const SettingsField* field : settingsFieldsOf(*this)) {
         Settings scratch = *this;
-        if (std::string error = field.set(scratch, field.get(*this)); !error.empty()) problems.push_back(error);
+        if (std::string error = field->set(scratch, field->get(*this)); !error.empty()) problems.push_back(error);
     }
 
     // Rules that involve more than one field.
-    if (!projection.autoFit && !(projection.nearPlane < projection.farPlane)) {
-        problems.push_back("projection.near: " + describeJsonValue(findSettingsField("projection.near")->get(*this)) +
-                           " is not less than projection.far " +
-                           describeJsonValue(findSettingsField("projection.far")->get(*this)) + " (allowed near < far)");
+    for (std::size_t i = 0; i < lights.size() && i < kMaxLights; ++i) {
+        const ProjectionSettings& projection = lights[i].projection;
+        if (projection.autoFit || projection.nearPlane < projection.farPlane) continue;
+        const std::string prefix = "lights." + std::to_string(i) + ".projection.";
+        problems.push_back(prefix + "near: " + describeJsonValue(findSettingsField(prefix + "near")->get(*this)) +
+                           " is not less than " + prefix + "far " +
+                           describeJsonValue(findSettingsField(prefix + "far")->get(*this)) + " (allowed near < far)");
     }
     if (!camera.autoFrame) {
         // glm::lookAt(eye == center) is all NaN (HARD_CASES 14).

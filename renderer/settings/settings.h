@@ -1,6 +1,8 @@
 #pragma once
 // Every tunable of a frame, as a plain value type (no GL handles). The editor edits one, a preset is one as JSON,
 // the CLI builds one from a preset plus --set overrides. Keys and ranges live in settings_fields.h.
+// Schema version 2: a list of lights, each with its own shadow map and projection; sampler, filter, camera, view and
+// ambient are global.
 #include <glm/ext/vector_double3.hpp>
 #include <glm/vec3.hpp>
 
@@ -11,7 +13,7 @@ namespace shadowlab {
 
 enum class DepthFormat { D16, D24, D32F };
 enum class CullMode { Back, Front, None };
-enum class LightType { Directional, Spot };
+enum class LightType { Directional, Spot, Point };
 enum class AddressMode { Wrap, ClampToEdge, ClampToBorder };
 enum class FilterKind { Point, Hardware2x2, Pcf, Poisson };
 enum class ViewMode { Lit, Shadow, LightDepth };
@@ -30,18 +32,6 @@ struct ShadowMapSettings {
     bool operator==(const ShadowMapSettings&) const = default;
 };
 
-struct LightSettings {
-    LightType type = LightType::Directional;
-    glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels (need not be normalized)
-    glm::vec3 position{4.0f, 8.0f, 4.0f};      // spot only
-    float spotConeDeg = 60.0f;                 // spot full cone angle, degrees
-    float intensity = 1.0f;
-    float ambient = 0.15f;
-    bool useSceneLight = false;                // take type/direction/position/cone from the scene's first glTF light
-
-    bool operator==(const LightSettings&) const = default;
-};
-
 struct ProjectionSettings {
     bool autoFit = true;      // fit ortho size / near / far (spot: near / far) to the scene's bounding sphere
     float orthoSize = 20.0f;  // full width of the square ortho volume, world units
@@ -51,6 +41,27 @@ struct ProjectionSettings {
 
     bool operator==(const ProjectionSettings&) const = default;
 };
+
+// One light: how it shines and how its shadow map is made. A directional or spot light has one shadow view, a point
+// light six (cube faces).
+struct LightSettings {
+    LightType type = LightType::Directional;
+    glm::vec3 direction{-0.4f, -1.0f, -0.3f};  // direction the light travels (need not be normalized); not point
+    glm::vec3 position{4.0f, 8.0f, 4.0f};      // spot and point
+    float range = 0.0f;                        // spot and point: light reaches this far (glTF's range); 0 = no limit
+    float spotConeDeg = 60.0f;                 // spot full cone angle, degrees
+    float intensity = 1.0f;
+    glm::vec3 color{1.0f, 1.0f, 1.0f};
+    bool enabled = true;       // off: the light neither shines nor casts
+    bool castsShadows = true;  // off: it shines everywhere, no shadow view is rendered for it
+    ShadowMapSettings shadow;
+    ProjectionSettings projection;
+
+    bool operator==(const LightSettings&) const = default;
+};
+
+// Enough for every sample we compare with (bgfx: 16 maps); the shader's light loop is specialised to the count used.
+inline constexpr std::size_t kMaxLights = 32;
 
 struct SamplerSettings {
     AddressMode addressMode = AddressMode::ClampToBorder;
@@ -78,9 +89,9 @@ struct CameraSettings {
 };
 
 struct Settings {
-    ShadowMapSettings shadow;
-    LightSettings light;
-    ProjectionSettings projection;
+    std::vector<LightSettings> lights{LightSettings{}};
+    float ambient = 0.15f;        // ambient term, unaffected by shadows
+    bool useSceneLights = false;  // the scene's KHR_lights_punctual lights replace `lights` (see light_space.h)
     SamplerSettings sampler;
     FilterSettings filter;
     CameraSettings camera;

@@ -235,103 +235,236 @@ std::string directionCheck(double x, double y, double z) {
     return {};
 }
 
-std::vector<SettingsField> buildFields() {
+SettingsField tagged(SettingsField f, unsigned invalidates) {
+    f.invalidates = invalidates;
+    return f;
+}
+
+constexpr unsigned kView = kInvalidatesShadowView;
+constexpr unsigned kVariant = kInvalidatesVariant;
+
+// A light's fields. `keyOf` makes the full key from the key within the light ("shadow.depthBias", "type");
+// `access` reaches the light in a Settings.
+template <class KeyOf, class LightAccess>
+std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
     std::vector<SettingsField> f;
+    auto at = [light](auto member) {
+        return [light, member](auto& s) -> auto& { return member(light(s)); };
+    };
 
-    // shadow map
-    f.push_back(intField("shadow.resolution",
-                         "Shadow map size, texels per side (the GPU's GL_MAX_TEXTURE_SIZE may lower the limit)", 16,
-                         32768, {}, [](auto& s) -> auto& { return s.shadow.resolution; }));
-    f.push_back(enumField<DepthFormat>(
-        "shadow.depthFormat", "Depth texture format of the shadow map",
-        {{DepthFormat::D16, "d16"}, {DepthFormat::D24, "d24"}, {DepthFormat::D32F, "d32f"}},
-        [](auto& s) -> auto& { return s.shadow.format; }));
-    f.push_back(floatField("shadow.depthBias",
-                           "DepthBias (GL polygon offset units): constant bias in steps of the depth format", -1e6,
-                           1e6, [](auto& s) -> auto& { return s.shadow.depthBias; }));
-    f.push_back(floatField("shadow.slopeScaledDepthBias",
-                           "SlopeScaledDepthBias (GL polygon offset factor): times the polygon's max depth slope",
-                           -100, 100, [](auto& s) -> auto& { return s.shadow.slopeScaledDepthBias; }));
-    f.push_back(floatField("shadow.depthBiasClamp",
-                           "DepthBiasClamp (GL polygon offset clamp): max bias in [0,1] depth units, 0 = no clamp",
-                           0, 1, [](auto& s) -> auto& { return s.shadow.depthBiasClamp; }));
-    f.push_back(floatField("shadow.normalOffset", "Lookup moved along the surface normal, in shadow-map texels", 0,
-                           16, [](auto& s) -> auto& { return s.shadow.normalOffset; }));
-    f.push_back(enumField<CullMode>("shadow.cullMode",
-                                    "Faces culled in the shadow pass (never those of double-sided materials; back "
-                                    "drops single-sided casters seen from behind, front detaches contact shadows)",
-                                    {{CullMode::Back, "back"}, {CullMode::Front, "front"}, {CullMode::None, "none"}},
-                                    [](auto& s) -> auto& { return s.shadow.cullMode; }));
+    f.push_back(tagged(enumField<LightType>(keyOf("type"), "Light type (a point light casts through a cube map)",
+                                            {{LightType::Directional, "directional"},
+                                             {LightType::Spot, "spot"},
+                                             {LightType::Point, "point"}},
+                                            at([](auto& l) -> auto& { return l.type; })),
+                       kView | kVariant));
+    f.push_back(tagged(vec3Field(keyOf("direction"), "Direction the light travels (need not be normalized; not point)",
+                                 "|c| <= 1e6, length >= 1e-6", directionCheck,
+                                 at([](auto& l) -> auto& { return l.direction; })),
+                       kView));
+    f.push_back(tagged(vec3Field(keyOf("position"), "Spot or point light position, world units", "|c| <= 1e7",
+                                 boundedPosition(1e7), at([](auto& l) -> auto& { return l.position; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("range"),
+                                  "Spot or point light range, world units (glTF's range): nothing beyond it is lit "
+                                  "or shadowed; 0 = no limit",
+                                  0, 1e7, at([](auto& l) -> auto& { return l.range; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("spotConeDeg"), "Spot light full cone angle, degrees", 1, 170,
+                                  at([](auto& l) -> auto& { return l.spotConeDeg; })),
+                       kView));
+    f.push_back(floatField(keyOf("intensity"), "Light intensity (multiplies the direct term)", 0, 100,
+                           at([](auto& l) -> auto& { return l.intensity; })));
+    f.push_back(vec3Field(keyOf("color"), "Light colour, linear RGB", "each in [0, 100]",
+                          [](double x, double y, double z) -> std::string {
+                              if (std::min({x, y, z}) < 0 || std::max({x, y, z}) > 100)
+                                  return "has a component outside [0, 100]";
+                              return {};
+                          },
+                          at([](auto& l) -> auto& { return l.color; })));
+    f.push_back(tagged(boolField(keyOf("enabled"), "The light shines (and casts, if castsShadows)",
+                                 at([](auto& l) -> auto& { return l.enabled; })),
+                       kView | kVariant));
+    f.push_back(tagged(boolField(keyOf("castsShadows"), "The light has shadow views (off: it lights everything)",
+                                 at([](auto& l) -> auto& { return l.castsShadows; })),
+                       kView | kVariant));
 
-    // light
-    f.push_back(enumField<LightType>("light.type", "Light type",
-                                     {{LightType::Directional, "directional"}, {LightType::Spot, "spot"}},
-                                     [](auto& s) -> auto& { return s.light.type; }));
-    f.push_back(vec3Field("light.direction", "Direction the light travels (need not be normalized)",
-                          "|c| <= 1e6, length >= 1e-6", directionCheck,
-                          [](auto& s) -> auto& { return s.light.direction; }));
-    f.push_back(vec3Field("light.position", "Spot light position, world units", "|c| <= 1e7", boundedPosition(1e7),
-                          [](auto& s) -> auto& { return s.light.position; }));
-    f.push_back(floatField("light.spotConeDeg", "Spot light full cone angle, degrees", 1, 170,
-                           [](auto& s) -> auto& { return s.light.spotConeDeg; }));
-    f.push_back(floatField("light.intensity", "Light intensity (multiplies the direct term)", 0, 100,
-                           [](auto& s) -> auto& { return s.light.intensity; }));
-    f.push_back(floatField("light.ambient", "Ambient term, unaffected by shadows", 0, 1,
-                           [](auto& s) -> auto& { return s.light.ambient; }));
-    f.push_back(boolField("light.useSceneLight",
-                          "Take type, direction, position and cone from the scene's first glTF light",
-                          [](auto& s) -> auto& { return s.light.useSceneLight; }));
+    // its shadow map
+    f.push_back(tagged(intField(keyOf("shadow.resolution"),
+                                "Shadow map size, texels per side (the GPU's GL_MAX_TEXTURE_SIZE may lower the limit)",
+                                16, 32768, {}, at([](auto& l) -> auto& { return l.shadow.resolution; })),
+                       kView));
+    f.push_back(tagged(enumField<DepthFormat>(
+                           keyOf("shadow.depthFormat"), "Depth texture format of the shadow map",
+                           {{DepthFormat::D16, "d16"}, {DepthFormat::D24, "d24"}, {DepthFormat::D32F, "d32f"}},
+                           at([](auto& l) -> auto& { return l.shadow.format; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("shadow.depthBias"),
+                                  "DepthBias (GL polygon offset units): constant bias in steps of the depth format",
+                                  -1e6, 1e6, at([](auto& l) -> auto& { return l.shadow.depthBias; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("shadow.slopeScaledDepthBias"),
+                                  "SlopeScaledDepthBias (GL polygon offset factor): times the polygon's max depth slope",
+                                  -100, 100, at([](auto& l) -> auto& { return l.shadow.slopeScaledDepthBias; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("shadow.depthBiasClamp"),
+                                  "DepthBiasClamp (GL polygon offset clamp): max bias in [0,1] depth units, 0 = no clamp",
+                                  0, 1, at([](auto& l) -> auto& { return l.shadow.depthBiasClamp; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("shadow.normalOffset"),
+                                  "Lookup moved along the surface normal, in shadow-map texels", 0, 16,
+                                  at([](auto& l) -> auto& { return l.shadow.normalOffset; })),
+                       kVariant));  // NORMAL_OFFSET is compiled in only when some light uses it
+    f.push_back(tagged(enumField<CullMode>(keyOf("shadow.cullMode"),
+                                           "Faces culled in the shadow pass (never those of double-sided materials; "
+                                           "back drops single-sided casters seen from behind, front detaches contact "
+                                           "shadows)",
+                                           {{CullMode::Back, "back"}, {CullMode::Front, "front"}, {CullMode::None, "none"}},
+                                           at([](auto& l) -> auto& { return l.shadow.cullMode; })),
+                       kView));
 
-    // light projection
-    f.push_back(boolField("projection.autoFit",
-                          "Fit ortho size, near and far (spot: near, far) to the scene's bounding sphere",
-                          [](auto& s) -> auto& { return s.projection.autoFit; }));
-    f.push_back(floatField("projection.orthoSize", "Full width of the square ortho volume, world units (no autoFit)",
-                           1e-3, 1e7, [](auto& s) -> auto& { return s.projection.orthoSize; }));
-    f.push_back(floatField("projection.near", "Light near plane, world units (no autoFit)", 1e-4, 1e7,
-                           [](auto& s) -> auto& { return s.projection.nearPlane; }));
-    f.push_back(floatField("projection.far", "Light far plane, world units (no autoFit)", 1e-3, 1e8,
-                           [](auto& s) -> auto& { return s.projection.farPlane; }));
-    f.push_back(boolField("projection.depthClamp",
-                          "GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast",
-                          [](auto& s) -> auto& { return s.projection.depthClamp; }));
+    // its projection
+    f.push_back(tagged(boolField(keyOf("projection.autoFit"),
+                                 "Fit ortho size, near and far (spot/point: near, far) to the scene's bounding sphere",
+                                 at([](auto& l) -> auto& { return l.projection.autoFit; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("projection.orthoSize"),
+                                  "Full width of the square ortho volume, world units (no autoFit)", 1e-3, 1e7,
+                                  at([](auto& l) -> auto& { return l.projection.orthoSize; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("projection.near"), "Light near plane, world units (no autoFit)", 1e-4, 1e7,
+                                  at([](auto& l) -> auto& { return l.projection.nearPlane; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("projection.far"), "Light far plane, world units (no autoFit)", 1e-3, 1e8,
+                                  at([](auto& l) -> auto& { return l.projection.farPlane; })),
+                       kView));
+    f.push_back(tagged(boolField(keyOf("projection.depthClamp"),
+                                 "GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast",
+                                 at([](auto& l) -> auto& { return l.projection.depthClamp; })),
+                       kView));
+    return f;
+}
+
+// The global fields; `ambientKey` / `sceneLightsKey` let the schema-1 aliases reuse the same definitions.
+std::vector<SettingsField> buildSceneLightFields(const std::string& ambientKey, const std::string& sceneLightsKey) {
+    std::vector<SettingsField> f;
+    f.push_back(floatField(ambientKey, "Ambient term, unaffected by shadows", 0, 1,
+                           [](auto& s) -> auto& { return s.ambient; }));
+    f.push_back(tagged(boolField(sceneLightsKey,
+                                 "Use the scene's glTF lights (KHR_lights_punctual, point lights included, with their "
+                                 "range and intensity) instead of `lights`; each takes the shadow settings of the "
+                                 "light at its index (or the last one)",
+                                 [](auto& s) -> auto& { return s.useSceneLights; }),
+                       kView | kVariant));
+    return f;
+}
+
+std::vector<SettingsField> buildGlobalFields() {
+    std::vector<SettingsField> f = buildSceneLightFields("ambient", "useSceneLights");
 
     // sampler
-    f.push_back(enumField<AddressMode>("sampler.addressMode", "Shadow map address mode outside [0,1]",
-                                       {{AddressMode::Wrap, "wrap"},
-                                        {AddressMode::ClampToEdge, "clamp"},
-                                        {AddressMode::ClampToBorder, "border"}},
-                                       [](auto& s) -> auto& { return s.sampler.addressMode; }));
-    f.push_back(floatField("sampler.borderDepth", "Depth returned outside the map with border addressing; 1 = lit",
-                           0, 1, [](auto& s) -> auto& { return s.sampler.borderDepth; }));
+    f.push_back(tagged(enumField<AddressMode>("sampler.addressMode", "Shadow map address mode outside [0,1]",
+                                              {{AddressMode::Wrap, "wrap"},
+                                               {AddressMode::ClampToEdge, "clamp"},
+                                               {AddressMode::ClampToBorder, "border"}},
+                                              [](auto& s) -> auto& { return s.sampler.addressMode; }),
+                       kInvalidatesSampler));
+    f.push_back(tagged(floatField("sampler.borderDepth",
+                                  "Depth returned outside the map with border addressing; 1 = lit", 0, 1,
+                                  [](auto& s) -> auto& { return s.sampler.borderDepth; }),
+                       kInvalidatesSampler));
 
     // filter
-    f.push_back(enumField<FilterKind>("filter.kind", "Shadow filter",
-                                      {{FilterKind::Point, "point"},
-                                       {FilterKind::Hardware2x2, "hardware2x2"},
-                                       {FilterKind::Pcf, "pcf"},
-                                       {FilterKind::Poisson, "poisson"}},
-                                      [](auto& s) -> auto& { return s.filter.kind; }));
-    f.push_back(intField("filter.kernel", "PCF grid size, NxN samples", 1, 9, {1, 3, 5, 7, 9},
-                         [](auto& s) -> auto& { return s.filter.kernel; }));
+    f.push_back(tagged(enumField<FilterKind>("filter.kind", "Shadow filter",
+                                             {{FilterKind::Point, "point"},
+                                              {FilterKind::Hardware2x2, "hardware2x2"},
+                                              {FilterKind::Pcf, "pcf"},
+                                              {FilterKind::Poisson, "poisson"}},
+                                             [](auto& s) -> auto& { return s.filter.kind; }),
+                       kVariant | kInvalidatesSampler));
+    f.push_back(tagged(intField("filter.kernel", "PCF grid size, NxN samples", 1, 9, {1, 3, 5, 7, 9},
+                                [](auto& s) -> auto& { return s.filter.kernel; }),
+                       kVariant));
     f.push_back(floatField("filter.poissonRadius", "Poisson disk radius, shadow-map texels", 0.5, 16,
                            [](auto& s) -> auto& { return s.filter.poissonRadius; }));
 
     // camera
-    f.push_back(boolField("camera.autoFrame", "Place the camera to frame the scene (position/target ignored)",
-                          [](auto& s) -> auto& { return s.camera.autoFrame; }));
-    f.push_back(vec3Field("camera.position", "Camera position, world units", "|c| <= 1e7", boundedPosition(1e7),
-                          [](auto& s) -> auto& { return s.camera.position; }));
-    f.push_back(vec3Field("camera.target", "Point the camera looks at, world units", "|c| <= 1e7",
-                          boundedPosition(1e7), [](auto& s) -> auto& { return s.camera.target; }));
-    f.push_back(floatField("camera.fovYDeg", "Camera vertical field of view, degrees", 5, 150,
-                           [](auto& s) -> auto& { return s.camera.fovYDeg; }));
+    f.push_back(tagged(boolField("camera.autoFrame", "Place the camera to frame the scene (position/target ignored)",
+                                 [](auto& s) -> auto& { return s.camera.autoFrame; }),
+                       kInvalidatesCamera));
+    f.push_back(tagged(vec3Field("camera.position", "Camera position, world units", "|c| <= 1e7",
+                                 boundedPosition(1e7), [](auto& s) -> auto& { return s.camera.position; }),
+                       kInvalidatesCamera));
+    f.push_back(tagged(vec3Field("camera.target", "Point the camera looks at, world units", "|c| <= 1e7",
+                                 boundedPosition(1e7), [](auto& s) -> auto& { return s.camera.target; }),
+                       kInvalidatesCamera));
+    f.push_back(tagged(floatField("camera.fovYDeg", "Camera vertical field of view, degrees", 5, 150,
+                                  [](auto& s) -> auto& { return s.camera.fovYDeg; }),
+                       kInvalidatesCamera));
 
-    f.push_back(enumField<ViewMode>(
-        "view", "What the main view shows",
-        {{ViewMode::Lit, "lit"}, {ViewMode::Shadow, "shadow"}, {ViewMode::LightDepth, "light-depth"}},
-        [](auto& s) -> auto& { return s.view; }));
+    f.push_back(tagged(enumField<ViewMode>(
+                           "view", "What the main view shows",
+                           {{ViewMode::Lit, "lit"}, {ViewMode::Shadow, "shadow"}, {ViewMode::LightDepth, "light-depth"}},
+                           [](auto& s) -> auto& { return s.view; }),
+                       kVariant));
     return f;
+}
+
+// Wraps a field of light `index` so that a missing light reads as null and setting light lights.size() appends one.
+SettingsField boundToLight(SettingsField f, std::size_t index) {
+    f.light = static_cast<int>(index);
+    f.get = [index, get = f.get](const Settings& s) { return index < s.lights.size() ? get(s) : json(); };
+    f.set = [index, key = f.key, set = f.set](Settings& s, const json& j) -> std::string {
+        const std::size_t count = s.lights.size();
+        if (index > count || index >= kMaxLights) {
+            std::string what = key + ": there is no light " + std::to_string(index) + " (the settings have " +
+                               std::to_string(count) + " light" + (count == 1 ? "" : "s");
+            if (count < kMaxLights) what += "; lights." + std::to_string(count) + ".* adds one";
+            return what + ", at most " + std::to_string(kMaxLights) + ")";
+        }
+        const bool appended = index == count;
+        if (appended) s.lights.emplace_back();
+        std::string error = set(s, j);
+        if (!error.empty() && appended) s.lights.pop_back();
+        return error;
+    };
+    return f;
+}
+
+std::vector<std::vector<SettingsField>> buildAllLightFields() {
+    std::vector<std::vector<SettingsField>> all;
+    for (std::size_t i = 0; i < kMaxLights; ++i) {
+        const std::string prefix = "lights." + std::to_string(i) + ".";
+        // The access is only reached through boundToLight's check, so the index exists there.
+        std::vector<SettingsField> fields =
+            buildLightFields([&](const char* rel) { return prefix + rel; },
+                             [i](auto& s) -> auto& { return s.lights[i]; });
+        for (SettingsField& f : fields) f = boundToLight(std::move(f), i);
+        all.push_back(std::move(fields));
+    }
+    return all;
+}
+
+std::vector<SettingsField> buildSchema1Aliases() {
+    // Schema 1 had one light: its light-level keys were "light.*", its shadow and projection groups top-level.
+    std::vector<SettingsField> aliases = buildLightFields(
+        [](const char* rel) {
+            const std::string_view r = rel;
+            return (r.starts_with("shadow.") || r.starts_with("projection.")) ? std::string(r) : "light." + std::string(r);
+        },
+        [](auto& s) -> auto& { return s.lights[0]; });
+    for (SettingsField& f : aliases) {
+        const std::string_view rel = f.key.starts_with("light.") ? std::string_view(f.key).substr(6) : f.key;
+        f = boundToLight(std::move(f), 0);
+        f.aliasOf = "lights.0." + std::string(rel);
+    }
+    // "light.range", "light.color", ... never existed in schema 1, but as aliases of light 0 they do no harm and keep
+    // `--set light.X` uniform. The two light-group keys that became global:
+    for (SettingsField& f : buildSceneLightFields("light.ambient", "light.useSceneLight")) {
+        f.aliasOf = f.key == "light.ambient" ? "ambient" : "useSceneLights";
+        aliases.push_back(std::move(f));
+    }
+    return aliases;
 }
 
 std::size_t editDistance(std::string_view a, std::string_view b) {
@@ -354,27 +487,120 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
-std::string_view SettingsField::group() const {
+std::string_view SettingsField::lightKey() const {
     std::string_view k = key;
+    if (light >= 0 && aliasOf.empty()) {  // "lights.<n>.<rest>"
+        k.remove_prefix(k.find('.', 7) + 1);
+    } else if (!aliasOf.empty() && k.starts_with("light.") && light >= 0) {
+        k.remove_prefix(6);
+    }
+    return k;
+}
+
+std::string_view SettingsField::group() const {
+    std::string_view k = lightKey();
     auto dot = k.find('.');
     return dot == std::string_view::npos ? std::string_view{} : k.substr(0, dot);
 }
 
 std::string_view SettingsField::name() const {
-    std::string_view k = key;
+    std::string_view k = lightKey();
     auto dot = k.find('.');
     return dot == std::string_view::npos ? k : k.substr(dot + 1);
 }
 
-const std::vector<SettingsField>& settingsFields() {
-    static const std::vector<SettingsField> fields = buildFields();
+std::string SettingsField::pattern() const {
+    return light >= 0 && aliasOf.empty() ? "lights.#." + std::string(lightKey()) : key;
+}
+
+const std::vector<SettingsField>& globalSettingsFields() {
+    static const std::vector<SettingsField> fields = buildGlobalFields();
     return fields;
 }
 
+const std::vector<SettingsField>& lightSettingsFields(std::size_t light) {
+    static const std::vector<std::vector<SettingsField>> fields = buildAllLightFields();
+    return fields.at(light);
+}
+
+const std::vector<SettingsField>& schema1Aliases() {
+    static const std::vector<SettingsField> aliases = buildSchema1Aliases();
+    return aliases;
+}
+
+std::vector<const SettingsField*> settingsFieldsOf(const Settings& settings) {
+    std::vector<const SettingsField*> out;
+    for (const SettingsField& f : globalSettingsFields()) out.push_back(&f);
+    for (std::size_t i = 0; i < settings.lights.size() && i < kMaxLights; ++i)
+        for (const SettingsField& f : lightSettingsFields(i)) out.push_back(&f);
+    return out;
+}
+
+std::vector<const SettingsField*> settingsKeyListing() {
+    std::vector<const SettingsField*> out;
+    for (const SettingsField& f : globalSettingsFields()) out.push_back(&f);
+    for (const SettingsField& f : lightSettingsFields(0)) out.push_back(&f);
+    return out;
+}
+
 const SettingsField* findSettingsField(std::string_view key) {
-    for (const auto& f : settingsFields())
+    if (key.starts_with("lights.")) {
+        // "lights.<n>.<rest>": n in decimal without leading zeros (one spelling per key).
+        std::string_view rest = key.substr(7);
+        std::size_t index = 0;
+        auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), index);
+        const std::size_t digits = static_cast<std::size_t>(end - rest.data());
+        if (ec != std::errc{} || digits == 0 || (digits > 1 && rest[0] == '0') || index >= kMaxLights ||
+            digits >= rest.size() || rest[digits] != '.')
+            return nullptr;
+        for (const SettingsField& f : lightSettingsFields(index))
+            if (f.key == key) return &f;
+        return nullptr;
+    }
+    for (const SettingsField& f : globalSettingsFields())
+        if (f.key == key) return &f;
+    for (const SettingsField& f : schema1Aliases())
         if (f.key == key) return &f;
     return nullptr;
+}
+
+SettingsDiff diffSettings(const Settings& a, const Settings& b) {
+    SettingsDiff diff;
+    for (const SettingsField& f : globalSettingsFields()) {
+        if (f.get(a) != f.get(b)) {
+            diff.keys.push_back(f.key);
+            diff.invalidates |= f.invalidates;
+        }
+    }
+    const std::size_t lights = std::max(a.lights.size(), b.lights.size());
+    for (std::size_t i = 0; i < lights && i < kMaxLights; ++i) {
+        if (i >= a.lights.size() || i >= b.lights.size()) {
+            diff.keys.push_back("lights." + std::to_string(i));
+            diff.invalidates |= kInvalidatesShadowView | kInvalidatesVariant;
+            continue;
+        }
+        for (const SettingsField& f : lightSettingsFields(i)) {
+            if (f.get(a) != f.get(b)) {
+                diff.keys.push_back(f.key);
+                diff.invalidates |= f.invalidates;
+            }
+        }
+    }
+    return diff;
+}
+
+SettingsDiff diffLight(const LightSettings& a, const LightSettings& b) {
+    Settings sa, sb;
+    sa.lights = {a};
+    sb.lights = {b};
+    SettingsDiff diff;
+    for (const SettingsField& f : lightSettingsFields(0)) {
+        if (f.get(sa) != f.get(sb)) {
+            diff.keys.emplace_back(f.lightKey());
+            diff.invalidates |= f.invalidates;
+        }
+    }
+    return diff;
 }
 
 std::vector<std::string> similarSettingsKeys(std::string_view key) {
@@ -389,7 +615,20 @@ std::vector<std::string> similarSettingsKeys(std::string_view key) {
     // Score = edit distance, case-insensitive, against the full key and against the part after the dot
     // (so "depthbias" and "shadow.depthBais" both find shadow.depthBias).
     std::vector<std::pair<std::size_t, std::string>> scored;
-    for (const auto& f : settingsFields()) {
+    // Candidates: the global keys, light 0's keys (or the light the query names) and the schema-1 aliases.
+    std::size_t light = 0;
+    if (query.starts_with("lights.")) {
+        std::from_chars(query.data() + 7, query.data() + query.size(), light);
+        light = std::min(light, kMaxLights - 1);
+    }
+    std::vector<const SettingsField*> candidates;
+    for (const SettingsField& f : globalSettingsFields()) candidates.push_back(&f);
+    if (query.starts_with("lights."))
+        for (const SettingsField& f : lightSettingsFields(light)) candidates.push_back(&f);
+    else
+        for (const SettingsField& f : schema1Aliases()) candidates.push_back(&f);
+    for (const SettingsField* candidate : candidates) {
+        const SettingsField& f = *candidate;
         std::size_t d = std::min(editDistance(query, lower(f.key)), editDistance(queryName, lower(f.name())));
         std::size_t limit = std::clamp<std::size_t>(f.name().size() / 3, 1, 3);
         if (d <= limit)
@@ -465,7 +704,7 @@ std::string applySettingOverride(Settings& settings, std::string_view keyEqualsV
         std::vector<std::string> close = similarSettingsKeys(key);
         if (!close.empty()) return "unknown setting '" + describeKey(key) + "' (did you mean " + joined(close) + "?)";
         std::vector<std::string> all;
-        for (const auto& f : settingsFields()) all.push_back(f.key);
+        for (const SettingsField* f : settingsKeyListing()) all.push_back(f->pattern());
         return "unknown setting '" + describeKey(key) + "' (valid keys: " + joined(all) + ")";
     }
 

@@ -1,7 +1,11 @@
 #pragma once
-// The one table of tunables. Every Settings field appears here once, under its dotted preset key
-// ("shadow.depthBias"); JSON load, JSON save, `--set key=value`, Settings::validate() and the editor's
-// sliders all go through it, so a key, its range and its error messages live in exactly one place.
+// The one table of tunables. Every Settings field appears here once, under its dotted preset key ("filter.kind",
+// and per light "lights.2.shadow.depthBias"); JSON load, JSON save, `--set key=value`, Settings::validate() and the
+// editor's sliders all go through it, so a key, its range and its error messages live in exactly one place.
+// Each field also says what a change of it makes stale (SettingsField::invalidates): the shadow planner's reasons,
+// the main pass's variant key and the editor's redraw decision derive from those tags, not from hand lists.
+// The schema-1 keys of the one-light presets ("shadow.depthBias", "light.type", "projection.near", "light.ambient",
+// "light.useSceneLight") stay valid as aliases (of light 0 where they name a light's field).
 #include "settings/settings.h"
 
 #include <nlohmann/json.hpp>
@@ -15,6 +19,15 @@ namespace shadowlab {
 
 enum class SettingsFieldKind { Bool, Int, Float, Enum, Vec3 };
 
+// What a change of a field makes stale (bit flags). Every change redraws the main pass; these say what else.
+enum Invalidates : unsigned {
+    kInvalidatesNothingElse = 0,
+    kInvalidatesShadowView = 1u << 0,  // the light's shadow views (its map contents or its light space)
+    kInvalidatesSampler = 1u << 1,     // sampler state of the maps
+    kInvalidatesVariant = 1u << 2,     // the main pass's shader variant (its #defines)
+    kInvalidatesCamera = 1u << 3,      // the camera: which views the camera can see
+};
+
 struct SettingsField {
     std::string key;          // dotted preset key, e.g. "shadow.depthBias"; the part before the dot is the JSON group
     std::string description;  // one line, for --help, tooltips and docs
@@ -24,6 +37,9 @@ struct SettingsField {
     double max = 0.0;
     std::vector<std::string> choices;  // Enum: the names, in enum order
     std::vector<int> intChoices;       // Int restricted to a set (filter.kernel); empty = any integer in [min, max]
+    unsigned invalidates = kInvalidatesNothingElse;  // Invalidates flags
+    int light = -1;           // the light this field belongs to (an alias of a schema-1 key: 0); -1 = global
+    std::string aliasOf;      // schema-1 alias: the key it stands for ("lights.0.shadow.depthBias"); "" otherwise
 
     // The current value as JSON (floats as the shortest decimal that reads back to the same float).
     std::function<nlohmann::json(const Settings&)> get;
@@ -31,17 +47,48 @@ struct SettingsField {
     // value, and Settings is left untouched.
     std::function<std::string(Settings&, const nlohmann::json&)> set;
 
-    // "shadow" for "shadow.depthBias", "" for "view".
+    // The key within its light: "shadow.depthBias" for "lights.2.shadow.depthBias", "type" for "lights.0.type";
+    // the whole key for a global field.
+    std::string_view lightKey() const;
+    // Of lightKey(): "shadow" for "shadow.depthBias", "" for "view" or a light's "type".
     std::string_view group() const;
-    // "depthBias" for "shadow.depthBias", "view" for "view".
+    // Of lightKey(): "depthBias" for "shadow.depthBias", "view" for "view".
     std::string_view name() const;
+    // "lights.#.shadow.depthBias" for a light's field (any index), the key itself for a global one.
+    std::string pattern() const;
 };
 
-// All fields, in Settings' declaration order (which is also the order presets are written in).
-const std::vector<SettingsField>& settingsFields();
+// The global fields (ambient, useSceneLights, sampler, filter, camera, view), in preset order.
+const std::vector<SettingsField>& globalSettingsFields();
 
-// nullptr when the key is unknown. Exact, case-sensitive match.
+// Light `light`'s fields ("lights.<light>.*"), in preset order; light < kMaxLights. Setting a field of light
+// lights.size() appends a default light first (so `--set lights.1.type=point` adds a second light); a higher index is
+// refused, naming how many lights there are.
+const std::vector<SettingsField>& lightSettingsFields(std::size_t light);
+
+// Every field the settings have: the global ones, then each light's. (What validate, presets and diffs walk.)
+std::vector<const SettingsField*> settingsFieldsOf(const Settings& settings);
+
+// The keys as `shadowlab keys` and docs list them: global fields, then light fields once as "lights.#.*".
+std::vector<const SettingsField*> settingsKeyListing();
+
+// The schema-1 keys that stand for a newer key ("shadow.depthBias" -> "lights.0.shadow.depthBias").
+const std::vector<SettingsField>& schema1Aliases();
+
+// nullptr when the key is unknown. Exact, case-sensitive match of a global key, "lights.<n>.<key>" with n <
+// kMaxLights, or a schema-1 alias (whose messages name the alias as typed).
 const SettingsField* findSettingsField(std::string_view key);
+
+// The keys whose values differ between a and b (lights present in only one of them count as their "lights.<n>"),
+// with the union of what those changes invalidate.
+struct SettingsDiff {
+    std::vector<std::string> keys;
+    unsigned invalidates = kInvalidatesNothingElse;
+    bool empty() const { return keys.empty(); }
+};
+SettingsDiff diffSettings(const Settings& a, const Settings& b);
+// As diffSettings, for one light only (a light's own fields, no global ones).
+SettingsDiff diffLight(const LightSettings& a, const LightSettings& b);
 
 // Keys close to an unknown one (typos, missing group, wrong case), best first; empty when nothing is close or the
 // key is longer than kMaxSuggestedKeyLength (no key is near it, and the search costs length squared).

@@ -25,11 +25,11 @@ void setFrameUniforms(const MainUniforms& u, const MainPassInput& in, const Main
     glUniform3fv(u.lightPosition, 1, glm::value_ptr(glm::vec3(light.position)));
     glUniform3fv(u.cameraPosition, 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
     glUniform2f(u.shadowTexel, texel, texel);
-    glUniform1f(u.lightIntensity, settings.light.intensity);
-    glUniform1f(u.ambient, settings.light.ambient);
+    glUniform1f(u.lightIntensity, settings.lights[0].intensity);
+    glUniform1f(u.ambient, settings.ambient);
     glUniform2f(u.lightDepthRange, float(light.nearPlane), float(light.farPlane));
     if (key.normalOffset) {
-        glUniform1f(u.normalOffsetTexels, settings.shadow.normalOffset);
+        glUniform1f(u.normalOffsetTexels, settings.lights[0].shadow.normalOffset);
         // Spot: the texel's world size grows with distance, so the shader multiplies by its depth.
         const double texelWorld = light.perspective ? 2.0 * light.tanHalfFov / light.resolution : light.texelWorldSize;
         glUniform1f(u.texelWorldSize, float(texelWorld));
@@ -63,7 +63,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     base.kernel = settings.filter.kernel;
     base.view = settings.view;
     base.perspectiveLight = in.light->perspective;
-    base.normalOffset = settings.shadow.normalOffset > 0.0f;
+    base.normalOffset = settings.lights[0].shadow.normalOffset > 0.0f;
 
     in.scene->bind();
     for (const GpuDraw& draw : in.scene->draws()) {

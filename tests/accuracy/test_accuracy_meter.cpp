@@ -78,7 +78,7 @@ TEST_F(AccuracyMeterTest, CoarseMapShowsInWrongPixelsAndWarns) {
     EXPECT_EQ(fine.coarseMapWarning, "");
     for (int resolution : {16, 32}) {
         SCOPED_TRACE(resolution);
-        settings.shadow.resolution = resolution;
+        settings.lights[0].shadow.resolution = resolution;
         const AccuracyReport coarse = meter.measure(scene, settings, camera, kWidth, kHeight);
         ASSERT_TRUE(coarse.ok) << coarse.error;
         saveOverlay(coarse, "textbook-map-" + std::to_string(resolution));
@@ -98,18 +98,18 @@ TEST_F(AccuracyMeterTest, CasterBeforeTheNearPlaneIsNamedWhenDepthClampIsOff) {
     const Scene scene = loadBuiltin("textbook");
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
-    settings.projection.autoFit = false;
-    settings.projection.orthoSize = 30.0f;
-    settings.projection.nearPlane = 13.0f;
-    settings.projection.farPlane = 40.0f;
-    settings.projection.depthClamp = false;
+    settings.lights[0].projection.autoFit = false;
+    settings.lights[0].projection.orthoSize = 30.0f;
+    settings.lights[0].projection.nearPlane = 13.0f;
+    settings.lights[0].projection.farPlane = 40.0f;
+    settings.lights[0].projection.depthClamp = false;
     const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
     const AccuracyReport clipped = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(clipped.ok) << clipped.error;
     saveOverlay(clipped, "textbook-near-clipped");
     EXPECT_EQ(clipped.mainCause(), MismatchCause::NearPlaneClip);
     EXPECT_GT(clipped.causePercentOfWrong(MismatchCause::NearPlaneClip), 80.0);
-    settings.projection.depthClamp = true;
+    settings.lights[0].projection.depthClamp = true;
     const AccuracyReport clamped = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(clamped.ok) << clamped.error;
     EXPECT_EQ(clamped.counts.causePixels[std::size_t(MismatchCause::NearPlaneClip)], 0u);
@@ -126,15 +126,15 @@ TEST_F(AccuracyMeterTest, MirroredRoofIsCulledAndExplainedLikeThePlainOne) {
     ASSERT_TRUE(mirrored.instances.front().mirrored());
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
-    settings.shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
-    settings.light.direction = glm::vec3(-0.4f, -1.0f, 0.3f);  // the plain roof's light, mirrored too
+    settings.lights[0].shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
+    settings.lights[0].direction = glm::vec3(-0.4f, -1.0f, 0.3f);  // the plain roof's light, mirrored too
     const Camera camera = cameraFor(settings.camera, mirrored, double(kWidth) / kHeight);
     const AccuracyReport back = meter.measure(mirrored, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(back.ok) << back.error;
     saveOverlay(back, "roof-mirrored-cull-back");
     EXPECT_GT(back.leakPercent, 50.0);
     EXPECT_EQ(back.mainCause(), MismatchCause::CasterCulled);
-    settings.shadow.cullMode = CullMode::Front;  // keeps the roof: its front looks away from the light
+    settings.lights[0].shadow.cullMode = CullMode::Front;  // keeps the roof: its front looks away from the light
     const AccuracyReport front = meter.measure(mirrored, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(front.ok) << front.error;
     EXPECT_LT(front.leakPercent, 5.0);
@@ -148,7 +148,7 @@ TEST_F(AccuracyMeterTest, CauseOverlayColoursEachMismatchedPixelByItsCause) {
     const Scene scene = loadBuiltin("roof");
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
-    settings.shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
+    settings.lights[0].shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
     const AccuracyReport r = meter.measure(scene, settings, cameraFor(settings.camera, scene, double(kWidth) / kHeight), kWidth, kHeight);
     ASSERT_TRUE(r.ok) << r.error;
     AccuracyReport byCause = r;
@@ -175,8 +175,8 @@ TEST_F(AccuracyMeterTest, ReferenceIsReusedWhenOnlyTheToolsSettingsChange) {
     EXPECT_GT(first.cost.rays, 10000u);
     EXPECT_GT(first.cost.raysPerSecond, 0.0);
 
-    settings.shadow.slopeScaledDepthBias = 0.0f;
-    settings.shadow.normalOffset = 0.0f;
+    settings.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    settings.lights[0].shadow.normalOffset = 0.0f;
     settings.filter.kernel = 5;
     const AccuracyReport second = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(second.ok) << second.error;
@@ -185,7 +185,7 @@ TEST_F(AccuracyMeterTest, ReferenceIsReusedWhenOnlyTheToolsSettingsChange) {
     EXPECT_EQ(second.counts.lit, first.counts.lit);
     EXPECT_EQ(second.kTexels, 3.0) << "PCF 5x5: radius 2 + 1";
 
-    settings.light.direction = glm::vec3(0.3f, -1.0f, 0.2f);
+    settings.lights[0].direction = glm::vec3(0.3f, -1.0f, 0.2f);
     const AccuracyReport third = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(third.ok) << third.error;
     EXPECT_TRUE(third.cost.bvhReused);
@@ -199,7 +199,7 @@ TEST_F(AccuracyMeterTest, InvalidSettingsAndCancelGiveAReasonAndKeepWorking) {
     Settings settings;
     const Camera camera = cameraFor(settings.camera, scene, 160.0 / 90.0);
     Settings bad = settings;
-    bad.shadow.resolution = 0;
+    bad.lights[0].shadow.resolution = 0;
     const AccuracyReport refused = meter.measure(scene, bad, camera, 160, 90);
     EXPECT_FALSE(refused.ok);
     EXPECT_NE(refused.error.find("shadow.resolution"), std::string::npos) << refused.error;
@@ -243,10 +243,10 @@ TEST_F(AccuracyMeterTest, SpotLightConeIsCounted) {
     const Scene scene = loadBuiltin("textbook");
     AccuracyMeter meter;
     Settings settings = loadShippedPreset("default");
-    settings.light.type = LightType::Spot;
-    settings.light.position = glm::vec3(2.0f, 9.0f, 2.0f);
-    settings.light.direction = glm::vec3(-0.2f, -1.0f, -0.2f);
-    settings.light.spotConeDeg = 50.0f;
+    settings.lights[0].type = LightType::Spot;
+    settings.lights[0].position = glm::vec3(2.0f, 9.0f, 2.0f);
+    settings.lights[0].direction = glm::vec3(-0.2f, -1.0f, -0.2f);
+    settings.lights[0].spotConeDeg = 50.0f;
     const AccuracyReport r = meter.measure(scene, settings, cameraFor(settings.camera, scene, double(kWidth) / kHeight), kWidth, kHeight);
     ASSERT_TRUE(r.ok) << r.error;
     saveOverlay(r, "textbook-spot");
@@ -261,10 +261,10 @@ TEST_F(AccuracyMeterTest, DepthBiasUnitsMatchTheRenderersBiasAmount) {
     for (LightType type : {LightType::Directional, LightType::Spot}) {
         for (DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
             Settings settings;
-            settings.light.type = type;
-            settings.shadow.format = format;
-            settings.shadow.depthBias = 1000.0f;
-            settings.shadow.slopeScaledDepthBias = 0.0f;
+            settings.lights[0].type = type;
+            settings.lights[0].shadow.format = format;
+            settings.lights[0].shadow.depthBias = 1000.0f;
+            settings.lights[0].shadow.slopeScaledDepthBias = 0.0f;
             const View view = renderView(renderer, scene, settings, 64, 64);
             ASSERT_TRUE(view.stats.ok);
             const double perUnit = depthBiasUnitTexels(view.stats.light, format,

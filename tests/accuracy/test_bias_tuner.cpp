@@ -15,9 +15,9 @@ namespace {
 class BiasTunerTest : public GlTest {};
 
 Settings zeroBias(Settings s) {
-    s.shadow.depthBias = 0.0f;
-    s.shadow.slopeScaledDepthBias = 0.0f;
-    s.shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
     return s;
 }
 
@@ -58,9 +58,9 @@ TEST_F(BiasTunerTest, FromZeroBiasEndsWithinTheAcneLimitWithLessLeakThanPeterPan
         EXPECT_LT(again.leakPercent, panning.leakPercent);
         // Only the three searched values change.
         Settings other = result.best;
-        other.shadow.depthBias = start.shadow.depthBias;
-        other.shadow.slopeScaledDepthBias = start.shadow.slopeScaledDepthBias;
-        other.shadow.normalOffset = start.shadow.normalOffset;
+        other.lights[0].shadow.depthBias = start.lights[0].shadow.depthBias;
+        other.lights[0].shadow.slopeScaledDepthBias = start.lights[0].shadow.slopeScaledDepthBias;
+        other.lights[0].shadow.normalOffset = start.lights[0].shadow.normalOffset;
         EXPECT_EQ(other, start) << "no culled casters here: the cull mode stays";
     }
 }
@@ -111,9 +111,9 @@ TEST_F(BiasTunerTest, ResultIsTheBestCandidateOfItsPath) {
     ASSERT_TRUE(result.ok) << result.error;
     ASSERT_TRUE(result.reachedLimit);
     const auto chosen = std::find_if(result.path.begin(), result.path.end(), [&](const TuneStep& s) {
-        return s.depthBias == result.best.shadow.depthBias &&
-               s.slopeScaledDepthBias == result.best.shadow.slopeScaledDepthBias &&
-               s.normalOffset == result.best.shadow.normalOffset && s.cullMode == result.best.shadow.cullMode;
+        return s.depthBias == result.best.lights[0].shadow.depthBias &&
+               s.slopeScaledDepthBias == result.best.lights[0].shadow.slopeScaledDepthBias &&
+               s.normalOffset == result.best.lights[0].shadow.normalOffset && s.cullMode == result.best.lights[0].shadow.cullMode;
     });
     ASSERT_NE(chosen, result.path.end());
     EXPECT_LE(chosen->acnePercent, 0.1);
@@ -129,7 +129,7 @@ TEST_F(BiasTunerTest, RoofLeakIsACulledCasterAndTheTunerPicksACullModeThatFixesI
     const Scene scene = loadBuiltin("roof");
     AccuracyMeter meter;
     Settings backCulled = loadShippedPreset("default");
-    backCulled.shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
+    backCulled.lights[0].shadow.cullMode = CullMode::Back;  // drops the single-sided roof (the default, none, keeps it)
     const Settings start = zeroBias(backCulled);
     const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
     const AccuracyReport culled = meter.measure(scene, backCulled, camera, 480, 270);
@@ -149,7 +149,7 @@ TEST_F(BiasTunerTest, RoofLeakIsACulledCasterAndTheTunerPicksACullModeThatFixesI
     ASSERT_TRUE(result.ok) << result.error;
     ASSERT_TRUE(result.reachedLimit);
     EXPECT_TRUE(fractionRises) << "the progress bar only moves forward while the cull-mode search adds steps";
-    EXPECT_NE(result.best.shadow.cullMode, CullMode::Back);
+    EXPECT_NE(result.best.lights[0].shadow.cullMode, CullMode::Back);
     const AccuracyReport fixed = meter.measure(scene, result.best, camera, 480, 270);
     ASSERT_TRUE(fixed.ok) << fixed.error;
     saveOverlay(fixed, "roof-tuned");
@@ -165,12 +165,12 @@ TEST_F(BiasTunerTest, GrazingWithABiasClampNeverAcceptsFaintAcne) {
     const Scene scene = loadBuiltin("grazing");
     AccuracyMeter meter;
     Settings start = loadShippedPreset("default");
-    start.shadow.depthBiasClamp = 0.001f;
+    start.lights[0].shadow.depthBiasClamp = 0.001f;
     const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
     Settings acceptedByVersion1 = start;
-    acceptedByVersion1.shadow.depthBias = 0.0f;
-    acceptedByVersion1.shadow.slopeScaledDepthBias = 0.0f;
-    acceptedByVersion1.shadow.normalOffset = 1.0f;
+    acceptedByVersion1.lights[0].shadow.depthBias = 0.0f;
+    acceptedByVersion1.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    acceptedByVersion1.lights[0].shadow.normalOffset = 1.0f;
     const AccuracyReport faint = meter.measure(scene, acceptedByVersion1, camera, 640, 360);
     ASSERT_TRUE(faint.ok) << faint.error;
     saveOverlay(faint, "grazing-clamp-faint");
@@ -200,11 +200,11 @@ TEST_F(BiasTunerTest, AlphaBlendModeTestStripesCountAsAcneAndTuneDoesNotAcceptTh
     const Scene& scene = *loaded.scene;
     AccuracyMeter meter;
     Settings start = loadShippedPreset("acne");
-    start.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    start.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
     start.filter.kind = FilterKind::Pcf;
     const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
     Settings striped = start;
-    striped.shadow.depthBias = 2816.0f;
+    striped.lights[0].shadow.depthBias = 2816.0f;
     const AccuracyReport stripes = meter.measure(scene, striped, camera, 640, 360);
     ASSERT_TRUE(stripes.ok) << stripes.error;
     saveOverlay(stripes, "alphablend-light-down-stripes");
@@ -233,10 +233,10 @@ TEST_F(BiasTunerTest, SaysWhenNoSettingReachesTheLimit) {
 
     // A map smaller than the floor that wraps around: the floor outside it reads the caster and floor depths of the
     // opposite side, far above it. No bias clears that (HARD_CASES 6), so the limit cannot be reached.
-    start.projection.autoFit = false;
-    start.projection.orthoSize = 8.0f;
-    start.projection.nearPlane = 0.01f;
-    start.projection.farPlane = 40.0f;
+    start.lights[0].projection.autoFit = false;
+    start.lights[0].projection.orthoSize = 8.0f;
+    start.lights[0].projection.nearPlane = 0.01f;
+    start.lights[0].projection.farPlane = 40.0f;
     start.sampler.addressMode = AddressMode::Wrap;
     const TuneResult result = tuneBias(meter, scene, start, camera, 160, 90, 0.1);
     ASSERT_TRUE(result.ok) << result.error;

@@ -25,9 +25,9 @@ DepthProfile profileOf(const std::string& sceneName, const Settings& settings, g
 }
 
 Settings zeroBias(Settings s) {
-    s.shadow.depthBias = 0.0f;
-    s.shadow.slopeScaledDepthBias = 0.0f;
-    s.shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
     return s;
 }
 

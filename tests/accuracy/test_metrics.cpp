@@ -149,7 +149,7 @@ class HiddenBoundary : public GlTest {};
 TEST_F(HiddenBoundary, ProbeFindsAShadowEdgeTheViewDoesNotShow) {
     const Scene scene = loadBuiltin("textbook");
     Settings settings;
-    settings.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);  // straight down: the cube's shadow is x, z in [-1, 1]
+    settings.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);  // straight down: the cube's shadow is x, z in [-1, 1]
     const glm::dvec3 origin(scene.bounds.center());
     std::string error;
     const std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, origin, error);

@@ -51,7 +51,7 @@ Sweep sweep(const Scene& scene, const Settings& settings, int w = 160, int h = 9
 Settings withFilter(Settings s, FilterKind kind, int kernel = 3, int resolution = 2048) {
     s.filter.kind = kind;
     s.filter.kernel = kernel;
-    s.shadow.resolution = resolution;
+    s.lights[0].shadow.resolution = resolution;
     return s;
 }
 
@@ -71,7 +71,7 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryFilter) {
         // The view holds lit floor, shadow and (filtered) edges: the test covers all three.
         EXPECT_GT(s.lit, 100);
         EXPECT_GT(s.shadowed, 20);
-        if (settings.filter.kind != FilterKind::Point) EXPECT_GE(s.partial, settings.shadow.resolution < 2048 ? 20 : 1);
+        if (settings.filter.kind != FilterKind::Point) EXPECT_GE(s.partial, settings.lights[0].shadow.resolution < 2048 ? 20 : 1);
         EXPECT_LT(s.uncertain, s.surfaces / 20) << "rounding decides too many pixels";
     }
 }
@@ -93,9 +93,9 @@ TEST_F(PixelProbeTest, AcneAtZeroBiasIsExplainedTapByTap) {
     // split into lit and shadowed ones — the stripes of acne. The probe must still agree with the GPU.
     const Scene scene = loadBuiltin("grazing");
     Settings s = loadShippedPreset("default");
-    s.shadow.depthBias = 0.0f;
-    s.shadow.slopeScaledDepthBias = 0.0f;
-    s.shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
     const Sweep acne = sweep(scene, s);
     EXPECT_EQ(acne.disagree, 0) << acne.firstDisagreement;
     EXPECT_GT(acne.mixedTaps, acne.surfaces / 10) << "zero bias should split the taps of many receivers";
@@ -109,18 +109,18 @@ TEST_F(PixelProbeTest, AcneAtZeroBiasIsExplainedTapByTap) {
 TEST_F(PixelProbeTest, SpotLightWrapAndBorderAgreeToo) {
     const Scene scene = loadBuiltin("textbook");
     Settings spot = loadShippedPreset("default");
-    spot.light.type = LightType::Spot;
-    spot.light.position = {3.0f, 9.0f, 2.0f};
-    spot.light.direction = {-0.3f, -1.0f, -0.2f};
-    spot.light.spotConeDeg = 70.0f;
+    spot.lights[0].type = LightType::Spot;
+    spot.lights[0].position = {3.0f, 9.0f, 2.0f};
+    spot.lights[0].direction = {-0.3f, -1.0f, -0.2f};
+    spot.lights[0].spotConeDeg = 70.0f;
     const Sweep s = sweep(scene, spot);
     EXPECT_EQ(s.disagree, 0) << s.firstDisagreement;
     EXPECT_GT(s.shadowed, 20);
     Settings wrap = loadShippedPreset("default");
-    wrap.projection.autoFit = false;
-    wrap.projection.orthoSize = 8.0f;  // the view reaches outside the light's volume
-    wrap.projection.nearPlane = 0.1f;
-    wrap.projection.farPlane = 60.0f;
+    wrap.lights[0].projection.autoFit = false;
+    wrap.lights[0].projection.orthoSize = 8.0f;  // the view reaches outside the light's volume
+    wrap.lights[0].projection.nearPlane = 0.1f;
+    wrap.lights[0].projection.farPlane = 60.0f;
     for (AddressMode mode : {AddressMode::Wrap, AddressMode::ClampToEdge, AddressMode::ClampToBorder}) {
         wrap.sampler.addressMode = mode;
         const Sweep w = sweep(scene, withFilter(wrap, FilterKind::Hardware2x2));
@@ -131,11 +131,11 @@ TEST_F(PixelProbeTest, SpotLightWrapAndBorderAgreeToo) {
 TEST_F(PixelProbeTest, ReportsTheBiasTermsAndTapsOfOneFloorPixel) {
     const Scene scene = loadBuiltin("textbook");
     Settings s = topDownShadowView(loadShippedPreset("default"));
-    s.light.direction = {0.0f, -1.0f, 0.0f};
-    s.shadow.depthBias = 4.0f;
-    s.shadow.slopeScaledDepthBias = 3.0f;
-    s.shadow.depthBiasClamp = 0.01f;
-    s.shadow.normalOffset = 1.5f;
+    s.lights[0].direction = {0.0f, -1.0f, 0.0f};
+    s.lights[0].shadow.depthBias = 4.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 3.0f;
+    s.lights[0].shadow.depthBiasClamp = 0.01f;
+    s.lights[0].shadow.normalOffset = 1.5f;
     s.filter = {FilterKind::Pcf, 5, 2.0f};
     Renderer renderer;
     PixelProbe probe;
@@ -180,9 +180,9 @@ TEST_F(PixelProbeTest, ReportsTheBiasTermsAndTapsOfOneFloorPixel) {
 TEST_F(PixelProbeTest, CopiesTheMeasurementsVerdictAndCause) {
     const Scene scene = loadBuiltin("grazing");
     Settings s = loadShippedPreset("default");
-    s.shadow.depthBias = 0.0f;
-    s.shadow.slopeScaledDepthBias = 0.0f;
-    s.shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
     const int w = 160, h = 90;
     const Camera camera = cameraFor(s.camera, scene, double(w) / h);
     AccuracyMeter meter;

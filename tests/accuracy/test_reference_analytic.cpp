@@ -59,7 +59,7 @@ TEST_F(ReferenceAnalytic, SphereShadowIsTheClosedFormEllipseWithinOnePixel) {
     const Scene scene = loadBuiltin("sphere-plane");
     Settings settings = topDownAt(Settings{}, 1.2f, 0.8f, 9.0f);
     const glm::dvec3 lightDirection = glm::normalize(glm::dvec3(0.6, -1.0, 0.4));
-    settings.light.direction = glm::vec3(lightDirection);
+    settings.lights[0].direction = glm::vec3(lightDirection);
     const ReferenceView view = traceReference(scene, settings, 640, 360);
 
     // A floor point is shadowed when its ray toward the light passes within r of the sphere's centre: the cylinder
@@ -85,7 +85,7 @@ TEST_F(ReferenceAnalytic, FenceMaskIsAlphaTestedAtTheHit) {
     const Scene scene = loadBuiltin("fence");
     Settings settings = topDownAt(Settings{}, 0.0f, -1.8f, 9.0f);
     const glm::vec3 lightDirection(-0.3f, -1.0f, -1.0f);
-    settings.light.direction = lightDirection;
+    settings.lights[0].direction = lightDirection;
     const ReferenceView view = traceReference(scene, settings, 640, 360);
 
     auto inShadow = [&](const glm::dvec3& p) { return builtin::fenceShadowsPoint(glm::vec3(p), lightDirection); };
@@ -112,17 +112,17 @@ TEST_F(ReferenceAnalytic, FenceMaskIsAlphaTestedAtTheHit) {
 TEST_F(ReferenceAnalytic, SpotLightOutsideItsConeIsUnlit) {
     const Scene scene = loadBuiltin("textbook");
     Settings settings = topDownAt(Settings{}, 0.0f, 0.0f, 14.0f);
-    settings.light.type = LightType::Spot;
-    settings.light.position = glm::vec3(0.5f, 8.0f, 0.5f);
-    settings.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    settings.light.spotConeDeg = 40.0f;
+    settings.lights[0].type = LightType::Spot;
+    settings.lights[0].position = glm::vec3(0.5f, 8.0f, 0.5f);
+    settings.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    settings.lights[0].spotConeDeg = 40.0f;
     const ReferenceView view = traceReference(scene, settings, 320, 240);
     const double halfCone = glm::radians(20.0);
     long inside = 0, outside = 0, shadowed = 0;
     for (std::size_t i = 0; i < view.samples.size(); ++i) {
         const PixelClass c = view.visibility.classes[i];
         if (c == PixelClass::Background || c == PixelClass::FacingAway) continue;
-        const glm::dvec3 fromLight = glm::normalize(view.world(i) - glm::dvec3(settings.light.position));
+        const glm::dvec3 fromLight = glm::normalize(view.world(i) - glm::dvec3(settings.lights[0].position));
         const double angle = std::acos(std::clamp(fromLight.y * -1.0, -1.0, 1.0));
         if (c == PixelClass::OutsideCone) {
             ++outside;
@@ -144,7 +144,7 @@ TEST_F(ReferenceAnalytic, ReceiversFacingAwayAreNotScoredButUnlit) {
     settings.camera.autoFrame = false;
     settings.camera.position = glm::vec3(6.0f, 1.0f, 0.0f);  // low, beside the sphere: sees its underside
     settings.camera.target = glm::vec3(0.0f, 2.0f, 0.0f);
-    settings.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    settings.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
     const ReferenceView view = traceReference(scene, settings, 320, 240);
     long facingAway = 0;
     for (std::size_t i = 0; i < view.samples.size(); ++i) {

@@ -54,7 +54,7 @@ Scene roofs() {
 Settings fromAbove() {
     Settings s = topDownShadowView(Settings{});
     s.view = ViewMode::Lit;
-    s.light.direction = {0.0f, -1.0f, 0.0f};
+    s.lights[0].direction = {0.0f, -1.0f, 0.0f};
     s.camera.position = {0.0, 20.0, 0.1};
     return s;
 }

@@ -96,7 +96,13 @@ if wait_for test -f "$saved"; then
 import json, sys
 saved, shipped = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
 for meta in ("name", "description"): saved.pop(meta, None); shipped.pop(meta, None)
-shipped["shadow"]["resolution"] = 1024
+# The shipped preset is schema 1 (one light); the editor saves schema 2: the same values, as light 0.
+light = shipped.pop("light")
+ambient, scene_lights = light.pop("ambient"), light.pop("useSceneLight")
+light.update(range=0.0, color=[1.0, 1.0, 1.0], enabled=True, castsShadows=True,
+             shadow=shipped.pop("shadow"), projection=shipped.pop("projection"))
+shipped.update(schemaVersion=2, ambient=ambient, useSceneLights=scene_lights, lights=[light])
+shipped["lights"][0]["shadow"]["resolution"] = 1024
 # The save records the scene and the camera as shown; nobody moved it, so it stays auto-framed.
 if saved.pop("scene", None) != "builtin:textbook": print("no scene recorded"); sys.exit(1)
 for key in ("position", "target"): saved["camera"].pop(key); shipped["camera"].pop(key)

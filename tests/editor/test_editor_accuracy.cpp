@@ -149,15 +149,15 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     const PresetLoadResult base = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/default.json");
     ASSERT_TRUE(base.settings.has_value());
     Settings zero = *base.settings;
-    zero.shadow.depthBias = 0.0f;
-    zero.shadow.slopeScaledDepthBias = 0.0f;
-    zero.shadow.normalOffset = 0.0f;
+    zero.lights[0].shadow.depthBias = 0.0f;
+    zero.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    zero.lights[0].shadow.normalOffset = 0.0f;
     const std::string path = (folder / "zero-bias.json").string();
     ASSERT_EQ(savePresetFile(path, zero, "zero-bias"), "");
     open(path);
     EditorHarness& h = *harness;
     const AccuracyState& a = h.state().accuracy;
-    ASSERT_EQ(h.state().settings.shadow.depthBias, 0.0f);
+    ASSERT_EQ(h.state().settings.lights[0].shadow.depthBias, 0.0f);
     ASSERT_FALSE(h.state().preset.dirty(h.state().settings));
 
     h.click("accuracy.measure");
@@ -182,10 +182,10 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     EXPECT_GE(a.steps.size(), 3u);
     EXPECT_EQ(a.steps.size(), a.tune->path.size());
     // Applied through the key table: the settings carry the result and the preset shows unsaved changes.
-    const ShadowMapSettings& best = a.tune->best.shadow;
-    EXPECT_EQ(h.state().settings.shadow.depthBias, best.depthBias);
-    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, best.slopeScaledDepthBias);
-    EXPECT_EQ(h.state().settings.shadow.normalOffset, best.normalOffset);
+    const ShadowMapSettings& best = a.tune->best.lights[0].shadow;
+    EXPECT_EQ(h.state().settings.lights[0].shadow.depthBias, best.depthBias);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, best.slopeScaledDepthBias);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.normalOffset, best.normalOffset);
     EXPECT_GT(best.depthBias + best.slopeScaledDepthBias + best.normalOffset, 0.0f);
     EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
     EXPECT_NE(h.editor().windowTitle().find(" *"), std::string::npos);
@@ -202,7 +202,7 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     ASSERT_TRUE(std::filesystem::exists(saved));
     const PresetLoadResult back = loadPresetFile(saved.string());
     ASSERT_TRUE(back.settings.has_value());
-    EXPECT_EQ(back.settings->shadow.depthBias, best.depthBias);
+    EXPECT_EQ(back.settings->lights[0].shadow.depthBias, best.depthBias);
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
 }
 
@@ -339,7 +339,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     const PresetLoadResult base = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/default.json");
     ASSERT_TRUE(base.settings.has_value());
     Settings backCulled = *base.settings;
-    backCulled.shadow.cullMode = CullMode::Back;
+    backCulled.lights[0].shadow.cullMode = CullMode::Back;
     const std::string path = (folder / "cull-back.json").string();
     ASSERT_EQ(savePresetFile(path, backCulled, "cull-back"), "");
     open(path);
@@ -347,7 +347,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     h.editor().requestScene("builtin:roof");
     h.settle();
     ASSERT_EQ(h.state().sceneSpec, "builtin:roof");
-    ASSERT_EQ(h.state().settings.shadow.cullMode, CullMode::Back);
+    ASSERT_EQ(h.state().settings.lights[0].shadow.cullMode, CullMode::Back);
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.measure");
     waitForJob();
@@ -378,8 +378,8 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     waitForJob(300.0);
     ASSERT_TRUE(a.tune.has_value()) << a.error;
     ASSERT_TRUE(a.tune->reachedLimit);
-    EXPECT_NE(h.state().settings.shadow.cullMode, CullMode::Back) << "the applied settings carry the new cull mode";
-    EXPECT_EQ(h.state().settings.shadow.cullMode, a.tune->best.shadow.cullMode);
+    EXPECT_NE(h.state().settings.lights[0].shadow.cullMode, CullMode::Back) << "the applied settings carry the new cull mode";
+    EXPECT_EQ(h.state().settings.lights[0].shadow.cullMode, a.tune->best.lights[0].shadow.cullMode);
     EXPECT_LT(a.report->leakPercent, 1.0);
     EXPECT_EQ(a.stale, "");
     h.saveWindow("accuracy-roof-suggested");

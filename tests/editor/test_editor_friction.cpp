@@ -35,7 +35,7 @@ TEST_F(EditorFriction, SwitchingTheViewModeDoesNotMarkThePresetChanged) {
     EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
     h.click("preset.revert");
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
-    EXPECT_EQ(h.state().settings.shadow.resolution, 2048);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 2048);
     EXPECT_EQ(h.state().settings.view, ViewMode::Shadow);
 }
 
@@ -87,7 +87,7 @@ TEST_F(EditorFriction, EscapeClosesAnOpenCombo) {
     EXPECT_EQ(h.state().settings.view, ViewMode::Lit);
     // The next click works normally (nothing swallowed by a stale popup).
     h.click("shadow.resolution=1K");
-    EXPECT_EQ(h.state().settings.shadow.resolution, 1024);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 1024);
 }
 
 }  // namespace shadowlab::editor::test

@@ -71,9 +71,9 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorLayout,
 
 TEST_F(EditorPanels, DraggingDepthBiasRaisesItAndTheNextFrameRedrawsTheShadowMap) {
     EditorHarness& h = *harness;
-    const float before = h.state().settings.shadow.depthBias;
+    const float before = h.state().settings.lights[0].shadow.depthBias;
     h.drag("shadow.depthBias", 60.0f, 0.0f);
-    EXPECT_GT(h.state().settings.shadow.depthBias, before + 10.0f);
+    EXPECT_GT(h.state().settings.lights[0].shadow.depthBias, before + 10.0f);
     h.frame();
     EXPECT_TRUE(h.state().stats.shadowPass.ran);
     EXPECT_EQ(h.state().stats.shadowPass.reason, "bias changed");
@@ -84,29 +84,29 @@ TEST_F(EditorPanels, ClickingTheSlopeSliderSetsTheValueUnderTheMouse) {
     const ControlRect r = h.rect("shadow.slopeScaledDepthBias");
     // The slider's range is 0..10 over the frame's width (minus the grab): three quarters along is about 7.5.
     h.clickAt(r.x + r.w * 0.75f, r.centerY());
-    EXPECT_NEAR(h.state().settings.shadow.slopeScaledDepthBias, 7.5f, 0.5f);
+    EXPECT_NEAR(h.state().settings.lights[0].shadow.slopeScaledDepthBias, 7.5f, 0.5f);
 }
 
 TEST_F(EditorPanels, TypedSlopeOutsideItsRangeIsRefusedAndThePreviousValueKept) {
     EditorHarness& h = *harness;
-    const float before = h.state().settings.shadow.slopeScaledDepthBias;
+    const float before = h.state().settings.lights[0].shadow.slopeScaledDepthBias;
     h.ctrlClick("shadow.slopeScaledDepthBias");  // Ctrl+click turns the slider into a text field
     h.selectAllAndType("250");
-    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, before);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, before);
     const std::string* error = h.state().fieldError("shadow.slopeScaledDepthBias");
     ASSERT_NE(error, nullptr);
     EXPECT_NE(error->find("out of range"), std::string::npos) << *error;
     // 1e39 overflows a float: infinity is refused too.
     h.ctrlClick("shadow.slopeScaledDepthBias");
     h.selectAllAndType("1e39");
-    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, before);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, before);
     error = h.state().fieldError("shadow.slopeScaledDepthBias");
     ASSERT_NE(error, nullptr);
     EXPECT_NE(error->find("finite"), std::string::npos) << *error;
     // A good typed value clears the refusal.
     h.ctrlClick("shadow.slopeScaledDepthBias");
     h.selectAllAndType("3.5");
-    EXPECT_EQ(h.state().settings.shadow.slopeScaledDepthBias, 3.5f);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, 3.5f);
     EXPECT_EQ(h.state().fieldError("shadow.slopeScaledDepthBias"), nullptr);
 }
 
@@ -126,7 +126,7 @@ TEST_F(EditorPanels, FilterComboSwitchesToPoissonAndShowsItsRadius) {
 TEST_F(EditorPanels, ResolutionQuickPickReallocatesTheMap) {
     EditorHarness& h = *harness;
     h.click("shadow.resolution=1K");
-    EXPECT_EQ(h.state().settings.shadow.resolution, 1024);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 1024);
     h.frame();
     EXPECT_EQ(h.editor().renderer().shadowMap().resolution(), 1024);
     EXPECT_EQ(h.state().stats.shadowMapResolution, 1024);
@@ -141,7 +141,7 @@ TEST_F(EditorPanels, ResolutionAboveTheGpuLimitIsRefusedWithAMessageAndTheMapKep
     h.click("shadow.resolution");
     h.selectAllAndType(std::to_string(tooBig));
     h.frame(2);
-    EXPECT_EQ(h.state().settings.shadow.resolution, 2048);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 2048);
     EXPECT_EQ(h.editor().renderer().shadowMap().resolution(), 2048);
     EXPECT_EQ(h.editor().renderer().shadowMap().generation(), generation);
     const std::string* error = h.state().fieldError("shadow.resolution");
@@ -153,22 +153,22 @@ TEST_F(EditorPanels, ResolutionAboveTheGpuLimitIsRefusedWithAMessageAndTheMapKep
 
 TEST_F(EditorPanels, LightAnglesAndProjectionControlsReachTheSettings) {
     EditorHarness& h = *harness;
-    const glm::vec3 before = h.state().settings.light.direction;
+    const glm::vec3 before = h.state().settings.lights[0].direction;
     h.drag("light.azimuth", 50.0f, 0.0f);
-    const glm::vec3 after = h.state().settings.light.direction;
+    const glm::vec3 after = h.state().settings.lights[0].direction;
     EXPECT_GT(std::abs(after.x - before.x) + std::abs(after.z - before.z), 0.05f);
 
     h.click("light.type");
     h.click("light.type=spot");
-    EXPECT_EQ(h.state().settings.light.type, LightType::Spot);
+    EXPECT_EQ(h.state().settings.lights[0].type, LightType::Spot);
     EXPECT_TRUE(h.hasControl("light.spotConeDeg"));
 
-    EXPECT_TRUE(h.state().settings.projection.autoFit);
+    EXPECT_TRUE(h.state().settings.lights[0].projection.autoFit);
     h.click("projection.autoFit");
-    EXPECT_FALSE(h.state().settings.projection.autoFit);
-    const float far = h.state().settings.projection.farPlane;
+    EXPECT_FALSE(h.state().settings.lights[0].projection.autoFit);
+    const float far = h.state().settings.lights[0].projection.farPlane;
     h.drag("projection.far", 40.0f, 0.0f);
-    EXPECT_GT(h.state().settings.projection.farPlane, far);
+    EXPECT_GT(h.state().settings.lights[0].projection.farPlane, far);
     h.frame();
     EXPECT_TRUE(h.state().stats.ok) << h.state().stats.error;
 }
@@ -177,7 +177,7 @@ TEST_F(EditorPanels, DepthFormatComboReallocatesTheMapOnTheNextFrame) {
     EditorHarness& h = *harness;
     h.click("shadow.depthFormat");
     h.click("shadow.depthFormat=d16");
-    EXPECT_EQ(h.state().settings.shadow.format, DepthFormat::D16);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.format, DepthFormat::D16);
     h.frame();
     EXPECT_EQ(h.editor().renderer().shadowMap().format(), DepthFormat::D16);
     EXPECT_EQ(h.state().stats.shadowMapBytes, std::size_t(2048) * 2048 * 2);

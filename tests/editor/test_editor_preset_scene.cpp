@@ -88,7 +88,7 @@ TEST_F(EditorPresetScene, AScreenshotCarriesThePresetAndTheSceneAndLoadsBackAsAP
     PresetLoadResult loaded = loadPresetFile(shot);
     ASSERT_TRUE(loaded.settings) << loaded.errors.front();
     EXPECT_EQ(loaded.scene, "builtin:textbook");
-    EXPECT_EQ(loaded.settings->shadow.resolution, 1024);
+    EXPECT_EQ(loaded.settings->lights[0].shadow.resolution, 1024);
     EXPECT_LT(glm::length(loaded.settings->camera.position - eye()), 1e-9) << "the camera of the picture";
 
     // Loading the picture as a preset brings its view back; it is never saved over (Save asks for a name).

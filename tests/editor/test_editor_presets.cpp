@@ -58,11 +58,11 @@ TEST_F(EditorPresets, CtrlSOnAShippedPresetSavesACopyInTheUserFolderThatLoadsBac
     PresetLoadResult loaded = loadPresetFile(saved.string());
     ASSERT_TRUE(loaded.settings.has_value());
     EXPECT_EQ(*loaded.settings, h.state().settings);
-    EXPECT_EQ(loaded.settings->shadow.resolution, 1024);
+    EXPECT_EQ(loaded.settings->lights[0].shadow.resolution, 1024);
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
     EXPECT_FALSE(h.state().preset.shipped());
     // The shipped file is untouched, and the user's copy is listed.
-    EXPECT_EQ(shipped("default").shadow.resolution, 2048);
+    EXPECT_EQ(shipped("default").lights[0].shadow.resolution, 2048);
     h.frame();
     EXPECT_TRUE(h.hasControl("preset.user=my-tuned"));
 
@@ -70,7 +70,7 @@ TEST_F(EditorPresets, CtrlSOnAShippedPresetSavesACopyInTheUserFolderThatLoadsBac
     h.click("shadow.resolution=512");
     h.pressKey(keys::kS, /*ctrl=*/true);
     EXPECT_FALSE(h.hasControl("saveAs.name"));
-    EXPECT_EQ(loadPresetFile(saved.string()).settings->shadow.resolution, 512);
+    EXPECT_EQ(loadPresetFile(saved.string()).settings->lights[0].shadow.resolution, 512);
 }
 
 TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
@@ -79,7 +79,7 @@ TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
     h.click("preset.shipped=soft");
     ASSERT_TRUE(h.hasControl("dialog.cancel")) << "the unsaved-changes question was not asked";
     h.click("dialog.cancel");
-    EXPECT_EQ(h.state().settings.shadow.resolution, 1024) << "Cancel keeps the edits";
+    EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 1024) << "Cancel keeps the edits";
     EXPECT_EQ(h.state().preset.name(), "default");
 
     h.click("preset.shipped=soft");
@@ -125,9 +125,9 @@ TEST_F(EditorPresets, SaveAsRefusesToReplaceAnExistingFileUnlessAsked) {
     h.click("preset.saveAs");
     h.selectAllAndType("mine");
     ASSERT_TRUE(h.hasControl("saveAs.replace")) << "an existing name must be confirmed";
-    EXPECT_EQ(loadPresetFile((folder / "user-presets" / "mine.json").string()).settings->shadow.resolution, 2048);
+    EXPECT_EQ(loadPresetFile((folder / "user-presets" / "mine.json").string()).settings->lights[0].shadow.resolution, 2048);
     h.click("saveAs.replace");
-    EXPECT_EQ(loadPresetFile((folder / "user-presets" / "mine.json").string()).settings->shadow.resolution, 4096);
+    EXPECT_EQ(loadPresetFile((folder / "user-presets" / "mine.json").string()).settings->lights[0].shadow.resolution, 4096);
 }
 
 TEST(EditorStart, ABadStartPresetIsReportedAndDefaultsAreUsed) {

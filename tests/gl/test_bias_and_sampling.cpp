@@ -62,11 +62,11 @@ TEST_F(BiasAndSampling, EveryShippedPresetButAcneLeavesTheGrazingPlaneFullyLit) 
 // the floor point (8,0,0) lies outside it, and wrapping brings it back onto the cube at x=0.
 Settings outsideTheMap(AddressMode mode, float borderDepth) {
     Settings s = loadShippedPreset("default");
-    s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    s.projection.autoFit = false;
-    s.projection.orthoSize = 8.0f;
-    s.projection.nearPlane = 0.1f;
-    s.projection.farPlane = 30.0f;
+    s.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.lights[0].projection.autoFit = false;
+    s.lights[0].projection.orthoSize = 8.0f;
+    s.lights[0].projection.nearPlane = 0.1f;
+    s.lights[0].projection.farPlane = 30.0f;
     s.sampler.addressMode = mode;
     s.sampler.borderDepth = borderDepth;
     s.filter.kind = FilterKind::Point;
@@ -109,7 +109,7 @@ TEST_F(BiasAndSampling, LargerKernelsGiveWiderPenumbrae) {
     const Scene scene = loadBuiltin("textbook");
     Settings s = loadShippedPreset("default");
     s.view = ViewMode::Shadow;
-    s.shadow.resolution = 512;  // coarse texels: the penumbra is many pixels wide
+    s.lights[0].shadow.resolution = 512;  // coarse texels: the penumbra is many pixels wide
     long previous = -1;
     for (int kernel : {1, 3, 5, 9}) {
         s.filter.kind = FilterKind::Pcf;

@@ -32,15 +32,15 @@ Scene floorTilted(float tiltDeg) {
 
 Settings farPlaneMillion() {
     Settings s = loadShippedPreset("default");
-    s.light.direction = {0.0f, -1.0f, 0.0f};
-    s.projection.autoFit = false;
-    s.projection.orthoSize = 40.0f;
-    s.projection.nearPlane = 0.1f;
-    s.projection.farPlane = 1e6f;
-    s.shadow.resolution = 256;
-    s.shadow.depthBias = 0.0f;
-    s.shadow.slopeScaledDepthBias = 0.0f;
-    s.shadow.depthBiasClamp = 0.0f;
+    s.lights[0].direction = {0.0f, -1.0f, 0.0f};
+    s.lights[0].projection.autoFit = false;
+    s.lights[0].projection.orthoSize = 40.0f;
+    s.lights[0].projection.nearPlane = 0.1f;
+    s.lights[0].projection.farPlane = 1e6f;
+    s.lights[0].shadow.resolution = 256;
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    s.lights[0].shadow.depthBiasClamp = 0.0f;
     return s;
 }
 
@@ -58,7 +58,7 @@ TEST_F(BiasReportTest, ConstantTermIsTheD32FStepAtTheReceiversDepth) {
     const Scene scene = floorTilted(0.0f);
     Settings s = farPlaneMillion();
     const double unbiased = centreDepth(renderer, scene, s);
-    s.shadow.depthBias = 1000.0f;
+    s.lights[0].shadow.depthBias = 1000.0f;
     FrameStats stats;
     const double biased = centreDepth(renderer, scene, s, &stats);
     const double applied = biased - unbiased;
@@ -82,7 +82,7 @@ TEST_F(BiasReportTest, ConstantTermIsTheD32FStepAtTheReceiversDepth) {
     EXPECT_NEAR(b.constantNear.world, applied * range, 1e-6 * applied * range);
     EXPECT_NEAR(b.constantNear.texels, applied * range / (40.0 / 256.0), 1e-6 * applied * range);
     // The old report's figure for DepthBias 2 was 2 x 2^-24 x 1e6 = 0.119 world units; the truth is 1.8e-6.
-    s.shadow.depthBias = 2.0f;
+    s.lights[0].shadow.depthBias = 2.0f;
     renderView(renderer, scene, s, 64, 64);
     const View view = renderView(renderer, scene, s, 64, 64);
     EXPECT_NEAR(view.stats.bias.constantNear.world, 2.0 * r * range, 1e-9);
@@ -95,7 +95,7 @@ TEST_F(BiasReportTest, SlopeTermAndClampAreWhatThePolygonOffsetApplies) {
     const Scene scene = floorTilted(float(tiltDeg));
     Settings s = farPlaneMillion();
     const double unbiased = centreDepth(renderer, scene, s);
-    s.shadow.slopeScaledDepthBias = 100.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 100.0f;
     FrameStats stats;
     const double applied = centreDepth(renderer, scene, s, &stats) - unbiased;
     // Closed form: the window depth changes tan(tilt) x texel / (far - near) per texel along x.
@@ -109,9 +109,9 @@ TEST_F(BiasReportTest, SlopeTermAndClampAreWhatThePolygonOffsetApplies) {
     EXPECT_NEAR(stats.bias.slope.texels, 100.0 * std::tan(tiltDeg * M_PI / 180.0), 1e-3 * 100.0);
 
     if (!renderer.glInfo().polygonOffsetClamp) GTEST_SKIP() << "no glPolygonOffsetClamp on this GL";
-    s.shadow.depthBiasClamp = float(applied / 4.0);
+    s.lights[0].shadow.depthBiasClamp = float(applied / 4.0);
     const double clamped = centreDepth(renderer, scene, s, &stats) - unbiased;
-    EXPECT_NEAR(clamped, double(s.shadow.depthBiasClamp), 1e-3 * clamped) << "what the GPU stored";
+    EXPECT_NEAR(clamped, double(s.lights[0].shadow.depthBiasClamp), 1e-3 * clamped) << "what the GPU stored";
     EXPECT_NEAR(stats.bias.clamp.depth, clamped, 1e-3 * clamped);
     EXPECT_NEAR(stats.bias.total.depth, clamped, 1e-3 * clamped) << "the clamp limits the total";
 }

@@ -31,7 +31,7 @@ TEST_F(FrameWork, ChangingOneBiasReRunsTheShadowPass) {
     const Scene scene = loadBuiltin("textbook");
     Settings s = loadShippedPreset("default");
     renderView(renderer, scene, s);
-    s.shadow.depthBias += 1.0f;
+    s.lights[0].shadow.depthBias += 1.0f;
     const View changed = renderView(renderer, scene, s);
     EXPECT_TRUE(changed.stats.shadowPass.ran);
     EXPECT_EQ(changed.stats.shadowPass.reason, "bias changed");
@@ -40,11 +40,11 @@ TEST_F(FrameWork, ChangingOneBiasReRunsTheShadowPass) {
     s.view = ViewMode::Shadow;
     s.sampler.addressMode = AddressMode::Wrap;
     EXPECT_FALSE(renderView(renderer, scene, s).stats.shadowPass.ran);
-    s.light.direction.x += 0.01f;
+    s.lights[0].direction.x += 0.01f;
     const View moved = renderView(renderer, scene, s);
     EXPECT_TRUE(moved.stats.shadowPass.ran);
     EXPECT_EQ(moved.stats.shadowPass.reason, "light changed");
-    s.shadow.resolution = 1024;
+    s.lights[0].shadow.resolution = 1024;
     const View resized = renderView(renderer, scene, s);
     EXPECT_TRUE(resized.stats.shadowMapReallocated);
     EXPECT_EQ(resized.stats.shadowMapResolution, 1024);
@@ -64,9 +64,9 @@ TEST_F(FrameWork, ResolutionAboveTheGpuLimitKeepsThePreviousMapWithAMessage) {
     Renderer renderer;
     const Scene scene = loadBuiltin("textbook");
     Settings s = loadShippedPreset("default");
-    s.shadow.resolution = 1024;
+    s.lights[0].shadow.resolution = 1024;
     renderView(renderer, scene, s);
-    s.shadow.resolution = renderer.glInfo().maxTextureSize * 2;
+    s.lights[0].shadow.resolution = renderer.glInfo().maxTextureSize * 2;
     RenderTarget target;
     target.resize(64, 64);
     const FrameStats stats = renderer.render(scene, s, cameraFor(s.camera, scene, 1.0), target);
@@ -82,15 +82,15 @@ TEST_F(FrameWork, InvalidSettingsDrawNothingAndSayWhy) {
     Settings s = loadShippedPreset("default");
     RenderTarget target;
     target.resize(64, 64);
-    s.shadow.depthBias = std::nanf("");
+    s.lights[0].shadow.depthBias = std::nanf("");
     FrameStats stats = renderer.render(scene, s, cameraFor(s.camera, scene, 1.0), target);
     EXPECT_FALSE(stats.ok);
     EXPECT_NE(stats.error.find("shadow.depthBias"), std::string::npos) << stats.error;
     s = loadShippedPreset("default");
-    s.light.direction = glm::vec3(0.0f);
+    s.lights[0].direction = glm::vec3(0.0f);
     stats = renderer.render(scene, s, cameraFor(s.camera, scene, 1.0), target);
     EXPECT_FALSE(stats.ok);
-    EXPECT_NE(stats.error.find("light.direction"), std::string::npos) << stats.error;
+    EXPECT_NE(stats.error.find("lights.0.direction"), std::string::npos) << stats.error;
 }
 
 TEST_F(FrameWork, VariantsCarryOnlyTheFeaturesInUse) {
@@ -98,7 +98,7 @@ TEST_F(FrameWork, VariantsCarryOnlyTheFeaturesInUse) {
     Settings s = loadShippedPreset("default");
     s.filter.kind = FilterKind::Pcf;
     s.filter.kernel = 5;
-    s.shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
     const View textbook = renderView(renderer, loadBuiltin("textbook"), s);
     ASSERT_EQ(textbook.stats.mainVariants.size(), 1u);
     const std::string& variant = textbook.stats.mainVariants[0];
@@ -117,10 +117,10 @@ TEST_F(FrameWork, CastersOutsideTheLightsVolumeAreSkipped) {
     Renderer renderer;
     Scene scene = loadBuiltin("textbook");
     Settings s = loadShippedPreset("default");
-    s.light.type = LightType::Spot;
-    s.light.position = glm::vec3(5.0f, 6.0f, 5.0f);
-    s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    s.light.spotConeDeg = 30.0f;  // a narrow cone over open floor: only the floor is inside it
+    s.lights[0].type = LightType::Spot;
+    s.lights[0].position = glm::vec3(5.0f, 6.0f, 5.0f);
+    s.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.lights[0].spotConeDeg = 30.0f;  // a narrow cone over open floor: only the floor is inside it
     const View view = renderView(renderer, scene, s);
     EXPECT_GT(view.stats.castersSkipped, 0);
     EXPECT_EQ(view.stats.castersDrawn + view.stats.castersSkipped, int(scene.instances.size()));
@@ -136,9 +136,9 @@ TEST_F(FrameWork, MirroredInstancesCastTheSameShadowAsTheirOriginals) {
     // Mirror the scene and the light together: the shadows must mirror exactly.
     for (CullMode cull : {CullMode::Back, CullMode::Front}) {
         Settings s = topDownShadowView(loadShippedPreset("default"));
-        s.shadow.cullMode = cull;
+        s.lights[0].shadow.cullMode = cull;
         const View a = renderView(renderer, plain, s, 200, 200);
-        s.light.direction.x = -s.light.direction.x;
+        s.lights[0].direction.x = -s.lights[0].direction.x;
         const View b = renderView(renderer, mirrored, s, 200, 200);
         const auto dark = [](int red) { return red < 128; };
         const long darkA = a.countScenePixels(dark), darkB = b.countScenePixels(dark);

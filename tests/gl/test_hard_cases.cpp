@@ -23,8 +23,8 @@ TEST_F(HardCases, EveryDepthFormatRendersTheSameShadows) {
     const Scene scene = loadBuiltin("textbook");
     for (DepthFormat format : {DepthFormat::D16, DepthFormat::D24, DepthFormat::D32F}) {
         Settings s = topDownShadowView(loadShippedPreset("default"));
-        s.shadow.format = format;
-        s.shadow.depthBias = format == DepthFormat::D16 ? 4.0f : 2.0f;
+        s.lights[0].shadow.format = format;
+        s.lights[0].shadow.depthBias = format == DepthFormat::D16 ? 4.0f : 2.0f;
         const View view = renderView(renderer, scene, s, 320, 320);
         EXPECT_EQ(view.stats.shadowMapFormat, format);
         EXPECT_LT(view.meanRedAround({-1.4, 0.0, -1.3}, 2), 20.0) << depthFormatName(format);
@@ -60,13 +60,13 @@ TEST_F(HardCases, SlopeBiasClampKeepsTheShadowAttachedAtGrazingLight) {
     scene.computeBounds();
 
     Settings s = topDownShadowView(loadShippedPreset("default"));
-    s.light.direction = glm::vec3(-1.0f, -0.2f, 0.0f);  // 78.7 degrees from vertical: the card's shadow is 5 units off
-    s.shadow.slopeScaledDepthBias = 100.0f;             // ~7 world units on the card: more than its 5.1 to the floor
-    s.shadow.depthBias = 0.0f;
-    s.shadow.normalOffset = 0.0f;
-    s.shadow.depthBiasClamp = 0.0f;
+    s.lights[0].direction = glm::vec3(-1.0f, -0.2f, 0.0f);  // 78.7 degrees from vertical: the card's shadow is 5 units off
+    s.lights[0].shadow.slopeScaledDepthBias = 100.0f;             // ~7 world units on the card: more than its 5.1 to the floor
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.depthBiasClamp = 0.0f;
     const View unclamped = renderView(renderer, scene, s, 400, 400);
-    s.shadow.depthBiasClamp = 0.01f;  // 0.28 world units over the 28-unit fitted depth range: ends the floor acne
+    s.lights[0].shadow.depthBiasClamp = 0.01f;  // 0.28 world units over the 28-unit fitted depth range: ends the floor acne
     const View clamped = renderView(renderer, scene, s, 400, 400);
     saveView(unclamped, "grazing-card-unclamped");
     saveView(clamped, "grazing-card-clamped");
@@ -84,17 +84,17 @@ TEST_F(HardCases, DepthClampKeepsCastersBeforeTheNearPlane) {
     Settings s = topDownShadowView(loadShippedPreset("default"));
     // Back culling: the map holds only the cube's light-facing top, which the near plane clips (with cull mode none
     // the bottom face still casts, clamp or not).
-    s.shadow.cullMode = CullMode::Back;
+    s.lights[0].shadow.cullMode = CullMode::Back;
     const View fitted = renderView(renderer, scene, s, 320, 320);
     const double eyeToCentre = 0.5 * fitted.stats.light.farPlane;  // the auto-fit eye sits one radius before the centre
-    s.projection.autoFit = false;
-    s.projection.orthoSize = float(fitted.stats.light.orthoSize);
+    s.lights[0].projection.autoFit = false;
+    s.lights[0].projection.orthoSize = float(fitted.stats.light.orthoSize);
     // The cube's top face lies within 1 unit of the scene centre along the light; the floor beside it, 2.3 beyond.
-    s.projection.nearPlane = float(eyeToCentre + 0.5);
-    s.projection.farPlane = float(2.0 * eyeToCentre);
-    s.projection.depthClamp = true;
+    s.lights[0].projection.nearPlane = float(eyeToCentre + 0.5);
+    s.lights[0].projection.farPlane = float(2.0 * eyeToCentre);
+    s.lights[0].projection.depthClamp = true;
     const View clamped = renderView(renderer, scene, s, 320, 320);
-    s.projection.depthClamp = false;
+    s.lights[0].projection.depthClamp = false;
     const View unclamped = renderView(renderer, scene, s, 320, 320);
     EXPECT_LT(clamped.meanRedAround({-1.4, 0.0, -1.3}, 2), 20.0) << "depth clamp: the cube still casts";
     EXPECT_GT(unclamped.meanRedAround({-1.4, 0.0, -1.3}, 2), 235.0) << "without it, the clipped top casts nothing";
@@ -148,7 +148,7 @@ TEST_F(HardCases, SceneLightFromGltfIsUsedWhenAsked) {
     sun.direction = glm::vec3(0.4f, -1.0f, 0.3f);  // the mirror image of the default: shadows fall to +x, +z
     scene.lights.push_back(sun);
     Settings s = topDownShadowView(loadShippedPreset("default"));
-    s.light.useSceneLight = true;
+    s.useSceneLights = true;
     const View view = renderView(renderer, scene, s, 320, 320);
     EXPECT_LT(view.meanRedAround({1.4, 0.0, 1.3}, 2), 20.0) << "shadow on the +x,+z side";
     EXPECT_GT(view.meanRedAround({-1.4, 0.0, -1.3}, 2), 235.0) << "the default light's shadow side is lit";
@@ -203,33 +203,33 @@ TEST_F(HardCases, NoNonFiniteUniformReachesTheGpuForExtremeButValidSettings) {
         void (*tweak)(Settings&);
     };
     const Case cases[] = {
-        {"straight down", &textbook, [](Settings& s) { s.light.direction = {0, -1, 0}; }},
-        {"straight up", &textbook, [](Settings& s) { s.light.direction = {0, 1, 0}; }},
-        {"pole tilt 1e-7", &textbook, [](Settings& s) { s.light.direction = {1e-7f, -1, 0}; }},
+        {"straight down", &textbook, [](Settings& s) { s.lights[0].direction = {0, -1, 0}; }},
+        {"straight up", &textbook, [](Settings& s) { s.lights[0].direction = {0, 1, 0}; }},
+        {"pole tilt 1e-7", &textbook, [](Settings& s) { s.lights[0].direction = {1e-7f, -1, 0}; }},
         {"spot 170 degrees", &textbook,
          [](Settings& s) {
-             s.light.type = LightType::Spot;
-             s.light.spotConeDeg = 170.0f;
-             s.light.direction = {0, -1, 0};
+             s.lights[0].type = LightType::Spot;
+             s.lights[0].spotConeDeg = 170.0f;
+             s.lights[0].direction = {0, -1, 0};
          }},
         {"spot inside the scene", &textbook,
          [](Settings& s) {
-             s.light.type = LightType::Spot;
-             s.light.position = {0, 1, 0};  // inside the cube
-             s.light.direction = {1, -0.2f, 0};
+             s.lights[0].type = LightType::Spot;
+             s.lights[0].position = {0, 1, 0};  // inside the cube
+             s.lights[0].direction = {1, -0.2f, 0};
          }},
         {"tiny ortho volume", &textbook,
          [](Settings& s) {
-             s.projection.autoFit = false;
-             s.projection.orthoSize = 1e-3f;
-             s.projection.nearPlane = 1e-4f;
-             s.projection.farPlane = 1e-3f;
+             s.lights[0].projection.autoFit = false;
+             s.lights[0].projection.orthoSize = 1e-3f;
+             s.lights[0].projection.nearPlane = 1e-4f;
+             s.lights[0].projection.farPlane = 1e-3f;
          }},
         {"huge normal offset, D16", &textbook,
          [](Settings& s) {
-             s.shadow.normalOffset = 16.0f;
-             s.shadow.format = DepthFormat::D16;
-             s.shadow.resolution = 16;
+             s.lights[0].shadow.normalOffset = 16.0f;
+             s.lights[0].shadow.format = DepthFormat::D16;
+             s.lights[0].shadow.resolution = 16;
          }},
         {"zero-scale instance", &zeroScale, [](Settings&) {}},
     };
@@ -265,7 +265,7 @@ TEST_F(HardCases, LightSweptAcrossStraightDownStaysFiniteAndStable) {
     std::optional<View> previous;
     for (int step = -10; step <= 10; ++step) {
         const double t = step * 1e-4;
-        s.light.direction = glm::vec3(float(std::sin(t)), float(-std::cos(t)), 0.0f);
+        s.lights[0].direction = glm::vec3(float(std::sin(t)), float(-std::cos(t)), 0.0f);
         const View view = renderView(renderer, scene, s, 200, 150);
         ASSERT_TRUE(allFinite(view.stats.light.viewProjection())) << "t=" << t;
         if (previous) {

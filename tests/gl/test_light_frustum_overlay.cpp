@@ -157,15 +157,15 @@ TEST_F(LightFrustumOverlayTest, HiddenAlphaZeroDrawsOnlyTheVisibleParts) {
 
 TEST_F(LightFrustumOverlayTest, SpotPyramidStartsAtTheLight) {
     Settings settings = loadShippedPreset("default");
-    settings.light.type = LightType::Spot;
-    settings.light.position = {3.0f, 6.0f, 2.0f};
-    settings.light.direction = {-0.4f, -1.0f, -0.3f};
+    settings.lights[0].type = LightType::Spot;
+    settings.lights[0].position = {3.0f, 6.0f, 2.0f};
+    settings.lights[0].direction = {-0.4f, -1.0f, -0.3f};
     render(settings);
     LightFrustumOverlay overlay;
     ASSERT_EQ(overlay.draw(stats_, target_, {kMagenta, 0.3f}), "");
     const std::vector<std::uint8_t> after = target_.readColor();
     saveView(View{kWidth, kHeight, after, stats_}, "light_frustum_overlay_spot");
-    const Projected apex = project(stats_, glm::dvec3(settings.light.position) - stats_.renderOrigin);
+    const Projected apex = project(stats_, glm::dvec3(settings.lights[0].position) - stats_.renderOrigin);
     const int x = int(apex.pixel.x), y = int(apex.pixel.y);
     ASSERT_TRUE(x >= 1 && y >= 1 && x < kWidth - 1 && y < kHeight - 1) << "light off screen";
     double best = 0.0;

@@ -94,7 +94,7 @@ TEST_F(ShadowMapViewTest, AutoRangeIsMeasuredOnlyWhenTheMapChanged) {
     ASSERT_EQ(view.render(map(), stats_.light, true, {}, 256, 256), "");
     const ShownDepthRange first = view.shownRange();
 
-    settings.light.direction = {0.5f, -1.0f, 0.1f};  // a different map
+    settings.lights[0].direction = {0.5f, -1.0f, 0.1f};  // a different map
     render(settings);
     ASSERT_TRUE(stats_.shadowPass.ran);
     ASSERT_EQ(view.render(map(), stats_.light, /*mapRedrawn=*/false, {}, 256, 256), "");
@@ -106,7 +106,7 @@ TEST_F(ShadowMapViewTest, AutoRangeIsMeasuredOnlyWhenTheMapChanged) {
     EXPECT_EQ(view.shownRange().max, expected.max);
 
     // A reallocated map is re-measured even if the caller forgets to say so.
-    settings.shadow.resolution = 512;
+    settings.lights[0].shadow.resolution = 512;
     render(settings);
     ASSERT_EQ(view.render(map(), stats_.light, false, {}, 256, 256), "");
     EXPECT_EQ(view.shownRange().min, writtenDepthRange(depth_).min);
@@ -128,7 +128,7 @@ TEST_F(ShadowMapViewTest, AnUnchangedPictureIsNotRedrawn) {
     EXPECT_TRUE(view.redrawn());
     ASSERT_EQ(view.render(map(), stats_.light, true, options, 201, 200), "");  // the shadow pass ran
     EXPECT_TRUE(view.redrawn());
-    settings.shadow.resolution = 1024;  // a new map
+    settings.lights[0].shadow.resolution = 1024;  // a new map
     render(settings);
     ASSERT_EQ(view.render(map(), stats_.light, false, options, 201, 200), "");
     EXPECT_TRUE(view.redrawn());
@@ -217,9 +217,9 @@ TEST_F(ShadowMapViewTest, HoverGivesTheTexelAndItsStoredDepth) {
 
 TEST_F(ShadowMapViewTest, SpotDepthLinearizedBetweenNearAndFar) {
     Settings settings = loadShippedPreset("default");
-    settings.light.type = LightType::Spot;
-    settings.light.position = {3.0f, 8.0f, 2.0f};
-    settings.light.direction = {-0.3f, -1.0f, -0.2f};
+    settings.lights[0].type = LightType::Spot;
+    settings.lights[0].position = {3.0f, 8.0f, 2.0f};
+    settings.lights[0].direction = {-0.3f, -1.0f, -0.2f};
     render(settings);
     ASSERT_TRUE(stats_.light.perspective);
     EXPECT_NEAR(linearLightDepth(stats_.light, 0.0), 0.0, 1e-9);

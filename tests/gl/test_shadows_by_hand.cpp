@@ -38,10 +38,10 @@ TEST_F(ShadowsByHand, AlphaMaskedFenceLetsLightThroughItsGaps) {
     Renderer renderer;
     const Scene scene = loadBuiltin("fence");
     Settings s = topDownShadowView(loadShippedPreset("default"));
-    s.light.direction = glm::vec3(0.0f, -1.0f, -0.8f);  // the fence (plane z=0) casts onto the floor at z < 0
+    s.lights[0].direction = glm::vec3(0.0f, -1.0f, -0.8f);  // the fence (plane z=0) casts onto the floor at z < 0
     const View view = renderView(renderer, scene, s, 640, 640);
     saveView(view, "fence-shadow-top");
-    const glm::vec3 lightDir = glm::normalize(s.light.direction);
+    const glm::vec3 lightDir = glm::normalize(s.lights[0].direction);
     int litChecked = 0, shadowChecked = 0;
     for (float x = -3.9f; x <= 3.9f; x += 0.05f) {
         for (float z : {-0.6f, -1.0f, -2.2f}) {
@@ -72,7 +72,7 @@ TEST_F(ShadowsByHand, ChangingTheAlphaCutoffMovesTheShadow) {
     Renderer renderer;
     Scene scene = loadBuiltin("fence");
     Settings s = topDownShadowView(loadShippedPreset("default"));
-    s.light.direction = glm::vec3(0.0f, -1.0f, -0.8f);
+    s.lights[0].direction = glm::vec3(0.0f, -1.0f, -0.8f);
     const View before = renderView(renderer, scene, s, 320, 320);
     for (Material& m : scene.materials)
         if (m.alphaMode == AlphaMode::Mask) m.alphaCutoff = 1.5f;  // nothing passes: no shadow at all
@@ -88,10 +88,10 @@ TEST_F(ShadowsByHand, SpotLightLightsInsideItsConeOnly) {
     Renderer renderer;
     const Scene scene = loadBuiltin("textbook");
     Settings s = topDownShadowView(loadShippedPreset("default"));
-    s.light.type = LightType::Spot;
-    s.light.position = glm::vec3(5.0f, 6.0f, 5.0f);
-    s.light.direction = glm::vec3(0.0f, -1.0f, 0.0f);
-    s.light.spotConeDeg = 120.0f;  // radius on the floor: 6 * tan(60 deg) = 10.4 around (5, 0, 5)
+    s.lights[0].type = LightType::Spot;
+    s.lights[0].position = glm::vec3(5.0f, 6.0f, 5.0f);
+    s.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.lights[0].spotConeDeg = 120.0f;  // radius on the floor: 6 * tan(60 deg) = 10.4 around (5, 0, 5)
     const View view = renderView(renderer, scene, s, 480, 480);
     saveView(view, "textbook-spot-top");
     EXPECT_GT(view.meanRedAround({5.0, 0.0, 5.0}, 2), 235.0) << "under the spot";

@@ -62,9 +62,9 @@ TEST(LightSpace, StraightDownAndUpGiveFiniteMatrices) {
     Settings s;
     const Bounds b = unitBox({-10, 0, -10}, {10, 3, 10});
     for (glm::vec3 d : {glm::vec3(0, -1, 0), glm::vec3(0, 1, 0), glm::vec3(1e-7f, -1, 0)}) {
-        s.light.direction = d;
+        s.lights[0].direction = d;
         for (LightType type : {LightType::Directional, LightType::Spot}) {
-            s.light.type = type;
+            s.lights[0].type = type;
             const LightSpace ls = build(s, b);
             EXPECT_TRUE(allFinite(ls.view));
             EXPECT_TRUE(allFinite(ls.projection));
@@ -76,7 +76,7 @@ TEST(LightSpace, OrthoFitContainsEverySceneCorner) {
     Settings s;
     const Bounds b = unitBox({-7, -1, -3}, {9, 4, 12});
     for (glm::vec3 d : {glm::vec3(-0.4f, -1, -0.3f), glm::vec3(0, -1, 0), glm::vec3(1, -0.05f, 0.2f)}) {
-        s.light.direction = d;
+        s.lights[0].direction = d;
         const LightSpace ls = build(s, b);
         const glm::dmat4 vp = ls.viewProjection();
         for (int i = 0; i < 8; ++i) {
@@ -106,17 +106,17 @@ TEST(LightSpace, DegenerateInputIsRefusedWithAMessage) {
     Settings s;
     const Bounds b = unitBox({-1, -1, -1}, {1, 1, 1});
     std::string error;
-    s.light.direction = glm::vec3(0.0f);
+    s.lights[0].direction = glm::vec3(0.0f);
     EXPECT_FALSE(buildLightSpace(s, b, glm::dvec3(0.0), error).has_value());
     EXPECT_NE(error.find("light.direction"), std::string::npos);
     s = Settings{};
-    s.light.direction = glm::vec3(std::nanf(""), -1, 0);
+    s.lights[0].direction = glm::vec3(std::nanf(""), -1, 0);
     error.clear();
     EXPECT_FALSE(buildLightSpace(s, b, glm::dvec3(0.0), error).has_value());
     s = Settings{};
-    s.projection.autoFit = false;
-    s.projection.nearPlane = 5.0f;
-    s.projection.farPlane = 5.0f;
+    s.lights[0].projection.autoFit = false;
+    s.lights[0].projection.nearPlane = 5.0f;
+    s.lights[0].projection.farPlane = 5.0f;
     error.clear();
     EXPECT_FALSE(buildLightSpace(s, b, glm::dvec3(0.0), error).has_value());
     EXPECT_NE(error.find("near"), std::string::npos);
@@ -124,11 +124,11 @@ TEST(LightSpace, DegenerateInputIsRefusedWithAMessage) {
 
 TEST(LightSpace, TexelWorldSizeFollowsSizeAndResolution) {
     Settings s;
-    s.projection.autoFit = false;
-    s.projection.orthoSize = 100.0f;
-    s.projection.nearPlane = 0.1f;
-    s.projection.farPlane = 100.0f;
-    s.shadow.resolution = 2048;
+    s.lights[0].projection.autoFit = false;
+    s.lights[0].projection.orthoSize = 100.0f;
+    s.lights[0].projection.nearPlane = 0.1f;
+    s.lights[0].projection.farPlane = 100.0f;
+    s.lights[0].shadow.resolution = 2048;
     const LightSpace ls = build(s, unitBox({-1, -1, -1}, {1, 1, 1}));
     EXPECT_NEAR(ls.texelWorldSize, 100.0 / 2048.0, 1e-12);  // HARD_CASES 7: 0.0488
 }

@@ -74,7 +74,7 @@ TEST(PngPreset, TextChunkFollowsIhdrWithAValidCrcAndThePictureIsUnchanged) {
 TEST(PngPreset, APresetLoadsBackFromTheScreenshotThatCarriesIt) {
     TempFolder dir;
     Settings s;
-    s.shadow.depthBias = 3.25f;
+    s.lights[0].shadow.depthBias = 3.25f;
     s.filter.kind = FilterKind::Poisson;
     s.camera.autoFrame = false;
     s.camera.position = {1.5, 2.0, -4.0};

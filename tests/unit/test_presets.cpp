@@ -73,25 +73,25 @@ json minimalPreset() { return json{{"schema", "shadowlab-preset"}, {"schemaVersi
 // Settings with floats that do not survive a careless float -> text -> float trip.
 Settings awkwardSettings() {
     Settings s;
-    s.shadow.resolution = 3000;
-    s.shadow.format = DepthFormat::D24;
-    s.shadow.depthBias = 0.1f;
-    s.shadow.slopeScaledDepthBias = 1e-7f;
-    s.shadow.depthBiasClamp = std::numeric_limits<float>::denorm_min();  // 1.4e-45, the smallest denormal
-    s.shadow.normalOffset = 1e-40f;                                     // another denormal
-    s.shadow.cullMode = CullMode::Front;  // not the default (none)
-    s.light.type = LightType::Spot;
-    s.light.direction = {1.0f / 3.0f, -std::numeric_limits<float>::min(), -0.7f};
-    s.light.position = {1e7f, -9999999.0f, 16777217.0f / 4.0f};
-    s.light.spotConeDeg = std::nextafter(170.0f, 0.0f);
-    s.light.intensity = 3.14159274f;
-    s.light.ambient = std::nextafter(1.0f, 0.0f);  // 0.99999994
-    s.light.useSceneLight = true;
-    s.projection.autoFit = false;
-    s.projection.orthoSize = 123.456f;
-    s.projection.nearPlane = 1e-4f;
-    s.projection.farPlane = 1e8f;
-    s.projection.depthClamp = false;
+    s.lights[0].shadow.resolution = 3000;
+    s.lights[0].shadow.format = DepthFormat::D24;
+    s.lights[0].shadow.depthBias = 0.1f;
+    s.lights[0].shadow.slopeScaledDepthBias = 1e-7f;
+    s.lights[0].shadow.depthBiasClamp = std::numeric_limits<float>::denorm_min();  // 1.4e-45, the smallest denormal
+    s.lights[0].shadow.normalOffset = 1e-40f;                                     // another denormal
+    s.lights[0].shadow.cullMode = CullMode::Front;  // not the default (none)
+    s.lights[0].type = LightType::Spot;
+    s.lights[0].direction = {1.0f / 3.0f, -std::numeric_limits<float>::min(), -0.7f};
+    s.lights[0].position = {1e7f, -9999999.0f, 16777217.0f / 4.0f};
+    s.lights[0].spotConeDeg = std::nextafter(170.0f, 0.0f);
+    s.lights[0].intensity = 3.14159274f;
+    s.ambient = std::nextafter(1.0f, 0.0f);  // 0.99999994
+    s.useSceneLights = true;
+    s.lights[0].projection.autoFit = false;
+    s.lights[0].projection.orthoSize = 123.456f;
+    s.lights[0].projection.nearPlane = 1e-4f;
+    s.lights[0].projection.farPlane = 1e8f;
+    s.lights[0].projection.depthClamp = false;
     s.sampler.addressMode = AddressMode::Wrap;
     s.sampler.borderDepth = 0.3f;
     s.filter.kind = FilterKind::Hardware2x2;
@@ -110,28 +110,39 @@ Settings awkwardSettings() {
 TEST(Presets, JsonHasTheDocumentedShape) {
     json j = presetToJson(Settings{}, "my preset", "what it shows");
     EXPECT_EQ(j["schema"], "shadowlab-preset");
-    EXPECT_EQ(j["schemaVersion"], 1);
+    EXPECT_EQ(j["schemaVersion"], 2);
     EXPECT_EQ(j["name"], "my preset");
     EXPECT_EQ(j["description"], "what it shows");
-    EXPECT_EQ(j["shadow"]["resolution"], 2048);
-    EXPECT_EQ(j["shadow"]["depthFormat"], "d32f");
-    EXPECT_EQ(j["light"]["direction"], json::parse("[-0.4, -1.0, -0.3]"));
-    EXPECT_EQ(j["projection"]["near"], 0.1);
+    ASSERT_TRUE(j["lights"].is_array());
+    ASSERT_EQ(j["lights"].size(), 1u);
+    const json& light = j["lights"][0];
+    EXPECT_EQ(light["type"], "directional");
+    EXPECT_EQ(light["shadow"]["resolution"], 2048);
+    EXPECT_EQ(light["shadow"]["depthFormat"], "d32f");
+    EXPECT_EQ(light["direction"], json::parse("[-0.4, -1.0, -0.3]"));
+    EXPECT_EQ(light["projection"]["near"], 0.1);
+    EXPECT_EQ(j["ambient"], 0.15);
+    EXPECT_EQ(j["useSceneLights"], false);
     EXPECT_EQ(j["sampler"]["addressMode"], "border");
     EXPECT_EQ(j["filter"]["kind"], "pcf");
     EXPECT_EQ(j["camera"]["fovYDeg"], 45.0);
     EXPECT_EQ(j["view"], "lit");
-    // Exactly the meta keys, the groups and "view" at the top; every table key once, nested.
-    std::size_t leaves = 0;
-    for (const auto& [group, value] : j.items())
-        if (value.is_object()) leaves += value.size();
-    EXPECT_EQ(leaves + 1, settingsFields().size());
-    EXPECT_EQ(j.size(), 4u + 6u + 1u);
+    // Exactly the meta keys, ambient, useSceneLights, lights, the groups and "view" at the top; every table key once.
+    auto leavesOf = [](const json& object) {
+        std::size_t leaves = 0;
+        for (const auto& [key, value] : object.items())
+            if (key != "lights") leaves += value.is_object() ? value.size() : 1;
+        return leaves;
+    };
+    EXPECT_EQ(leavesOf(j) - 4 + leavesOf(light), settingsFieldsOf(Settings{}).size());
+    EXPECT_EQ(j.size(), 4u + 3u + 3u + 1u);
 
     // The file text keeps Settings order and short floats.
     std::string text = presetToText(Settings{});
-    EXPECT_LT(text.find("\"schema\""), text.find("\"shadow\""));
-    EXPECT_LT(text.find("\"shadow\""), text.find("\"light\""));
+    EXPECT_LT(text.find("\"schema\""), text.find("\"lights\""));
+    EXPECT_LT(text.find("\"type\""), text.find("\"shadow\""));
+    EXPECT_LT(text.find("\"shadow\""), text.find("\"projection\""));
+    EXPECT_LT(text.find("\"projection\""), text.find("\"sampler\""));
     EXPECT_LT(text.find("\"camera\""), text.find("\"view\""));
     EXPECT_TRUE(contains(text, "\"direction\": [-0.4, -1.0, -0.3]")) << text;
     EXPECT_TRUE(contains(text, "\"near\": 0.1,")) << text;
@@ -152,7 +163,7 @@ TEST(Presets, RoundTripThroughJson) {
 
 TEST(Presets, AbsentKeysKeepTheBaseValues) {
     Settings base;
-    base.shadow.resolution = 512;
+    base.lights[0].shadow.resolution = 512;
     base.filter.kind = FilterKind::Poisson;
     json preset = minimalPreset();
     preset["shadow"] = {{"depthBias", 7}};
@@ -160,7 +171,7 @@ TEST(Presets, AbsentKeysKeepTheBaseValues) {
     PresetLoadResult r = presetFromJson(preset, base);
     ASSERT_TRUE(r.settings) << joinLines(r.errors);
     Settings expected = base;
-    expected.shadow.depthBias = 7.0f;
+    expected.lights[0].shadow.depthBias = 7.0f;
     expected.view = ViewMode::Shadow;
     EXPECT_TRUE(*r.settings == expected);
     EXPECT_TRUE(r.name.empty());
@@ -173,7 +184,7 @@ TEST(Presets, UnknownKeysAreWarningsNamingThem) {
     preset["filter.kind"] = "point";  // dotted key at the top level
     PresetLoadResult r = presetFromJson(preset);
     ASSERT_TRUE(r.settings) << joinLines(r.errors);
-    EXPECT_EQ(r.settings->shadow.resolution, 1024);
+    EXPECT_EQ(r.settings->lights[0].shadow.resolution, 1024);
     EXPECT_EQ(r.settings->filter.kind, FilterKind::Pcf);
     std::string all = joinLines(r.warnings);
     ASSERT_EQ(r.warnings.size(), 3u) << all;
@@ -215,7 +226,8 @@ TEST(Presets, CrossFieldRulesAreErrors) {
     PresetLoadResult r = presetFromJson(preset);
     EXPECT_FALSE(r.settings);
     ASSERT_EQ(r.errors.size(), 1u);
-    EXPECT_TRUE(contains(r.errors[0], "projection.near: 10 is not less than projection.far 5")) << r.errors[0];
+    EXPECT_TRUE(contains(r.errors[0], "lights.0.projection.near: 10 is not less than lights.0.projection.far 5"))
+        << r.errors[0];
 }
 
 TEST(Presets, SchemaAndVersionAreChecked) {
@@ -226,10 +238,10 @@ TEST(Presets, SchemaAndVersionAreChecked) {
     };
     json p = minimalPreset();
     p.erase("schemaVersion");
-    EXPECT_TRUE(contains(errorsOf(p), "schemaVersion: missing (allowed 1)"));
-    p["schemaVersion"] = 2;
+    EXPECT_TRUE(contains(errorsOf(p), "schemaVersion: missing (allowed 1 to 2)"));
+    p["schemaVersion"] = 3;
     std::string e = errorsOf(p);
-    EXPECT_TRUE(contains(e, "schemaVersion: 2 is newer than this ShadowLab understands")) << e;
+    EXPECT_TRUE(contains(e, "schemaVersion: 3 is newer than this ShadowLab understands")) << e;
     p["schemaVersion"] = "1";
     EXPECT_TRUE(contains(errorsOf(p), "schemaVersion: expected an integer, got \"1\""));
     p["schemaVersion"] = 0;
@@ -252,7 +264,7 @@ TEST(Presets, FileRoundTripIsExact) {
     ASSERT_TRUE(r.settings) << joinLines(r.errors);
     EXPECT_TRUE(r.warnings.empty()) << joinLines(r.warnings);
     EXPECT_TRUE(*r.settings == s);
-    EXPECT_EQ(r.settings->shadow.depthBiasClamp, std::numeric_limits<float>::denorm_min());
+    EXPECT_EQ(r.settings->lights[0].shadow.depthBiasClamp, std::numeric_limits<float>::denorm_min());
     EXPECT_TRUE(std::signbit(r.settings->camera.target.z));  // -0.0 survives too
     EXPECT_EQ(r.name, "awkward");
     EXPECT_EQ(r.description, "floats that bite\nwith a \"quote\" and ünïcode");
@@ -395,9 +407,9 @@ TEST(Presets, InvalidSettingsAreNotSaved) {
     ASSERT_EQ(savePresetFile(path, Settings{}, "old"), "");
     const std::string before = readFile(path);
     Settings bad;
-    bad.light.direction = glm::vec3(0.0f);
+    bad.lights[0].direction = glm::vec3(0.0f);
     std::string e = savePresetFile(path, bad);
-    EXPECT_TRUE(contains(e, "light.direction")) << e;
+    EXPECT_TRUE(contains(e, "lights.0.direction")) << e;
     EXPECT_EQ(readFile(path), before);
 }
 
@@ -454,8 +466,15 @@ TEST(Presets, ShippedPresetsLoadCleanlyAndAreCanonical) {
         ASSERT_TRUE(r.settings);
         EXPECT_EQ(r.name, entry.path().stem().string());
         EXPECT_GT(r.description.size(), 40u);
-        // Complete (every key present) and in the saver's format, so "save as" in the editor is a no-op diff.
-        EXPECT_EQ(readFile(path), presetToText(*r.settings, r.name, r.description));
+        // Schema 1 (every shipped preset): one light, and what it saves as (schema 2) loads back the same settings.
+        EXPECT_TRUE(contains(readFile(path), "\"schemaVersion\": 1,"));
+        EXPECT_EQ(r.settings->lights.size(), 1u);
+        const std::string saved = presetToText(*r.settings, r.name, r.description);
+        EXPECT_TRUE(contains(saved, "\"schemaVersion\": 2,"));
+        PresetLoadResult again = presetFromText(saved);
+        ASSERT_TRUE(again.settings) << joinLines(again.errors);
+        EXPECT_TRUE(*again.settings == *r.settings);
+        EXPECT_EQ(presetToText(*again.settings, r.name, r.description), saved);  // schema 2 text is canonical
         names.insert(r.name);
     }
     for (const char* expected : {"default", "acne", "peter-panning", "soft", "pcf-wide"})
@@ -471,26 +490,26 @@ TEST(Presets, ShippedPresetsShowWhatTheirNamesSay) {
     EXPECT_TRUE(load("default") == Settings{});
 
     Settings acne = load("acne");
-    EXPECT_EQ(acne.shadow.depthBias, 0.0f);
-    EXPECT_EQ(acne.shadow.slopeScaledDepthBias, 0.0f);
-    EXPECT_EQ(acne.shadow.normalOffset, 0.0f);
-    EXPECT_EQ(acne.shadow.cullMode, CullMode::None);
+    EXPECT_EQ(acne.lights[0].shadow.depthBias, 0.0f);
+    EXPECT_EQ(acne.lights[0].shadow.slopeScaledDepthBias, 0.0f);
+    EXPECT_EQ(acne.lights[0].shadow.normalOffset, 0.0f);
+    EXPECT_EQ(acne.lights[0].shadow.cullMode, CullMode::None);
     EXPECT_EQ(acne.filter.kind, FilterKind::Point);
 
     // Over a world unit of constant bias over a 29-unit depth range (D32F step 2^-24 for depths in [0.5, 1)).
     Settings pp = load("peter-panning");
-    const double worldBias = pp.shadow.depthBias * std::ldexp(1.0, -24) * 29.0;
+    const double worldBias = pp.lights[0].shadow.depthBias * std::ldexp(1.0, -24) * 29.0;
     EXPECT_GT(worldBias, 1.0);
-    EXPECT_EQ(pp.shadow.cullMode, CullMode::Front);
-    EXPECT_GE(pp.shadow.normalOffset, 4.0f);
+    EXPECT_EQ(pp.lights[0].shadow.cullMode, CullMode::Front);
+    EXPECT_GE(pp.lights[0].shadow.normalOffset, 4.0f);
 
     Settings soft = load("soft");
     EXPECT_EQ(soft.filter.kind, FilterKind::Poisson);
     EXPECT_EQ(soft.filter.poissonRadius, 3.0f);
-    EXPECT_GE(soft.shadow.slopeScaledDepthBias, soft.filter.poissonRadius + 1.0f);
+    EXPECT_GE(soft.lights[0].shadow.slopeScaledDepthBias, soft.filter.poissonRadius + 1.0f);
 
     Settings wide = load("pcf-wide");
     EXPECT_EQ(wide.filter.kind, FilterKind::Pcf);
     EXPECT_EQ(wide.filter.kernel, 9);
-    EXPECT_GE(wide.shadow.slopeScaledDepthBias, static_cast<float>(wide.filter.kernel / 2) + 1.0f);
+    EXPECT_GE(wide.lights[0].shadow.slopeScaledDepthBias, static_cast<float>(wide.filter.kernel / 2) + 1.0f);
 }

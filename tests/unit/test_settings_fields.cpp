@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <set>
 
@@ -28,22 +29,30 @@ json otherValue(const SettingsField& f, const Settings& s) {
         }
         case SettingsFieldKind::Enum:
             return current == f.choices.back() ? json(f.choices.front()) : json(f.choices.back());
-        case SettingsFieldKind::Vec3: return json::array({1.0 / 3.0, -2.25, 1e-3});
+        case SettingsFieldKind::Vec3:  // colours are non-negative
+            return json::array({1.0 / 3.0, f.key.ends_with("color") ? 2.25 : -2.25, 1e-3});
     }
     return {};
+}
+
+// Every field a default (one-light) Settings has: the global ones and light 0's.
+std::vector<std::reference_wrapper<const SettingsField>> fieldsOfDefaults() {
+    std::vector<std::reference_wrapper<const SettingsField>> out;
+    for (const SettingsField* f : settingsFieldsOf(Settings{})) out.emplace_back(*f);
+    return out;
 }
 
 }  // namespace
 
 TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
     std::set<std::string> keys;
-    for (const SettingsField& f : settingsFields()) {
+    for (const SettingsField& f : fieldsOfDefaults()) {
         EXPECT_TRUE(keys.insert(f.key).second) << "duplicate key " << f.key;
         EXPECT_FALSE(f.description.empty()) << f.key;
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 29u);  // every tunable of Settings; update when Settings grows
+    EXPECT_EQ(keys.size(), 33u);  // every tunable of Settings: 12 global, 21 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -53,7 +62,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
 
 TEST(SettingsFields, EveryKeyRoundTripsItsDefaultAndAnotherValue) {
     const Settings defaults;
-    for (const SettingsField& f : settingsFields()) {
+    for (const SettingsField& f : fieldsOfDefaults()) {
         SCOPED_TRACE(f.key);
         Settings s;
         EXPECT_EQ(f.set(s, f.get(defaults)), "");
@@ -73,10 +82,10 @@ TEST(SettingsFields, EveryKeyRoundTripsItsDefaultAndAnotherValue) {
 TEST(SettingsFields, EachFieldTouchesOnlyItsOwnMember) {
     // Setting one field must leave every other field's value alone (catches copy-paste accessors).
     const Settings defaults;
-    for (const SettingsField& f : settingsFields()) {
+    for (const SettingsField& f : fieldsOfDefaults()) {
         Settings s;
         ASSERT_EQ(f.set(s, otherValue(f, defaults)), "") << f.key;
-        for (const SettingsField& g : settingsFields())
+        for (const SettingsField& g : fieldsOfDefaults())
             if (&g != &f) {
                 EXPECT_EQ(g.get(s), g.get(defaults)) << f.key << " changed " << g.key;
             }
@@ -85,7 +94,7 @@ TEST(SettingsFields, EachFieldTouchesOnlyItsOwnMember) {
 
 TEST(SettingsFields, FloatsAreWrittenShortAndReadBackExactly) {
     Settings s;
-    s.shadow.depthBias = 0.1f;
+    s.lights[0].shadow.depthBias = 0.1f;
     EXPECT_EQ(findSettingsField("shadow.depthBias")->get(s).dump(), "0.1");
     // Many random floats of the field's range, through text and back.
     const SettingsField& f = *findSettingsField("shadow.depthBias");
@@ -94,10 +103,10 @@ TEST(SettingsFields, FloatsAreWrittenShortAndReadBackExactly) {
         state = state * 1664525u + 1013904223u;
         float v = std::ldexp(static_cast<float>(state >> 8) / float(1 << 24), static_cast<int>(state % 60) - 40);
         if (state & 1) v = -v;
-        s.shadow.depthBias = v;
+        s.lights[0].shadow.depthBias = v;
         Settings back;
         ASSERT_EQ(f.set(back, json::parse(f.get(s).dump())), "");
-        ASSERT_EQ(back.shadow.depthBias, v) << f.get(s).dump();
+        ASSERT_EQ(back.lights[0].shadow.depthBias, v) << f.get(s).dump();
     }
 }
 
@@ -105,22 +114,22 @@ TEST(SettingsFields, IntFieldsAcceptIntegralNumbersOnly) {
     Settings s;
     const SettingsField& res = *findSettingsField("shadow.resolution");
     EXPECT_EQ(res.set(s, json(4096)), "");
-    EXPECT_EQ(s.shadow.resolution, 4096);
+    EXPECT_EQ(s.lights[0].shadow.resolution, 4096);
     EXPECT_EQ(res.set(s, json(1024.0)), "");  // 1024.0 is an integer written as a float
-    EXPECT_EQ(s.shadow.resolution, 1024);
+    EXPECT_EQ(s.lights[0].shadow.resolution, 1024);
 
     std::string e = res.set(s, json(2.5));
     EXPECT_TRUE(contains(e, "shadow.resolution")) << e;
     EXPECT_TRUE(contains(e, "2.5")) << e;
     EXPECT_TRUE(contains(e, "not an integer")) << e;
     EXPECT_TRUE(contains(e, "[16, 32768]")) << e;
-    EXPECT_EQ(s.shadow.resolution, 1024);
+    EXPECT_EQ(s.lights[0].shadow.resolution, 1024);
 
     e = res.set(s, json(0));
     EXPECT_TRUE(contains(e, "shadow.resolution: 0 is out of range (allowed integer in [16, 32768])")) << e;
     e = res.set(s, json(std::numeric_limits<std::uint64_t>::max()));
     EXPECT_TRUE(contains(e, "out of range")) << e;
-    EXPECT_EQ(s.shadow.resolution, 1024);
+    EXPECT_EQ(s.lights[0].shadow.resolution, 1024);
 
     const SettingsField& kernel = *findSettingsField("filter.kernel");
     e = kernel.set(s, json(4));
@@ -134,12 +143,12 @@ TEST(SettingsFields, FloatFieldsAcceptIntsAndRejectOutOfRange) {
     Settings s;
     const SettingsField& ambient = *findSettingsField("light.ambient");
     EXPECT_EQ(ambient.set(s, json(1)), "");
-    EXPECT_EQ(s.light.ambient, 1.0f);
+    EXPECT_EQ(s.ambient, 1.0f);
     std::string e = ambient.set(s, json(1.5));
     EXPECT_EQ(e, "light.ambient: 1.5 is out of range (allowed [0, 1])");
     e = ambient.set(s, json(-1e-9));
     EXPECT_TRUE(contains(e, "light.ambient")) << e;
-    EXPECT_EQ(s.light.ambient, 1.0f);
+    EXPECT_EQ(s.ambient, 1.0f);
 
     e = findSettingsField("shadow.depthBias")->set(s, json(2e6));
     EXPECT_EQ(e, "shadow.depthBias: 2e6 is out of range (allowed [-1e6, 1e6])");
@@ -149,7 +158,7 @@ TEST(SettingsFields, FloatFieldsAcceptIntsAndRejectOutOfRange) {
 
 TEST(SettingsFields, WrongJsonTypesAreRefusedWithKeyValueAndRange) {
     const Settings defaults;
-    for (const SettingsField& f : settingsFields()) {
+    for (const SettingsField& f : fieldsOfDefaults()) {
         SCOPED_TRACE(f.key);
         // One wrong type per kind: strings for numbers/bools/vectors, numbers for names.
         json bad = f.kind == SettingsFieldKind::Enum ? json(5) : json("abc");
@@ -211,7 +220,7 @@ TEST(SettingsFields, VectorsNeedThreeFiniteComponentsAndDirectionsALength) {
     EXPECT_FALSE(dir.set(s, json::array({1, "2", 3})).empty());
     EXPECT_TRUE(s == Settings{});
     EXPECT_EQ(dir.set(s, json::array({0, -1, 0})), "");
-    EXPECT_EQ(s.light.direction, glm::vec3(0, -1, 0));
+    EXPECT_EQ(s.lights[0].direction, glm::vec3(0, -1, 0));
 
     e = findSettingsField("camera.position")->set(s, json::array({2e7, 0, 0}));
     EXPECT_TRUE(contains(e, "camera.position: [2e7, 0, 0] has a component beyond the limit")) << e;
@@ -225,13 +234,13 @@ TEST(SettingsOverride, ParsesJsonOrBareStrings) {
     EXPECT_EQ(applySettingOverride(s, "filter.kind=\"pcf\""), "");
     EXPECT_EQ(s.filter.kind, FilterKind::Pcf);
     EXPECT_EQ(applySettingOverride(s, "shadow.resolution=4096"), "");
-    EXPECT_EQ(s.shadow.resolution, 4096);
+    EXPECT_EQ(s.lights[0].shadow.resolution, 4096);
     EXPECT_EQ(applySettingOverride(s, "shadow.depthBias=-1.5e3"), "");
-    EXPECT_EQ(s.shadow.depthBias, -1500.0f);
+    EXPECT_EQ(s.lights[0].shadow.depthBias, -1500.0f);
     EXPECT_EQ(applySettingOverride(s, "light.useSceneLight=true"), "");
-    EXPECT_TRUE(s.light.useSceneLight);
+    EXPECT_TRUE(s.useSceneLights);
     EXPECT_EQ(applySettingOverride(s, "light.direction=[0,-1,0.5]"), "");
-    EXPECT_EQ(s.light.direction, glm::vec3(0, -1, 0.5f));
+    EXPECT_EQ(s.lights[0].direction, glm::vec3(0, -1, 0.5f));
     EXPECT_EQ(applySettingOverride(s, "camera.target = 1, 2, 3"), "");  // no brackets, spaces around '='
     EXPECT_EQ(s.camera.target, glm::dvec3(1, 2, 3));
     EXPECT_EQ(applySettingOverride(s, "view=light-depth"), "");
@@ -275,7 +284,8 @@ TEST(SettingsOverride, UnknownKeysSuggestCloseOnesOrListAll) {
     e = applySettingOverride(s, "filter.Kind=pcf");  // wrong case
     EXPECT_TRUE(contains(e, "filter.kind")) << e;
     e = applySettingOverride(s, "zzzzzzzzzz=1");
-    EXPECT_TRUE(contains(e, "valid keys: shadow.resolution,")) << e;
+    EXPECT_TRUE(contains(e, "valid keys: ambient, useSceneLights,")) << e;
+    EXPECT_TRUE(contains(e, "lights.#.shadow.depthBias,")) << e;
     EXPECT_TRUE(contains(e, "view")) << e;
     e = applySettingOverride(s, "shadow.depthBias");
     EXPECT_TRUE(contains(e, "key=value")) << e;
@@ -286,34 +296,35 @@ TEST(SettingsValidate, DefaultsAreValid) { EXPECT_TRUE(Settings{}.validate().emp
 
 TEST(SettingsValidate, ReportsEveryBadFieldByKey) {
     Settings s;
-    s.shadow.resolution = 0;                                   // HARD_CASES 15
-    s.shadow.depthBias = std::numeric_limits<float>::quiet_NaN();  // HARD_CASES 14
-    s.light.direction = glm::vec3(0.0f);                       // HARD_CASES 14
-    s.light.spotConeDeg = 180.0f;                              // HARD_CASES 8
-    s.projection.orthoSize = 0.0f;                             // HARD_CASES 14
+    s.lights[0].shadow.resolution = 0;                                   // HARD_CASES 15
+    s.lights[0].shadow.depthBias = std::numeric_limits<float>::quiet_NaN();  // HARD_CASES 14
+    s.lights[0].direction = glm::vec3(0.0f);                       // HARD_CASES 14
+    s.lights[0].spotConeDeg = 180.0f;                              // HARD_CASES 8
+    s.lights[0].projection.orthoSize = 0.0f;                             // HARD_CASES 14
     s.filter.kind = static_cast<FilterKind>(42);
     auto problems = s.validate();
     ASSERT_EQ(problems.size(), 6u);
     std::string all;
     for (const auto& p : problems) all += p + "\n";
-    for (const char* key : {"shadow.resolution: 0", "shadow.depthBias: nan", "light.direction: [0, 0, 0]",
-                            "light.spotConeDeg: 180", "projection.orthoSize: 0", "filter.kind: unknown value"})
+    for (const char* key : {"shadow.resolution: 0", "shadow.depthBias: nan", "lights.0.direction: [0, 0, 0]",
+                            "lights.0.spotConeDeg: 180", "projection.orthoSize: 0", "filter.kind: unknown value"})
         EXPECT_TRUE(contains(all, key)) << key << " missing in\n" << all;
     for (const auto& p : problems) EXPECT_TRUE(contains(p, "(allowed ")) << p;
 }
 
 TEST(SettingsValidate, CrossFieldRules) {
     Settings s;
-    s.projection.nearPlane = 10.0f;
-    s.projection.farPlane = 5.0f;
+    s.lights[0].projection.nearPlane = 10.0f;
+    s.lights[0].projection.farPlane = 5.0f;
     EXPECT_TRUE(s.validate().empty()) << "auto-fit ignores near/far";
-    s.projection.autoFit = false;
+    s.lights[0].projection.autoFit = false;
     auto problems = s.validate();
     ASSERT_EQ(problems.size(), 1u);
-    EXPECT_EQ(problems[0], "projection.near: 10 is not less than projection.far 5 (allowed near < far)");
-    s.projection.farPlane = 10.0f;
+    EXPECT_EQ(problems[0],
+              "lights.0.projection.near: 10 is not less than lights.0.projection.far 5 (allowed near < far)");
+    s.lights[0].projection.farPlane = 10.0f;
     EXPECT_EQ(s.validate().size(), 1u);
-    s.projection.farPlane = 10.5f;
+    s.lights[0].projection.farPlane = 10.5f;
     EXPECT_TRUE(s.validate().empty());
 
     s.camera.position = s.camera.target = glm::vec3(1.0f);

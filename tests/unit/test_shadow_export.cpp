@@ -25,12 +25,12 @@ LightSpace orthoLight() {
 
 Settings withBias(DepthFormat format, float depthBias) {
     Settings s;
-    s.shadow.format = format;
-    s.shadow.depthBias = depthBias;
-    s.shadow.slopeScaledDepthBias = 1.25f;
-    s.shadow.depthBiasClamp = 0.001f;
-    s.shadow.normalOffset = 0.5f;
-    s.shadow.cullMode = CullMode::Front;
+    s.lights[0].shadow.format = format;
+    s.lights[0].shadow.depthBias = depthBias;
+    s.lights[0].shadow.slopeScaledDepthBias = 1.25f;
+    s.lights[0].shadow.depthBiasClamp = 0.001f;
+    s.lights[0].shadow.normalOffset = 0.5f;
+    s.lights[0].shadow.cullMode = CullMode::Front;
     return s;
 }
 

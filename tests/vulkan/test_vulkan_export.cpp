@@ -111,8 +111,8 @@ TEST_P(VulkanExportTest, LavapipeMapMatchesTheGlMapWithinOneDepthStep) {
     const Case c = GetParam();
     const Scene scene = loadBuiltin(c.scene + 8);
     Settings settings = loadShippedPreset(c.preset);
-    settings.shadow.format = c.format;
-    settings.shadow.resolution = 1024;
+    settings.lights[0].shadow.format = c.format;
+    settings.lights[0].shadow.resolution = 1024;
     Renderer renderer;
     const View view = renderView(renderer, scene, settings, 64, 64);
     ASSERT_TRUE(view.stats.ok) << view.stats.error;
@@ -126,7 +126,7 @@ TEST_P(VulkanExportTest, LavapipeMapMatchesTheGlMapWithinOneDepthStep) {
     input.raster = parseVulkanRaster(snippet, parseError);
     ASSERT_EQ(parseError, "") << snippet;
     input.lightViewProjection = glm::mat4(view.stats.light.viewProjection());
-    input.resolution = settings.shadow.resolution;
+    input.resolution = settings.lights[0].shadow.resolution;
     const bool d16 = c.format == DepthFormat::D16;
     input.format = d16 ? VK_FORMAT_D16_UNORM : VK_FORMAT_D32_SFLOAT;
     const DepthPassResult vk = renderDepthVulkan(input);
@@ -167,9 +167,9 @@ INSTANTIATE_TEST_SUITE_P(Exported, VulkanExportTest,
 TEST_F(GlTest, LavapipeMapWithoutTheBiasDiffersFromTheGlMap) {
     const Scene scene = loadBuiltin("textbook");
     Settings settings = loadShippedPreset("default");
-    settings.shadow.resolution = 512;
-    settings.shadow.depthBias = 2.0f;
-    settings.shadow.slopeScaledDepthBias = 2.0f;
+    settings.lights[0].shadow.resolution = 512;
+    settings.lights[0].shadow.depthBias = 2.0f;
+    settings.lights[0].shadow.slopeScaledDepthBias = 2.0f;
     Renderer renderer;
     const View view = renderView(renderer, scene, settings, 64, 64);
     ASSERT_TRUE(view.stats.ok) << view.stats.error;
@@ -193,7 +193,7 @@ TEST_F(GlTest, LavapipeMapWithoutTheBiasDiffersFromTheGlMap) {
 TEST_F(GlTest, LavapipeZeroToOneRemapMatchesGlClipDepthBitForBit) {
     const Scene scene = loadBuiltin("textbook");
     Settings settings = loadShippedPreset("default");
-    settings.shadow.resolution = 512;
+    settings.lights[0].shadow.resolution = 512;
     Renderer renderer;
     const View view = renderView(renderer, scene, settings, 64, 64);
     ASSERT_TRUE(view.stats.ok) << view.stats.error;

@@ -151,7 +151,7 @@ void biasSearchTab(PanelContext& ctx) {
             a.tune->reachedLimit
                 ? "applied: acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
                       format("%.1f %%", a.maxAcnePercent) + ", wrong pixels " +
-                      format("%.3f %%", a.tune->report.wrongPercent) + ", cull " + cullModeName(a.tune->best.shadow.cullMode)
+                      format("%.3f %%", a.tune->report.wrongPercent) + ", cull " + cullModeName(a.tune->best.lights[0].shadow.cullMode)
                 : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + " (least: " +
                       format("%.3f %%", a.tune->report.acnePercent) + "); stopped by " +
                       causeInfo(a.tune->blockingCause).name + ": " + causeInfo(a.tune->blockingCause).remedy +
@@ -162,7 +162,7 @@ void biasSearchTab(PanelContext& ctx) {
         ImGui::PopStyleColor();
         state.controls.recordLastItem("accuracy.result");
         if (ImGui::IsItemHovered()) {
-            const ShadowMapSettings& best = a.tune->closest.shadow;
+            const ShadowMapSettings& best = a.tune->closest.lights[0].shadow;
             ImGui::SetTooltip("DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels\n%zu candidates in %.1f s",
                               double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
                               a.tune->path.size(), a.tune->seconds);

@@ -9,7 +9,7 @@ namespace shadowlab::editor {
 
 void drawLightPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
-    const LightSettings& light = state.settings.light;
+    const LightSettings& light = state.settings.lights[0];
     ImGui::PushItemWidth(-110.0f);
 
     comboField(state, "light.type", "type");
@@ -38,7 +38,7 @@ void drawLightPanel(PanelContext& ctx) {
         showFieldError(state, "light.position");
         sliderFloatField(state, "light.spotConeDeg", "cone", 1.0f, 170.0f, "%.1f deg");
         // A spot's range is its shadow volume's far plane.
-        if (state.settings.projection.autoFit) {
+        if (state.settings.lights[0].projection.autoFit) {
             ImGui::TextDisabled("range: fitted to the scene (Projection > auto-fit)");
         } else {
             dragFloatField(state, "projection.far", "range", 0.05f, "%.2f");

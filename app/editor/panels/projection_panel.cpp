@@ -8,9 +8,9 @@ void drawProjectionPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
     ImGui::PushItemWidth(-120.0f);
     checkboxField(state, "projection.autoFit", "auto-fit to the scene");
-    const bool autoFit = state.settings.projection.autoFit;
+    const bool autoFit = state.settings.lights[0].projection.autoFit;
     ImGui::BeginDisabled(autoFit);
-    if (state.settings.light.type == LightType::Directional)
+    if (state.settings.lights[0].type == LightType::Directional)
         dragFloatField(state, "projection.orthoSize", "ortho size", 0.05f, "%.2f");
     dragFloatField(state, "projection.near", "near", 0.01f, "%.3f");
     dragFloatField(state, "projection.far", "far", 0.05f, "%.2f");
@@ -25,10 +25,10 @@ void drawProjectionPanel(PanelContext& ctx) {
         if (autoFit && ImGui::SmallButton("edit these values")) {
             // Start manual tuning from what auto-fit chose, so turning it off does not jump.
             Settings manual = state.settings;
-            manual.projection.autoFit = false;
-            if (!light.perspective) manual.projection.orthoSize = float(light.orthoSize);
-            manual.projection.nearPlane = float(light.nearPlane);
-            manual.projection.farPlane = float(light.farPlane);
+            manual.lights[0].projection.autoFit = false;
+            if (!light.perspective) manual.lights[0].projection.orthoSize = float(light.orthoSize);
+            manual.lights[0].projection.nearPlane = float(light.nearPlane);
+            manual.lights[0].projection.farPlane = float(light.farPlane);
             if (manual.validate().empty())
                 state.settings = manual;
             else

@@ -15,7 +15,7 @@ void resolutionControls(EditorState& state) {
         const char* label;
         int size;
     } kPicks[] = {{"256", 256}, {"512", 512}, {"1K", 1024}, {"2K", 2048}, {"4K", 4096}, {"8K", 8192}};
-    const int current = state.settings.shadow.resolution;
+    const int current = state.settings.lights[0].shadow.resolution;
     const int maxSize = state.limits.maxTextureSize;
     ImGui::TextUnformatted("resolution");
     for (const auto& pick : kPicks) {
