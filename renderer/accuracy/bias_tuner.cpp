@@ -1,3 +1,4 @@
+#include "light/scene_lights.h"
 #include "accuracy/bias_tuner.h"
 
 #include "light/depth_bias.h"
@@ -81,7 +82,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
 
     // DepthBias units per texel, from the light space the renderer will build for these settings.
     Settings lit = start;
-    lit.lights[0] = effectiveLight(start, scene);
+    lit = withEffectiveLights(start, scene);
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
     std::string lightError;
     const std::optional<LightSpace> lightSpace = buildLightSpace(lit, scene.bounds, origin, lightError);

@@ -1,3 +1,4 @@
+#include "light/scene_lights.h"
 #include "export/shadow_export.h"
 
 #include "scene/scene.h"
@@ -49,7 +50,7 @@ std::optional<ShadowExport> exportForScene(const Settings& requested, const Scen
         return std::nullopt;
     }
     Settings settings = requested;
-    settings.lights[0] = effectiveLight(requested, scene);
+    settings = withEffectiveLights(requested, scene);
     // The renderer's origin (the scene's centre); the light's sizes do not depend on it.
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
     const std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, origin, error);

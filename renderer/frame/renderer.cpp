@@ -1,3 +1,4 @@
+#include "light/scene_lights.h"
 #include "frame/renderer.h"
 
 #include "gl/gl_errors.h"
@@ -101,7 +102,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     // Settings with the scene's light applied (light.useSceneLight); normal offset needs no separate copy.
     Settings settings = requested;
-    settings.lights[0] = effectiveLight(requested, scene);
+    settings = withEffectiveLights(requested, scene);
     stats.lightSource = describeLightSource(requested, scene);
 
     const std::size_t fingerprint = sceneFingerprint(scene);

@@ -55,40 +55,6 @@ glm::dmat3 lightBasis(const glm::dvec3& directionIn) {
     return glm::dmat3(right, up, back);
 }
 
-LightSettings effectiveLight(const Settings& settings, const Scene& scene) {
-    LightSettings light = settings.lights[0];
-    if (!settings.useSceneLights) return light;
-    for (const SceneLight& sl : scene.lights) {
-        if (sl.type == SceneLightType::Point) continue;  // point lights need cube maps: not supported yet
-        light.type = sl.type == SceneLightType::Spot ? LightType::Spot : LightType::Directional;
-        light.direction = sl.direction;
-        light.position = sl.position;
-        light.spotConeDeg = std::clamp(float(glm::degrees(2.0 * double(sl.outerConeRad))), 1.0f, 170.0f);
-        break;
-    }
-    return light;
-}
-
-std::string describeLightSource(const Settings& settings, const Scene& scene) {
-    int usable = 0;
-    const SceneLight* first = nullptr;
-    for (const SceneLight& sl : scene.lights) {
-        if (sl.type == SceneLightType::Point) continue;
-        if (!first) first = &sl;
-        ++usable;
-    }
-    const bool hasPointLights = usable < int(scene.lights.size());
-    const std::string pointNote = hasPointLights ? "; its point lights are not supported (they need cube maps)" : "";
-    if (settings.useSceneLights && first)
-        return "the scene's light '" + (first->name.empty() ? std::string("unnamed") : first->name) + "'" + pointNote;
-    if (settings.useSceneLights) return "the settings' light (the scene has no directional or spot light" +
-                                             pointNote + ")";
-    if (usable > 0)
-        return "the settings' light (the scene has " + std::to_string(usable) +
-               " glTF light(s): light.useSceneLight=true uses the first)";
-    return "the settings' light";
-}
-
 bool allFinite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)

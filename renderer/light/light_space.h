@@ -41,12 +41,6 @@ glm::dmat3 lightBasis(const glm::dvec3& direction);
 std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
                                           std::string& error);
 
-// The settings' light, or the scene's first glTF light when light.useSceneLight is set and the scene has one.
-LightSettings effectiveLight(const Settings& settings, const Scene& scene);
-
-// Which light a frame uses, in words, e.g. "the scene's light 'Sun'" (for reports and the editor).
-std::string describeLightSource(const Settings& settings, const Scene& scene);
-
 bool allFinite(const glm::dmat4& m);
 bool allFinite(const glm::mat4& m);
 
