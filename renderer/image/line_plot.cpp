@@ -182,24 +182,36 @@ PlotImage drawLinePlot(const LinePlot& plot, int width, int height) {
         }
     }
 
-    // Markers, then labels beside them where they do not cover one already written.
-    std::vector<std::array<int, 4>> taken;  // x0, y0, x1, y1 of written labels
-    for (const PlotPoints& s : plot.points) {
-        const std::size_t n = std::min(s.x.size(), s.y.size());
-        for (std::size_t i = 0; i < n; ++i) {
+    // Markers, then labels beside them where they cover no other label or marker (else the label is left out).
+    using Box = std::array<int, 4>;  // x0, y0, x1, y1
+    std::vector<Box> taken;
+    for (const PlotPoints& s : plot.points)
+        for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
             if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
             const double cx = px(s.x[i]), cy = py(s.y[i]);
             canvas.disc(cx, cy, double(s.radius), s.ring, s.color);
-            if (i >= s.labels.size() || s.labels[i].empty()) continue;
-            const int w = Canvas::textWidth(s.labels[i]), r = s.radius + 3;
+            taken.push_back({int(cx) - s.radius, int(cy) - s.radius, int(cx) + s.radius + 1, int(cy) + s.radius + 1});
+        }
+    for (const PlotPoints& s : plot.points)
+        for (std::size_t i = 0; i < std::min({s.x.size(), s.y.size(), s.labels.size()}); ++i) {
+            if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || s.labels[i].empty()) continue;
+            const double cx = px(s.x[i]), cy = py(s.y[i]);
+            // Clear of every marker drawn on this spot (a ring around the point included).
+            int r = s.radius;
+            for (const PlotPoints& o : plot.points)
+                for (std::size_t j = 0; j < std::min(o.x.size(), o.y.size()); ++j)
+                    if (std::abs(px(o.x[j]) - cx) < 1.0 && std::abs(py(o.y[j]) - cy) < 1.0) r = std::max(r, o.radius);
+            r += 3;
+            const int w = Canvas::textWidth(s.labels[i]);
             const std::array<std::array<int, 2>, 4> places{{{int(cx) + r, int(cy) - 3},
                                                             {int(cx) - r - w, int(cy) - 3},
                                                             {int(cx) - w / 2, int(cy) - r - 8},
                                                             {int(cx) - w / 2, int(cy) + r + 1}}};
             for (const auto& place : places) {
-                const std::array<int, 4> box{place[0] - 1, place[1] - 1, place[0] + w + 1, place[1] + 8};
-                const bool overlaps = std::any_of(taken.begin(), taken.end(), [&](const std::array<int, 4>& t) {
-                    return box[0] < t[2] && t[0] < box[2] && box[1] < t[3] && t[1] < box[3];
+                const Box box{place[0] - 1, place[1] - 1, place[0] + w + 1, place[1] + 8};
+                const bool overlaps = std::any_of(taken.begin(), taken.end(), [&](const Box& t) {
+                    const bool own = t[0] <= int(cx) && int(cx) < t[2] && t[1] <= int(cy) && int(cy) < t[3];
+                    return !own && box[0] < t[2] && t[0] < box[2] && box[1] < t[3] && t[1] < box[3];
                 });
                 if (overlaps || box[0] < left || box[2] > right || box[1] < top || box[3] > bottom) continue;
                 taken.push_back(box);
@@ -207,7 +219,6 @@ PlotImage drawLinePlot(const LinePlot& plot, int width, int height) {
                 break;
             }
         }
-    }
 
     canvas.text(left, 8, plot.title, ink);
     canvas.text((left + right) / 2 - Canvas::textWidth(plot.xLabel) / 2, height - 14, plot.xLabel, ink);
