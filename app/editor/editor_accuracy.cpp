@@ -172,7 +172,7 @@ void Editor::uploadAccuracyOverlay() {
 
 double Editor::idleWaitSeconds() const {
     // 20 redraws a second: progress shows, and the worker keeps the cores (flat out on llvmpipe starves it).
-    if (state_.accuracy.running || autoDue_) return 0.05;
+    if (state_.accuracy.running || autoDue_ || state_.sweep.running) return 0.05;
     return 0.5;
 }
 

@@ -27,6 +27,17 @@ std::string frontStepText(const SweepPointResult& from, const SweepPointResult& 
     return text;
 }
 
+void markParetoFront(SweepResult& result) {
+    std::vector<double> cost, error;
+    for (const SweepPointResult& p : result.points) {
+        cost.push_back(p.costMs);
+        error.push_back(p.accuracy.wrongPercent);
+    }
+    result.front = paretoFront(cost, error);
+    for (SweepPointResult& p : result.points) p.onFront = false;
+    for (std::size_t i : result.front) result.points[i].onFront = true;
+}
+
 SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
                      const SweepPointCallback& onPoint, AccuracyProgress* progress) {
     const auto start = Clock::now();
@@ -74,7 +85,9 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
             progress->fraction = progress->base;
             progress->setStage("timing " + r.label);
         }
-        const Camera camera = cameraFor(point.settings.camera, scene, aspect);
+        const Camera camera = options.camera && point.settings.camera == base.camera
+                                  ? *options.camera
+                                  : cameraFor(point.settings.camera, scene, aspect);
         const TimedFrames timed = timeFrames(renderer, scene, point.settings, camera, target, options.frames);
         if (!timed.ok) return "point " + r.label + ": " + timed.error;
         result.timingSource = timed.timingSource;
@@ -149,13 +162,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         if (!outcome->empty()) return fail(*outcome);
     }
 
-    std::vector<double> cost, error;
-    for (const SweepPointResult& p : result.points) {
-        cost.push_back(p.costMs);
-        error.push_back(p.accuracy.wrongPercent);
-    }
-    result.front = paretoFront(cost, error);
-    for (std::size_t i : result.front) result.points[i].onFront = true;
+    markParetoFront(result);
     result.wallMs = msSince(start);
     if (progress) {
         progress->fraction = 1.0f;

@@ -65,6 +65,9 @@ struct SweepRunOptions {
     int height = 720;
     int frames = 10;
     bool measurePreset = true;  // also time and measure the base settings when they are not a point (the marker)
+    // The view to time and measure (the editor's orbit camera); unset: each point's camera settings (auto-framed
+    // unless they say otherwise). A point whose camera.* keys differ from the base's always uses its own.
+    std::optional<Camera> camera;
 };
 
 // Called after each point (and the preset) with the point and how many of the total are done.
@@ -74,6 +77,9 @@ using SweepPointCallback = std::function<void(const SweepPointResult& point, std
 // work. `progress` (optional) gets the fraction and stage and carries a cancel request.
 SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
                      const SweepPointCallback& onPoint = {}, AccuracyProgress* progress = nullptr);
+
+// Sets result.front and each point's onFront from the points so far (a partial sweep's chart draws it live).
+void markParetoFront(SweepResult& result);
 
 // What the cost of going from one front point to the next buys: "+0.8 ms: wrong pixels 2.1 % -> 0.9 %".
 std::string frontStepText(const SweepPointResult& from, const SweepPointResult& to);
