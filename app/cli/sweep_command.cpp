@@ -117,16 +117,23 @@ int runSweep(const SweepOptions& options) {
         for (const BareDrawTiming& b : result.bareDraws) {
             double lo = 0.0, hi = 0.0;
             bool any = false;
+            const SweepPointResult* first = nullptr;
             std::vector<const SweepPointResult*> all;
             for (const SweepPointResult& p : result.points) all.push_back(&p);
             if (result.preset) all.push_back(&*result.preset);
             for (const SweepPointResult* pp : all)
-                if (const SweepPointResult& p = *pp; p.resolution == b.resolution && p.format == b.format) {
+                if (const SweepPointResult& p = *pp;
+                    p.resolution == b.resolution && p.format == b.format && p.bareDrawMs == b.ms) {
                     lo = any ? std::min(lo, p.shadowOverBare) : p.shadowOverBare;
                     hi = any ? std::max(hi, p.shadowOverBare) : p.shadowOverBare;
+                    if (!any) first = &p;
                     any = true;
                 }
-            std::cout << "  " << b.resolution << "² " << depthFormatName(b.format) << ": bare draw "
+            const bool perLight = std::count_if(result.bareDraws.begin(), result.bareDraws.end(), [&](const BareDrawTiming& o) {
+                                      return o.resolution == b.resolution && o.format == b.format;
+                                  }) > 1;
+            std::cout << "  " << b.resolution << "² " << depthFormatName(b.format)
+                      << (perLight && first ? " (the light of " + first->label + ")" : std::string()) << ": bare draw "
                       << formatted("%.3f", b.ms) << " ms; the shadow pass takes " << formatted("%.2f", lo) << "x"
                       << (hi > lo ? " to " + formatted("%.2f", hi) + "x" : std::string()) << " of it\n";
         }
@@ -138,8 +145,8 @@ int runSweep(const SweepOptions& options) {
             if (k > 0) std::cout << "   (step up " << frontStepText(result.points[result.front[k - 1]], p) << ")";
             std::cout << "\n";
         }
-        std::cout << "reference: computed once (" << formatted("%.0f", result.referenceMs)
-                  << " ms: G-buffer + shadow rays); sweep wall time " << formatted("%.1f", result.wallMs / 1000.0)
+        std::cout << "reference: computed " << (result.references == 1 ? std::string("once") : std::to_string(result.references) + " times (once per light / camera)")
+                  << " (" << formatted("%.0f", result.referenceMs) << " ms: G-buffer + shadow rays); sweep wall time " << formatted("%.1f", result.wallMs / 1000.0)
                   << " s\n";
         for (const SweepPointResult& p : result.points)
             for (const std::string& w : p.warnings) std::cerr << "warning: " << p.label << ": " << w << "\n";

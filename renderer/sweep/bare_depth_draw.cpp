@@ -50,6 +50,7 @@ BareDrawTiming BareDepthDraw::time(const glm::dmat4& lightViewProjection, int re
     BareDrawTiming result;
     result.resolution = resolution;
     result.format = format;
+    result.lightViewProjection = lightViewProjection;
     if (std::string error = map_.ensure(resolution, format, maxTextureSize); !error.empty()) {
         result.error = error;
         return result;

@@ -21,6 +21,7 @@ struct BareDrawTiming {
     std::string error;
     int resolution = 0;
     DepthFormat format = DepthFormat::D32F;
+    glm::dmat4 lightViewProjection{1.0};  // the light it was drawn from (a light axis gets one draw per light)
     double ms = 0.0;            // median of the timed draws (same source as the renderer's passes)
     double wallMsPerDraw = 0.0;
 };

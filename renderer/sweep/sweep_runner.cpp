@@ -67,6 +67,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
                         " is above this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(info.maxTextureSize));
     AccuracyMeter meter;
     std::unique_ptr<BareDepthDraw> bare;
+    std::vector<std::optional<SweepPointResult>> measured(plan.points.size());  // by plan index
 
     const bool presetExtra = options.measurePreset && plan.basePoint >= plan.points.size();
     const std::size_t total = plan.points.size() + (presetExtra ? 1 : 0);
@@ -102,7 +103,8 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
 
         // The raster limit at this size and format, once per sweep.
         auto found = std::find_if(result.bareDraws.begin(), result.bareDraws.end(), [&](const BareDrawTiming& b) {
-            return b.resolution == r.resolution && b.format == r.format;
+            return b.resolution == r.resolution && b.format == r.format &&
+                   b.lightViewProjection == timed.last.light.viewProjection();
         });
         if (found == result.bareDraws.end()) {
             if (progress) progress->setStage("bare draw " + std::to_string(r.resolution) + "² " + depthFormatName(r.format));
@@ -127,23 +129,46 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         if (report.cancelled) return std::nullopt;
         if (!report.ok) return "point " + r.label + ": " + report.error;
         r.measureMs = msSince(measureStart);
-        if (!report.cost.referenceReused)
+        if (!report.cost.referenceReused) {
             result.referenceMs += report.cost.gbufferMs + report.cost.traceMs + report.cost.bvhBuildMs;
+            ++result.references;
+        }
         r.referenceReused = report.cost.referenceReused;
         r.accuracy = report;
         r.kTexels = report.kTexels;
         r.coarseMap = !report.coarseMapWarning.empty();
         for (const std::string& w : report.warnings) r.warnings.push_back(w);
         if (index < plan.points.size())
-            result.points.push_back(r);
+            measured[index] = r;
         else
             result.preset = r;
         if (onPoint) onPoint(r, done + 1, total);
         return "";
     };
 
-    for (std::size_t i = 0; i < plan.points.size(); ++i) {
-        const std::optional<std::string> outcome = runPoint(plan.points[i], i, i);
+    // Run order: grouped by the values of the axes the reference depends on (light and camera), plan order within.
+    std::vector<std::size_t> order(plan.points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto referenceValues = [&](std::size_t i) {
+        std::vector<std::string> values;
+        for (std::size_t a = 0; a < plan.axes.size(); ++a) {
+            const std::string& key = plan.axes[a].key;
+            if (key.rfind("light.", 0) == 0 || key.rfind("camera.", 0) == 0) values.push_back(plan.points[i].values[a]);
+        }
+        return values;
+    };
+    std::vector<std::vector<std::string>> firstSeen;  // reference values in order of first appearance
+    std::vector<std::size_t> group(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const std::vector<std::string> values = referenceValues(i);
+        auto at = std::find(firstSeen.begin(), firstSeen.end(), values);
+        if (at == firstSeen.end()) at = firstSeen.insert(firstSeen.end(), values);
+        group[i] = std::size_t(at - firstSeen.begin());
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return group[a] < group[b]; });
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        const std::size_t i = order[n];
+        const std::optional<std::string> outcome = runPoint(plan.points[i], i, n);
         if (!outcome || (progress && progress->cancel)) {
             result.cancelled = true;
             return fail("cancelled");
@@ -162,6 +187,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         if (!outcome->empty()) return fail(*outcome);
     }
 
+    for (std::optional<SweepPointResult>& p : measured) result.points.push_back(std::move(*p));
     markParetoFront(result);
     result.wallMs = msSince(start);
     if (progress) {

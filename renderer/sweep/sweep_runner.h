@@ -46,16 +46,17 @@ struct SweepResult {
     bool cancelled = false;
     std::string error;
     std::vector<SweepAxis> axes;
-    std::vector<SweepPointResult> points;         // in plan order
+    std::vector<SweepPointResult> points;         // in plan order (run grouped by light and camera; see runSweep)
     std::optional<SweepPointResult> preset;       // the base settings when they are not one of the points
     std::size_t presetPoint = 0;                  // index into points of the preset, or points.size() (see .preset)
-    std::vector<BareDrawTiming> bareDraws;        // one per map size and format, in the order met
+    std::vector<BareDrawTiming> bareDraws;        // one per map size, format (and light), in the order met
     std::vector<std::size_t> front;               // indices into points, in order of cost
     std::string timingSource;
     std::string glRenderer;
     std::size_t triangles = 0;
     int width = 0, height = 0, frames = 0;
-    double referenceMs = 0.0;  // the first measurement's reference work (G-buffer, rays, boundary)
+    double referenceMs = 0.0;  // the reference's work (G-buffer, BVH, shadow rays), summed over its computations
+    int references = 0;        // how often it was computed: once, unless an axis moves the light or the camera
     double wallMs = 0.0;       // the whole sweep
     bool softwareRasterizer() const { return timingSource.rfind("CPU", 0) == 0; }
 };
@@ -73,7 +74,8 @@ struct SweepRunOptions {
 // Called after each point (and the preset) with the point and how many of the total are done.
 using SweepPointCallback = std::function<void(const SweepPointResult& point, std::size_t done, std::size_t total)>;
 
-// Runs the plan (which must have no error). Every point's map size is checked against GL_MAX_TEXTURE_SIZE before any
+// Runs the plan (which must have no error). Points that share the reference (the same light.* and camera.* values)
+// run one after another, so an axis over the light recomputes the reference once per light, not once per point. Every point's map size is checked against GL_MAX_TEXTURE_SIZE before any
 // work. `progress` (optional) gets the fraction and stage and carries a cancel request.
 SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
                      const SweepPointCallback& onPoint = {}, AccuracyProgress* progress = nullptr);
