@@ -158,6 +158,26 @@ TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
     EXPECT_EQ(sweepPointAt(r, 900, 500, 1.0, 1.0, 6.0), r.points.size()) << "nothing in the corner";
 }
 
+TEST_F(SweepTest, ALightAxisComputesTheReferenceOncePerLightAndDrawsTheBareDrawFromEachLight) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    // The light axis runs fastest in the plan; the sweep still computes each light's reference only once.
+    const SweepPlan plan = planSweep(base, {"filter.kind=point,pcf,poisson", "light.type=directional,spot"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 96;
+    options.height = 54;
+    options.frames = 1;
+    const SweepResult r = runSweep(scene, base, plan, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.references, 2);
+    ASSERT_EQ(r.points.size(), 6u);
+    for (std::size_t i = 0; i < r.points.size(); ++i)
+        EXPECT_EQ(r.points[i].label, plan.points[i].label()) << "results come back in plan order";
+    EXPECT_EQ(r.bareDraws.size(), 2u) << "one 2048² D32F draw per light";
+    EXPECT_NE(r.bareDraws[0].lightViewProjection, r.bareDraws[1].lightViewProjection);
+}
+
 TEST_F(SweepTest, AMapAboveTheGpuLimitIsRefusedBeforeAnyWork) {
     const Scene scene = loadBuiltin("textbook");
     const Settings base = loadShippedPreset("default");
