@@ -27,7 +27,10 @@ RepeatedTiming timeRepeated(int frames, const std::function<std::string(std::vec
         if (slots.size() < ms.size()) slots.resize(ms.size());
         for (std::size_t i = 0; i < ms.size(); ++i) slots[i].push_back(ms[i]);
     }
-    for (std::vector<double>& slot : slots) result.medianMs.push_back(medianOf(std::move(slot)));
+    for (std::vector<double>& slot : slots) {
+        result.minMs.push_back(slot.empty() ? 0.0 : *std::min_element(slot.begin(), slot.end()));
+        result.medianMs.push_back(medianOf(std::move(slot)));
+    }
     result.wallMsPerRun = wallTotal / std::max(frames, 1);
     return result;
 }
@@ -49,6 +52,8 @@ TimedFrames timeFrames(Renderer& renderer, const Scene& scene, const Settings& s
     if (!result.ok) return result;
     result.shadowMs = timing.medianMs.size() > 0 ? timing.medianMs[0] : 0.0;
     result.mainMs = timing.medianMs.size() > 1 ? timing.medianMs[1] : 0.0;
+    result.shadowMinMs = timing.minMs.size() > 0 ? timing.minMs[0] : 0.0;
+    result.mainMinMs = timing.minMs.size() > 1 ? timing.minMs[1] : 0.0;
     result.wallMsPerFrame = timing.wallMsPerRun;
     result.timingSource = result.last.timingSource;
     return result;

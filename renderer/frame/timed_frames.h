@@ -21,6 +21,7 @@ double medianOf(std::vector<double> values);
 struct RepeatedTiming {
     std::string error;              // "" unless a run failed
     std::vector<double> medianMs;   // per slot
+    std::vector<double> minMs;      // per slot: the least disturbed run (other load only ever adds time)
     double wallMsPerRun = 0.0;      // mean wall time of a timed run (steady clock, blocking on the timings)
 };
 RepeatedTiming timeRepeated(int frames, const std::function<std::string(std::vector<double>& ms)>& frame);
@@ -30,6 +31,8 @@ struct TimedFrames {
     std::string error;
     double shadowMs = 0.0;        // median over the timed frames
     double mainMs = 0.0;
+    double shadowMinMs = 0.0;     // the fastest timed frame: robust to other processes on a loaded CPU
+    double mainMinMs = 0.0;
     double wallMsPerFrame = 0.0;
     std::string timingSource;     // "GPU (timer queries)" or "CPU (software rasterizer, ...)"
     FrameStats last;              // the last frame's stats (map size and memory, light space, warnings)

@@ -21,6 +21,8 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
             {"shadowPassMs", p.shadowMs},
             {"mainPassMs", p.mainMs},
             {"costMs", p.costMs},
+            {"shadowPassMinMs", p.shadowMinMs},
+            {"mainPassMinMs", p.mainMinMs},
             {"wallMsPerFrame", p.wallMsPerFrame},
             {"resolution", p.resolution},
             {"depthFormat", depthFormatName(p.format)},

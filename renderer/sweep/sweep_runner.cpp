@@ -96,6 +96,8 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         r.shadowMs = timed.shadowMs;
         r.mainMs = timed.mainMs;
         r.costMs = r.shadowMs + r.mainMs;
+        r.shadowMinMs = timed.shadowMinMs;
+        r.mainMinMs = timed.mainMinMs;
         r.wallMsPerFrame = timed.wallMsPerFrame;
         r.resolution = timed.last.shadowMapResolution;
         r.format = timed.last.shadowMapFormat;

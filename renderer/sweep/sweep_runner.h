@@ -26,6 +26,8 @@ struct SweepPointResult {
     double shadowMs = 0.0;            // median shadow pass
     double mainMs = 0.0;              // median main pass
     double costMs = 0.0;              // shadow + main: the cost the front uses
+    double shadowMinMs = 0.0;         // the fastest timed frame of each pass (robust to a loaded CPU)
+    double mainMinMs = 0.0;
     double wallMsPerFrame = 0.0;
     int resolution = 0;
     DepthFormat format = DepthFormat::D32F;

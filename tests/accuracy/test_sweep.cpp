@@ -77,7 +77,7 @@ TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
     SweepRunOptions options;
     options.width = 320;
     options.height = 180;
-    options.frames = 5;
+    options.frames = 7;
     std::size_t calls = 0;
     const SweepResult r = runSweep(scene, base, plan, options,
                                    [&](const SweepPointResult&, std::size_t done, std::size_t total) {
@@ -101,9 +101,12 @@ TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
         EXPECT_GT(at(128, kernel).accuracy.wrongPercent, at(1024, kernel).accuracy.wrongPercent) << "kernel " << kernel;
         EXPECT_GT(at(32, kernel).accuracy.wrongPercent, 3.0 * at(1024, kernel).accuracy.wrongPercent);
     }
-    // 81 taps against 1 (CPU time on llvmpipe: the median of 5 frames, and a wide margin).
-    for (int resolution : {32, 128, 1024})
-        EXPECT_GT(at(resolution, 9).mainMs, 1.3 * at(resolution, 1).mainMs) << resolution;
+    // 81 taps against 1. On llvmpipe these are CPU times, and other processes on the machine only ever add time:
+    // the fastest of 7 frames is the least disturbed one (the median is what the report shows).
+    for (int resolution : {32, 128, 1024}) {
+        EXPECT_GT(at(resolution, 9).mainMinMs, 1.5 * at(resolution, 1).mainMinMs) << resolution;
+        EXPECT_LE(at(resolution, 1).mainMinMs, at(resolution, 1).mainMs);
+    }
     // The reference is computed once: only the first point traces rays.
     EXPECT_FALSE(r.points[0].referenceReused);
     for (std::size_t i = 1; i < r.points.size(); ++i) EXPECT_TRUE(r.points[i].referenceReused) << r.points[i].label;
