@@ -57,7 +57,7 @@ std::string csvField(const std::string& text) {
 
 nlohmann::json sweepToJson(const SweepResult& result) {
     nlohmann::json axes = nlohmann::json::array();
-    for (const SweepAxis& axis : result.axes) axes.push_back({{"key", axis.key}, {"values", axis.values}});
+    for (const SweepAxis& axis : result.axes) axes.push_back({{"key", axis.key}, {"keys", axis.keys}, {"values", axis.values}});
     nlohmann::json bare = nlohmann::json::array();
     for (const BareDrawTiming& b : result.bareDraws)
         bare.push_back({{"resolution", b.resolution}, {"depthFormat", depthFormatName(b.format)}, {"ms", b.ms}});

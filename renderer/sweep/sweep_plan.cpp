@@ -8,8 +8,8 @@ namespace shadowlab {
 
 namespace {
 
-// Splits on commas outside brackets and quotes: "512,[0,-1,0.2]" -> "512", "[0,-1,0.2]".
-std::vector<std::string> splitValues(std::string_view text) {
+// Splits on a separator outside brackets and quotes: "512,[0,-1,0.2]" -> "512", "[0,-1,0.2]".
+std::vector<std::string> splitValues(std::string_view text, char separator = ',') {
     std::vector<std::string> values;
     std::string current;
     int depth = 0;
@@ -18,7 +18,7 @@ std::vector<std::string> splitValues(std::string_view text) {
         if (c == '"') quoted = !quoted;
         if (!quoted && (c == '[' || c == '{')) ++depth;
         if (!quoted && (c == ']' || c == '}')) --depth;
-        if (c == ',' && depth <= 0 && !quoted) {
+        if (c == separator && depth <= 0 && !quoted) {
             values.push_back(current);
             current.clear();
         } else {
@@ -50,6 +50,28 @@ std::string sweepValueText(const Settings& settings, const std::string& key) {
     return value.is_string() ? value.get<std::string>() : value.dump();
 }
 
+std::vector<std::pair<std::string, std::string>> axisAssignments(const SweepAxis& axis, const std::string& value) {
+    const std::vector<std::string> parts =
+        axis.keys.size() == 1 ? std::vector<std::string>{value} : splitValues(value, ':');
+    if (parts.size() != axis.keys.size()) return {};
+    std::vector<std::pair<std::string, std::string>> assignments;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const std::string part = trimmed(parts[k]);
+        if (part.empty()) return {};
+        assignments.emplace_back(axis.keys[k], part);
+    }
+    return assignments;
+}
+
+std::string axisValueText(const Settings& settings, const SweepAxis& axis) {
+    std::string text;
+    for (const std::string& key : axis.keys) {
+        if (!text.empty()) text += ':';
+        text += sweepValueText(settings, key);
+    }
+    return text;
+}
+
 SweepPlan planSweep(const Settings& base, const std::vector<std::string>& axisTexts) {
     SweepPlan plan;
     auto refuse = [&](std::string error) {
@@ -65,20 +87,34 @@ SweepPlan planSweep(const Settings& base, const std::vector<std::string>& axisTe
             return refuse("--axis expects KEY=V1,V2,..., got '" + describeKey(text) + "'");
         SweepAxis axis;
         axis.key = trimmed(std::string_view(text).substr(0, eq));
-        // Unknown keys get the key table's own message (with its suggestions).
-        if (!findSettingsField(axis.key)) {
-            Settings scratch = base;
-            return refuse("--axis: " + applySettingOverride(scratch, axis.key + "=0"));
+        for (const std::string& part : splitValues(axis.key)) {
+            const std::string key = trimmed(part);
+            // Unknown keys get the key table's own message (with its suggestions).
+            if (!findSettingsField(key)) {
+                Settings scratch = base;
+                return refuse("--axis: " + applySettingOverride(scratch, key + "=0"));
+            }
+            for (const SweepAxis& other : plan.axes)
+                if (std::find(other.keys.begin(), other.keys.end(), key) != other.keys.end())
+                    return refuse("--axis " + key + ": this key is already an axis");
+            if (std::find(axis.keys.begin(), axis.keys.end(), key) != axis.keys.end())
+                return refuse("--axis " + key + ": this key is given twice in one axis");
+            axis.keys.push_back(key);
         }
-        if (std::any_of(plan.axes.begin(), plan.axes.end(), [&](const SweepAxis& a) { return a.key == axis.key; }))
-            return refuse("--axis " + axis.key + ": this key is already an axis");
+        axis.key.clear();
+        for (const std::string& key : axis.keys) axis.key += (axis.key.empty() ? "" : ",") + key;
         for (const std::string& raw : splitValues(std::string_view(text).substr(eq + 1))) {
             const std::string value = trimmed(raw);
             if (value.empty()) return refuse("--axis " + axis.key + ": an empty value in '" + describeKey(text) + "'");
+            const auto parts = axisAssignments(axis, value);
+            if (parts.empty())
+                return refuse("--axis " + axis.key + ": '" + describeKey(value) + "' needs " +
+                              std::to_string(axis.keys.size()) + " parts separated by ':', one per key");
             Settings settings = base;
-            if (std::string error = applySettingOverride(settings, axis.key + "=" + value); !error.empty())
-                return refuse("--axis " + axis.key + ": " + error);
-            const std::string canonical = sweepValueText(settings, axis.key);
+            for (const auto& [key, part] : parts)
+                if (std::string error = applySettingOverride(settings, key + "=" + part); !error.empty())
+                    return refuse("--axis " + key + ": " + error);
+            const std::string canonical = axisValueText(settings, axis);
             if (std::find(axis.values.begin(), axis.values.end(), canonical) != axis.values.end())
                 return refuse("--axis " + axis.key + ": the value " + canonical + " is given twice");
             axis.values.push_back(canonical);
@@ -86,7 +122,7 @@ SweepPlan planSweep(const Settings& base, const std::vector<std::string>& axisTe
         count *= axis.values.size();
         if (count > kMaxSweepPoints)
             return refuse("--axis: the axes make more than " + std::to_string(kMaxSweepPoints) + " points");
-        plan.baseValues.push_back(sweepValueText(base, axis.key));
+        plan.baseValues.push_back(axisValueText(base, axis));
         plan.axes.push_back(std::move(axis));
     }
 
@@ -99,7 +135,8 @@ SweepPlan planSweep(const Settings& base, const std::vector<std::string>& axisTe
             const std::string& value = plan.axes[a].values[index[a]];
             point.values.push_back(value);
             // Checked above; the canonical text reads back to the same value.
-            applySettingOverride(point.settings, plan.axes[a].key + "=" + value);
+            for (const auto& [key, part] : axisAssignments(plan.axes[a], value))
+                applySettingOverride(point.settings, key + "=" + part);
         }
         if (std::vector<std::string> problems = point.settings.validate(); !problems.empty())
             return refuse("--axis point " + point.label() + ": " + problems.front());

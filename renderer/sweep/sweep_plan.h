@@ -7,14 +7,26 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace shadowlab {
 
+// One axis: a preset key, or several moving together ("filter.kind,filter.kernel" with values "pcf:3", "pcf:9",
+// "point:1"), for choices that are one idea in two keys.
 struct SweepAxis {
-    std::string key;                  // a preset key, e.g. "shadow.resolution"
-    std::vector<std::string> values;  // as the key table writes them back (e.g. "pcf", "1024", "[0,-1,0.2]")
+    std::string key;                  // as given: "shadow.resolution", or the keys joined by ',' for a joint axis
+    std::vector<std::string> keys;    // the preset keys it sets (one, or several for a joint axis)
+    std::vector<std::string> values;  // as the key table writes them back (e.g. "pcf", "1024", "[0,-1,0.2]"),
+                                      // a joint axis's parts joined by ':' ("pcf:3")
 };
+
+// The (key, value) assignments of one of the axis's values, in key order ("pcf:3" -> filter.kind=pcf,
+// filter.kernel=3); empty when the value has not one part per key.
+std::vector<std::pair<std::string, std::string>> axisAssignments(const SweepAxis& axis, const std::string& value);
+
+// Where these settings sit on the axis: its value text as the plan writes it (joint parts joined by ':').
+std::string axisValueText(const Settings& settings, const SweepAxis& axis);
 
 struct SweepPoint {
     std::vector<std::string> values;  // one per axis, in axis order
@@ -35,7 +47,8 @@ struct SweepPlan {
 // More points than this is refused (a typo such as a range pasted twice should not start an hours-long run).
 inline constexpr std::size_t kMaxSweepPoints = 4096;
 
-// `text` is "KEY=V1,V2,..." (commas inside [...] belong to a vector value). Refuses an unknown key (with the key
+// `text` is "KEY=V1,V2,..." (commas inside [...] belong to a vector value), or "KEY1,KEY2=A1:B1,A2:B2,..." for a
+// joint axis. Refuses an unknown key (with the key
 // table's suggestions), an axis given twice, an empty value, any value the key refuses, and any combination that
 // Settings::validate() refuses — each naming the key.
 SweepPlan planSweep(const Settings& base, const std::vector<std::string>& axisTexts);

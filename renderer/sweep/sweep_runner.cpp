@@ -154,8 +154,11 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
     auto referenceValues = [&](std::size_t i) {
         std::vector<std::string> values;
         for (std::size_t a = 0; a < plan.axes.size(); ++a) {
-            const std::string& key = plan.axes[a].key;
-            if (key.rfind("light.", 0) == 0 || key.rfind("camera.", 0) == 0) values.push_back(plan.points[i].values[a]);
+            const std::vector<std::string>& keys = plan.axes[a].keys;
+            if (std::any_of(keys.begin(), keys.end(), [](const std::string& key) {
+                    return key.rfind("light.", 0) == 0 || key.rfind("camera.", 0) == 0;
+                }))
+                values.push_back(plan.points[i].values[a]);
         }
         return values;
     };

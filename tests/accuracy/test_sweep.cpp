@@ -39,6 +39,24 @@ TEST(SweepPlan, IsTheCartesianProductOfValuesTheKeyTableAccepts) {
     EXPECT_EQ(own.points[own.basePoint].label(), "2048 pcf");
 }
 
+TEST(SweepPlan, AJointAxisMovesSeveralKeysTogether) {
+    const Settings base = loadShippedPreset("default");
+    const SweepPlan plan =
+        planSweep(base, {"filter.kind,filter.kernel=point:1,hardware2x2:1,pcf:3,pcf:5,pcf:9,poisson:1", "shadow.depthFormat=d16,d32f"});
+    ASSERT_EQ(plan.error, "");
+    ASSERT_EQ(plan.points.size(), 12u);
+    EXPECT_EQ(plan.axes[0].keys, (std::vector<std::string>{"filter.kind", "filter.kernel"}));
+    EXPECT_EQ(plan.points[4].label(), "pcf:3 d16");
+    EXPECT_EQ(plan.points[4].settings.filter.kind, FilterKind::Pcf);
+    EXPECT_EQ(plan.points[4].settings.filter.kernel, 3);
+    EXPECT_EQ(plan.points[8].settings.filter.kernel, 9);
+    EXPECT_EQ(plan.baseValues[0], "pcf:3") << "the default preset's place on the joint axis";
+    EXPECT_NE(planSweep(base, {"filter.kind,filter.kernel=pcf"}).error.find("needs 2 parts"), std::string::npos);
+    EXPECT_NE(planSweep(base, {"filter.kind,filter.kernel=pcf:4"}).error.find("filter.kernel"), std::string::npos);
+    EXPECT_NE(planSweep(base, {"filter.kind,filter.kernel=pcf:3", "filter.kernel=1"}).error.find("already an axis"),
+              std::string::npos);
+}
+
 TEST(SweepPlan, RefusesABadKeyOrValueNamingTheKey) {
     const Settings base = loadShippedPreset("default");
     const SweepPlan typo = planSweep(base, {"shadow.resolutoin=512,1024"});

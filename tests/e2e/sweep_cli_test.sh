@@ -53,6 +53,7 @@ refuse bad-key-suggests "did you mean shadow.resolution" 2 --axis shadow.resolut
 refuse bad-value "filter.kind" 2 --axis filter.kind=point,gaussian
 refuse bad-range "shadow.resolution" 2 --axis shadow.resolution=512,4
 refuse bad-second-axis "filter.kernel" 2 --axis shadow.resolution=512 --axis filter.kernel=1,4
+refuse joint-axis-parts "needs 2 parts separated by ':'" 2 --axis filter.kind,filter.kernel=pcf:3,pcf
 refuse same-axis-twice "already an axis" 2 --axis filter.kind=pcf --axis filter.kind=point
 refuse bad-set "shadow.depthBias" 2 --set shadow.depthBias=abc --axis filter.kind=pcf
 refuse no-folder "--csv" 1 --axis filter.kind=pcf --csv missing/dir/s.csv

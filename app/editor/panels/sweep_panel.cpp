@@ -122,26 +122,26 @@ void pollSweep(EditorState& state) {
 // base; else none (points.size()).
 std::size_t currentPoint(const EditorState& state, const SweepResult& r) {
     Settings rest = state.settings;
-    for (const SweepAxis& axis : r.axes) {
-        const SettingsField* field = findSettingsField(axis.key);
-        if (field) field->set(rest, field->get(state.sweep.base));
-    }
+    for (const SweepAxis& axis : r.axes)
+        for (const std::string& key : axis.keys)
+            if (const SettingsField* field = findSettingsField(key)) field->set(rest, field->get(state.sweep.base));
     if (!(rest == state.sweep.base)) return r.points.size();
     for (std::size_t i = 0; i < r.points.size(); ++i) {
         bool same = true;
         for (std::size_t a = 0; a < r.axes.size() && same; ++a)
-            same = r.points[i].values[a] == sweepValueText(state.settings, r.axes[a].key);
+            same = r.points[i].values[a] == axisValueText(state.settings, r.axes[a]);
         if (same) return i;
     }
     return r.points.size();
 }
 
 void applyPoint(EditorState& state, const SweepResult& r, const SweepPointResult& p) {
-    for (std::size_t a = 0; a < r.axes.size(); ++a) {
-        nlohmann::json value = nlohmann::json::parse(p.values[a], nullptr, false);
-        if (value.is_discarded()) value = p.values[a];
-        state.edit(r.axes[a].key, value);
-    }
+    for (std::size_t a = 0; a < r.axes.size(); ++a)
+        for (const auto& [key, text] : axisAssignments(r.axes[a], p.values[a])) {
+            nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+            if (value.is_discarded()) value = text;
+            state.edit(key, value);
+        }
     state.say("sweep: applied " + p.label + " (the preset shows * until saved)");
 }
 
