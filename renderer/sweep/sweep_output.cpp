@@ -96,7 +96,13 @@ std::string sweepToCsv(const SweepResult& result) {
     out << "label,preset,paretoFront,shadowPassMs,mainPassMs,costMs,bareDrawMs,shadowPassOverBareDraw,resolution,"
            "depthFormat,shadowMapBytes,wrongPixelsPercent,meanError,acnePercent,acneSeverity,leakPercent,"
            "edgeErrorP95Texels,edgeErrorP95World,edgeErrorP95ScreenPixels,kTexels,coarseMap";
-    for (const SettingsField& field : settingsFields()) out << "," << field.key;
+    // A column per key of the settings with the most lights (a light axis may add lights).
+    const Settings* widest = nullptr;
+    for (const SweepPointResult& p : result.points)
+        if (!widest || p.settings.lights.size() > widest->lights.size()) widest = &p.settings;
+    const std::vector<const SettingsField*> columns = widest ? settingsFieldsOf(*widest)
+                                                             : std::vector<const SettingsField*>{};
+    for (const SettingsField* field : columns) out << "," << field->key;
     out << "\n";
     auto row = [&](const SweepPointResult& p, bool preset) {
         const AccuracyNumbers& n = p.accuracy;
@@ -106,8 +112,8 @@ std::string sweepToCsv(const SweepResult& result) {
             << "," << n.acnePercent << "," << n.acneSeverity << "," << n.leakPercent << "," << n.edgeErrorP95Texels
             << "," << n.edgeErrorP95World << "," << n.edgeErrorP95ScreenPixels << "," << p.kTexels << ","
             << (p.coarseMap ? 1 : 0);
-        for (const SettingsField& field : settingsFields()) {
-            const nlohmann::json value = field.get(p.settings);
+        for (const SettingsField* field : columns) {
+            const nlohmann::json value = field->get(p.settings);
             out << "," << csvField(value.is_string() ? value.get<std::string>() : value.dump());
         }
         out << "\n";

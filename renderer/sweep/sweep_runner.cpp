@@ -62,9 +62,11 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
     result.glRenderer = info.renderer;
     // Before any work: every map size must fit this GPU (the renderer would otherwise keep its previous map).
     for (const SweepPoint& point : plan.points)
-        if (point.settings.shadow.resolution > info.maxTextureSize)
-            return fail("--axis shadow.resolution: " + std::to_string(point.settings.shadow.resolution) +
-                        " is above this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(info.maxTextureSize));
+        for (std::size_t i = 0; i < point.settings.lights.size(); ++i)
+            if (point.settings.lights[i].shadow.resolution > info.maxTextureSize)
+                return fail("--axis lights." + std::to_string(i) + ".shadow.resolution: " +
+                            std::to_string(point.settings.lights[i].shadow.resolution) +
+                            " is above this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(info.maxTextureSize));
     AccuracyMeter meter;
     std::unique_ptr<BareDepthDraw> bare;
     std::vector<std::optional<SweepPointResult>> measured(plan.points.size());  // by plan index

@@ -30,7 +30,7 @@ TEST(SweepPlan, IsTheCartesianProductOfValuesTheKeyTableAccepts) {
     ASSERT_EQ(plan.points.size(), 12u);
     EXPECT_EQ(plan.axes[2].values.size(), 2u) << "commas inside [...] belong to the vector";
     EXPECT_EQ(plan.points[0].label(), "512 point [0.0,-1.0,0.2]");
-    EXPECT_EQ(plan.points[11].settings.shadow.resolution, 2048);
+    EXPECT_EQ(plan.points[11].settings.lights[0].shadow.resolution, 2048);
     EXPECT_EQ(plan.points[11].settings.filter.kind, FilterKind::Pcf);
     EXPECT_EQ(plan.points[1].values[2], "[1.0,-1.0,0.0]") << "the last axis runs fastest, values as the key table writes them";
     // The default preset is 2048 pcf: where it sits on axes that include its own values.
@@ -109,7 +109,7 @@ TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
     EXPECT_EQ(r.preset->resolution, 2048);
     auto at = [&](int resolution, int kernel) -> const SweepPointResult& {
         for (const SweepPointResult& p : r.points)
-            if (p.settings.shadow.resolution == resolution && p.settings.filter.kernel == kernel) return p;
+            if (p.settings.lights[0].shadow.resolution == resolution && p.settings.filter.kernel == kernel) return p;
         ADD_FAILURE() << "no point " << resolution << " " << kernel;
         return r.points[0];
     };

@@ -66,7 +66,7 @@ TEST(EditorSweep, RunHoverAndApplyAPoint) {
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
     h.clickAt(x, y);
     h.frame(2);
-    EXPECT_EQ(h.state().settings.shadow.resolution, 1024);
+    EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 1024);
     EXPECT_EQ(h.state().settings.filter.kind, FilterKind::Point);
     EXPECT_TRUE(h.state().preset.dirty(h.state().settings)) << "applied values mark the preset *";
     EXPECT_EQ(s.chartMarker, 2u) << "the ring moved to the applied point";

@@ -21,7 +21,7 @@ namespace {
 // The values a new axis starts with: every choice of an enum or a restricted integer, map sizes for the resolution,
 // else the current value (the user types the rest).
 std::string defaultValues(const EditorState& state, const SettingsField& field) {
-    if (field.key == "shadow.resolution") return "512,1024,2048,4096";
+    if (field.lightKey() == "shadow.resolution") return "512,1024,2048,4096";
     std::string text;
     if (field.kind == SettingsFieldKind::Enum)
         for (const std::string& c : field.choices) text += (text.empty() ? "" : ",") + c;
@@ -38,7 +38,8 @@ void axisRow(EditorState& state, int index) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 13.0f);
     if (ImGui::BeginCombo("##key", axis.key.empty() ? "(no axis)" : axis.key.c_str())) {
         if (ImGui::Selectable("(no axis)", axis.key.empty())) axis = {};
-        for (const SettingsField& field : settingsFields()) {
+        for (const SettingsField* entry : settingsFieldsOf(state.settings)) {
+            const SettingsField& field = *entry;
             if (field.group() == "camera" || field.key == "view") continue;  // not a shadow setting
             if (ImGui::Selectable(field.key.c_str(), axis.key == field.key) && axis.key != field.key)
                 axis = {field.key, defaultValues(state, field)};
