@@ -16,6 +16,9 @@ namespace shadowlab {
 namespace {
 
 constexpr GLuint kGroupSize = 256;
+// The count pass keeps its counts in registers over this many pixels per invocation, then adds them once: atomics
+// per pixel cost most on a software rasterizer, and a GPU still gets one invocation per 8 pixels.
+constexpr GLuint kPixelsPerInvocation = 8;
 constexpr std::uint32_t kOnBoundary = 0x100;  // flag beside the class code
 
 // Each count the shader keeps, by its slot name there and the field it fills here: the one list of both.
@@ -40,7 +43,8 @@ constexpr std::array<std::pair<const char*, CountField>, 16> kCountSlots{{
 }};
 // After the counts: the unresolved pixels' number, then per edge-error key its remaining rank and picked bits.
 constexpr GLuint kWordUnresolved = GLuint(kCountSlots.size());
-constexpr GLuint kWordRank = kWordUnresolved + 1;
+constexpr GLuint kWordListed = kWordUnresolved + 1;
+constexpr GLuint kWordRank = kWordListed + 1;
 constexpr GLuint kWordPrefix = kWordRank + 3;
 constexpr GLuint kWords = kWordPrefix + 3;
 
@@ -51,7 +55,8 @@ gl::Program buildStage(Stage stage) {
         "STAGE_COUNT 1", "STAGE_FINISH 2", "STAGE_HISTOGRAM 3", "STAGE_PICK 4",
         "STAGE " + std::to_string(int(stage)), "GROUP_SIZE " + std::to_string(kGroupSize),
         "COUNT_SLOTS " + std::to_string(kCountSlots.size()), "WORD_UNRESOLVED " + std::to_string(kWordUnresolved),
-        "WORD_RANK " + std::to_string(kWordRank), "WORD_PREFIX " + std::to_string(kWordPrefix),
+        "WORD_LISTED " + std::to_string(kWordListed), "WORD_RANK " + std::to_string(kWordRank),
+        "PIXELS_PER_INVOCATION " + std::to_string(kPixelsPerInvocation), "WORD_PREFIX " + std::to_string(kWordPrefix),
         "FLAG_ON_BOUNDARY " + std::to_string(kOnBoundary) + "u"};
     for (std::size_t slot = 0; slot < kCountSlots.size(); ++slot)
         defines.push_back(std::string(kCountSlots[slot].first) + " " + std::to_string(slot) + "u");
@@ -82,6 +87,11 @@ std::array<std::uint32_t, 4> referenceTexel(const DistanceState& s, std::uint32_
     return texel;
 }
 
+GLuint countGroups(std::size_t pixels) {
+    const std::size_t perGroup = std::size_t(kGroupSize) * kPixelsPerInvocation;
+    return GLuint((pixels + perGroup - 1) / perGroup);
+}
+
 // Inverse of the shader's orderBits.
 float fromOrderBits(std::uint32_t bits) {
     const std::uint32_t raw = (bits & 0x80000000u) != 0 ? bits & 0x7FFFFFFFu : ~bits;
@@ -99,7 +109,8 @@ GpuAccuracyCounter::GpuAccuracyCounter()
       pickProgram_(buildStage(Pick)),
       words_(makeBuffer(kWords * sizeof(std::uint32_t))),
       sums_(makeBuffer(2 * sizeof(double))),
-      histogram_(makeBuffer(3 * 256 * sizeof(std::uint32_t))) {
+      histogram_(makeBuffer(3 * 256 * sizeof(std::uint32_t))),
+      dispatch_(makeBuffer(3 * sizeof(GLuint))) {
     glClearNamedBufferData(histogram_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
 }
 
@@ -118,8 +129,8 @@ void GpuAccuracyCounter::upload(int width, int height, const std::vector<PixelCl
         units[2 * i + 1] = screenPixelsPerTexel[i];
     }
     if (width != width_ || height != height_) {
-        const GLuint groups = GLuint((count + kGroupSize - 1) / kGroupSize);
-        partials_ = makeBuffer(groups * 2 * sizeof(double));
+        partials_ = makeBuffer(countGroups(count) * 2 * sizeof(double));
+        listed_ = makeBuffer(count * sizeof(std::uint32_t));
         keys_ = makeBuffer(count * sizeof(float));
         unresolved_ = makeBuffer(count * sizeof(std::uint32_t));
         reference_ = makeBuffer(count * 4 * sizeof(std::uint32_t));
@@ -143,18 +154,22 @@ void GpuAccuracyCounter::update(const std::vector<std::uint32_t>& pixels, Shadow
 
 void GpuAccuracyCounter::dispatch(const gl::Program& program, GLuint groups) {
     glUseProgram(program.id());
-    glDispatchCompute(groups, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (groups > 0)
+        glDispatchCompute(groups, 1, 1);
+    else
+        glDispatchComputeIndirect(0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 }
 
 GpuAccuracyCounter::Result GpuAccuracyCounter::count(GLuint shadowTexture, double k, double cap, bool probing) {
     Result result;
     const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
-    const GLuint groups = GLuint((pixels + kGroupSize - 1) / kGroupSize);
+    const GLuint groups = countGroups(pixels);
     glClearNamedBufferData(words_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-    const GLuint buffers[8] = {words_.id(), sums_.id(), partials_.id(), keys_.id(),
-                               unresolved_.id(), reference_.id(), units_.id(), histogram_.id()};
-    glBindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, 8, buffers);
+    const GLuint buffers[10] = {words_.id(),     sums_.id(),  partials_.id(),  keys_.id(),    unresolved_.id(),
+                                reference_.id(), units_.id(), histogram_.id(), listed_.id(), dispatch_.id()};
+    glBindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, 10, buffers);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
     glBindTextureUnit(0, shadowTexture);
     glBindSampler(0, 0);
     auto set = [](const gl::Program& program, auto&& fn) {
@@ -184,11 +199,8 @@ GpuAccuracyCounter::Result GpuAccuracyCounter::count(GLuint shadowTexture, doubl
         });
         dispatch(finishProgram_, 1);
         for (int shift = 24; shift >= 0; shift -= 8) {
-            set(histogramProgram_, [&](GLuint p) {
-                glUniform2i(glGetUniformLocation(p, "uSize"), width_, height_);
-                glUniform1i(glGetUniformLocation(p, "uShift"), shift);
-            });
-            dispatch(histogramProgram_, groups);
+            set(histogramProgram_, [&](GLuint p) { glUniform1i(glGetUniformLocation(p, "uShift"), shift); });
+            dispatch(histogramProgram_, 0);
             set(pickProgram_, [&](GLuint p) { glUniform1i(glGetUniformLocation(p, "uShift"), shift); });
             dispatch(pickProgram_, 1);
         }
@@ -205,7 +217,8 @@ GpuAccuracyCounter::Result GpuAccuracyCounter::count(GLuint shadowTexture, doubl
             result.numbers.edgeErrorP95ScreenPixels = fromOrderBits(words[kWordPrefix + 2]);
         }
     }
-    glBindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, 8, nullptr);
+    glBindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, 10, nullptr);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glBindTextureUnit(0, 0);
     glUseProgram(0);
     return result;

@@ -43,10 +43,10 @@ public:
     Result count(GLuint shadowTexture, double k, double cap, bool probing);
 
 private:
-    void dispatch(const gl::Program& program, GLuint groups);
+    void dispatch(const gl::Program& program, GLuint groups);  // groups 0: as many as the finish stage said
 
     gl::Program countProgram_, finishProgram_, histogramProgram_, pickProgram_;
-    gl::Buffer words_, sums_, partials_, keys_, unresolved_, reference_, units_, histogram_;
+    gl::Buffer words_, sums_, partials_, keys_, unresolved_, reference_, units_, histogram_, listed_, dispatch_;
     int width_ = 0, height_ = 0;
     std::vector<std::uint32_t> flags_;  // per pixel: class | on-boundary flag (the reference's w component)
 };
