@@ -4,10 +4,12 @@
 // changes in either order; and remeasure refuses a view whose reference is not cached.
 #include "gl_fixture.h"
 #include "reference_fixture.h"
+#include "scene/scene_source.h"
 #include "settings/settings_fields.h"
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -149,6 +151,28 @@ TEST_F(GpuAccuracyCounterTest, SpotLightAndALightMove) {
     const AccuracyReport moved = meter.remeasure(scene, spot, camera, kWidth, kHeight);
     EXPECT_FALSE(moved.ok);
     EXPECT_TRUE(moved.needsReference);
+}
+
+// Real glTF scenes: alpha-tested casters (AlphaBlendModeTest's MASK quads), many small parts (FlightHelmet).
+TEST_F(GpuAccuracyCounterTest, SharedScenesCountAlikeOnBothPaths) {
+    for (const std::string name : {"AlphaBlendModeTest/AlphaBlendModeTest.gltf",
+                                   "FlightHelmet_geometry/FlightHelmet.gltf"}) {
+        SCOPED_TRACE(name);
+        const std::string path = std::string(SHADOWLAB_SHARED_SCENES) + "/" + name;
+        if (!std::filesystem::exists(path)) GTEST_SKIP() << "the shared scenes are absent (needs " << path << ")";
+        SceneLoadResult loaded = loadScene(path);
+        ASSERT_TRUE(loaded.ok()) << loaded.error;
+        const Scene& scene = *loaded.scene;
+        AccuracyMeter meter;
+        Settings settings = loadShippedPreset("default");
+        const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
+        expectSameNumbers(meter, scene, settings, camera, false, name + ", default");
+        set(settings, "shadow.slopeScaledDepthBias=0.5");
+        set(settings, "shadow.normalOffset=0");
+        expectSameNumbers(meter, scene, settings, camera, true, name + ", less bias");
+        set(settings, "filter.kind=poisson");
+        expectSameNumbers(meter, scene, settings, camera, true, name + ", Poisson");
+    }
 }
 
 }  // namespace
