@@ -210,8 +210,16 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     const AccuracyCounts live = a.report->counts;
     ImGui::GetIO().MouseDown[0] = false;
     h.frame(2);
-    framesFor(0.8);
-    waitForJob();
+    // Frames until Auto's full measure has run (after half a second of stillness; a loaded machine takes longer).
+    auto waitForMeasurements = [&](long n) {
+        const auto start = std::chrono::steady_clock::now();
+        while ((a.measurements < n || a.running) &&
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 240.0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            h.frame();
+        }
+    };
+    waitForMeasurements(2);
     ASSERT_EQ(a.measurements, 2);
     ASSERT_FALSE(a.report->live);
     EXPECT_EQ(a.stale, "");
@@ -225,9 +233,9 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     h.drag("viewport.image", 40.0f, 0.0f);
     h.frame(3);
     EXPECT_EQ(a.liveMeasurements, liveBefore);
-    framesFor(0.8);
-    waitForJob();
+    waitForMeasurements(3);
     EXPECT_EQ(a.measurements, 3);
+    EXPECT_EQ(a.liveMeasurements, liveBefore);
 }
 
 TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToThePreset) {
