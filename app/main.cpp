@@ -67,6 +67,9 @@ int main(int argc, char** argv) {
     measureCmd->add_option("--overlay", measure.overlay, "write the error overlay as PNG");
     measureCmd->add_option("--cause-overlay", measure.causeOverlay,
                            "write the overlay coloured by cause (why each mismatched pixel is wrong) as PNG");
+    measureCmd->add_option("--remeasure-bench", measure.remeasureBench,
+                           "then time N live re-measures after a bias change (GPU count) against the CPU path")
+        ->check(CLI::Range(1, 10000));
 
     cli::TuneOptions tune;
     CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");
