@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out", render.out, "the camera view as PNG")->capture_default_str();
     renderCmd->add_option("--shadow-map", render.shadowMapExr, "the raw shadow map as a 1-channel float EXR");
     renderCmd->add_option("--shadow-map-png", render.shadowMapPng, "a viewable PNG of the shadow map");
+    renderCmd->add_option("--light", render.light,
+                          "whose map --shadow-map / --shadow-map-png write (a point light: its six faces as a cross)")
+        ->capture_default_str();
     renderCmd->add_option("--view", render.view, "lit | shadow | light-depth")
         ->check(CLI::IsMember({"lit", "shadow", "light-depth"}));
 
