@@ -1,5 +1,6 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
+#include "cli/bench_lights.h"
 #include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
@@ -50,6 +51,9 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
     benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
+    benchCmd->add_flag("--lights", bench.lights,
+                       "many lights: each view's time, views a static frame and a moved light render, the main pass "
+                       "with 1, 2, 4, 8 ... lights shadowed and not");
 
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
@@ -147,7 +151,7 @@ int main(int argc, char** argv) {
     }
 
     if (*renderCmd) return cli::runRender(render);
-    if (*benchCmd) return cli::runBench(bench);
+    if (*benchCmd) return bench.lights ? cli::runBenchLights(bench) : cli::runBench(bench);
     if (*editCmd) return editor_window::runEdit(edit);
     if (*measureCmd) return cli::runMeasure(measure);
     if (*tuneCmd) return cli::runTune(tune);
