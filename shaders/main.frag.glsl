@@ -5,7 +5,8 @@
 //              each kind, casters first (uLights holds them in that order: directional, spot, point)
 //   maps       MAP_ARRAYS_2D (sampler2DArrayShadow, directional and spot views), MAP_ARRAYS_CUBE
 //              (samplerCubeArrayShadow, point lights: per-face perspective depth)
-//   filter     FILTER_TAPS, FILTER_TAP_OFFSETS (texels; scaled by uFilterScale): the filter technique's taps
+//   filter     FILTER_TAPS and FILTER_GRID_RADIUS or FILTER_TAP_OFFSETS (texels; scaled by uFilterScale): the filter
+//              technique's taps
 //              (renderer/shading/filter_taps.cpp, shared with the pixel probe)
 //   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
 // Only the lights, kinds and features a frame uses are compiled in; loop counts are compile-time constants.
@@ -48,7 +49,17 @@ uniform sampler2D uBaseColorTexture;
 #endif
 #endif
 
+// The filter's taps: a square grid (FILTER_GRID_RADIUS: offsets -R..R, row by row, as loops a compiler unrolls) or
+// a list (FILTER_TAP_OFFSETS). Large constant arrays are slow on some drivers (llvmpipe: 81 taps 1.7x).
+#ifdef FILTER_GRID_RADIUS
+#define FOR_EACH_TAP for (int ty = -FILTER_GRID_RADIUS; ty <= FILTER_GRID_RADIUS; ++ty) \
+                     for (int tx = -FILTER_GRID_RADIUS; tx <= FILTER_GRID_RADIUS; ++tx)
+#define TAP_OFFSET vec2(tx, ty)
+#else
 const vec2 TAP_OFFSETS[FILTER_TAPS] = vec2[](FILTER_TAP_OFFSETS);
+#define FOR_EACH_TAP for (int ti = 0; ti < FILTER_TAPS; ++ti)
+#define TAP_OFFSET TAP_OFFSETS[ti]
+#endif
 
 vec3 toLightTexture(mat4 viewProjection, vec3 worldPosition) {
     vec4 clip = viewProjection * vec4(worldPosition, 1.0);
@@ -68,10 +79,14 @@ float rangeWindow(float distance, float range) {
 float shadow2D(LightData L, vec3 lookup) {
     vec3 lightTex = toLightTexture(L.viewProjection, lookup);
     float ref = min(lightTex.z, 1.0);
+#if MAP_ARRAYS_2D == 1
+    const int map = 0;  // one array: a constant index (a dynamic one is much slower on some drivers, llvmpipe 3x)
+#else
     int map = int(L.shadow.x);
+#endif
     float sum = 0.0;
-    for (int i = 0; i < FILTER_TAPS; ++i)
-        sum += texture(uMaps2D[map], vec4(lightTex.xy + TAP_OFFSETS[i] * uFilterScale * L.shadow.z, L.shadow.y, ref));
+    FOR_EACH_TAP
+        sum += texture(uMaps2D[map], vec4(lightTex.xy + TAP_OFFSET * uFilterScale * L.shadow.z, L.shadow.y, ref));
     return sum / float(FILTER_TAPS);
 }
 #endif
@@ -96,10 +111,14 @@ float shadowCube(LightData L, vec3 lookup) {
     vec3 s = a.x >= a.y && a.x >= a.z ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     vec3 t = a.y >= a.x && a.y >= a.z ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
     float texelAtMajor = 2.0 * L.shadow.z * major;
+#if MAP_ARRAYS_CUBE == 1
+    const int map = 0;
+#else
     int map = int(L.shadow.x);
+#endif
     float sum = 0.0;
-    for (int i = 0; i < FILTER_TAPS; ++i) {
-        vec2 o = TAP_OFFSETS[i] * uFilterScale * texelAtMajor;
+    FOR_EACH_TAP {
+        vec2 o = TAP_OFFSET * uFilterScale * texelAtMajor;
         vec3 d = v + o.x * s + o.y * t;
         float ref = min(faceDepth(v, d, L.depth.x, L.depth.y), 1.0);
         sum += texture(uMapsCube[map], vec4(d, L.shadow.y), ref);
@@ -107,6 +126,74 @@ float shadowCube(LightData L, vec3 lookup) {
     return sum / float(FILTER_TAPS);
 }
 #endif
+
+// What the lights add up to at this pixel.
+struct Shading {
+    vec3 n;          // unit normal, facing the viewer's side
+    vec3 v;          // unit vector to the camera
+    vec3 lambert;    // (1 - ambient) x N.L x light, summed over lights
+    vec3 specular;
+    float shadowSum; // VIEW_SHADOW: the mean shadow factor of the lights that reach the pixel
+    float reaching;
+};
+
+void addLight(inout Shading s, LightData L, vec3 l, float shadow, float attenuation) {
+    s.shadowSum += shadow;
+    s.reaching += 1.0;
+    float nDotL = max(dot(s.n, l), 0.0);
+    vec3 h = normalize(l + s.v);
+    float highlight = nDotL > 0.0 ? pow(max(dot(s.n, h), 0.0), 48.0) * 0.25 : 0.0;
+    float direct = L.radiance.w * shadow * attenuation;
+    s.lambert += (1.0 - uAmbient) * nDotL * direct * L.radiance.rgb;
+    s.specular += highlight * direct * L.radiance.rgb;
+}
+
+// The lookup moved along the normal by a fixed number of texels' world size (Holbert's normal offset).
+vec3 offsetLookup(Shading s, LightData L, float texelWorld) {
+#ifdef NORMAL_OFFSET
+    return vWorldPosition + s.n * (L.shadow.w * texelWorld);
+#else
+    return vWorldPosition;
+#endif
+}
+
+// One function per kind; `casts` is a constant at every call, so no runtime branch decides whether to take taps.
+void directionalLight(inout Shading s, LightData L, const bool casts) {
+    float shadow = 1.0;
+#if MAP_ARRAYS_2D > 0
+    if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z));
+#endif
+    addLight(s, L, -L.direction.xyz, shadow, 1.0);
+}
+
+void spotLight(inout Shading s, LightData L, const bool casts) {
+    vec3 toLight = L.position.xyz - vWorldPosition;
+    float lightDistance = length(toLight);
+    vec3 l = toLight / max(lightDistance, 1e-20);
+    float attenuation = rangeWindow(lightDistance, L.position.w);
+    if (dot(-l, L.direction.xyz) < L.direction.w || attenuation <= 0.0) {  // outside the cone or the range: no taps
+        return;
+    }
+    float shadow = 1.0;
+#if MAP_ARRAYS_2D > 0
+    if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z * dot(vWorldPosition - L.position.xyz, L.direction.xyz)));
+#endif
+    addLight(s, L, l, shadow, attenuation);
+}
+
+void pointLight(inout Shading s, LightData L, const bool casts) {
+    vec3 toLight = L.position.xyz - vWorldPosition;
+    float lightDistance = length(toLight);
+    vec3 l = toLight / max(lightDistance, 1e-20);
+    float attenuation = rangeWindow(lightDistance, L.position.w);
+    if (attenuation <= 0.0) return;  // beyond its range: no taps
+    float shadow = 1.0;
+#if MAP_ARRAYS_CUBE > 0
+    vec3 a = abs(vWorldPosition - L.position.xyz);
+    if (casts) shadow = shadowCube(L, offsetLookup(s, L, L.depth.z * max(a.x, max(a.y, a.z))));
+#endif
+    addLight(s, L, l, shadow, attenuation);
+}
 
 void main() {
 #ifdef ALPHA_MASK
@@ -116,68 +203,37 @@ void main() {
 #endif
     if (alpha < uAlphaCutoff) discard;
 #endif
-    vec3 n = normalize(vNormal);
-    if (!gl_FrontFacing) n = -n;  // two-sided lighting: broken windings and double-sided materials shade right
-    vec3 v = normalize(uCameraPosition - vWorldPosition);
+    Shading s;
+    s.n = normalize(vNormal);
+    if (!gl_FrontFacing) s.n = -s.n;  // two-sided lighting: broken windings and double-sided materials shade right
+    s.v = normalize(uCameraPosition - vWorldPosition);
+    s.lambert = vec3(0.0);
+    s.specular = vec3(0.0);
+    s.shadowSum = 0.0;
+    s.reaching = 0.0;
 
-    vec3 lambert = vec3(0.0);  // (1 - ambient) x N.L x light, summed over lights
-    vec3 specular = vec3(0.0);
-    float shadowSum = 0.0;     // VIEW_SHADOW: the mean shadow factor of the lights that reach the pixel
-    float reaching = 0.0;
-
-#if LIGHT_COUNT > 0
-    for (int i = 0; i < LIGHT_COUNT; ++i) {
-        LightData L = uLights[i];
-        vec3 l;
-        float attenuation = 1.0;
-        float texelWorld = L.depth.z;
-        if (i < SPOT_BEGIN) {
-            l = -L.direction.xyz;
-        } else {
-            vec3 toLight = L.position.xyz - vWorldPosition;
-            float lightDistance = length(toLight);
-            l = toLight / max(lightDistance, 1e-20);
-            attenuation = rangeWindow(lightDistance, L.position.w);
-            if (i < POINT_BEGIN) {
-                if (dot(-l, L.direction.xyz) < L.direction.w) continue;  // outside the cone: no light, no taps
-                texelWorld = L.depth.z * dot(vWorldPosition - L.position.xyz, L.direction.xyz);
-            } else {
-                vec3 a = abs(vWorldPosition - L.position.xyz);
-                texelWorld = L.depth.z * max(a.x, max(a.y, a.z));
-            }
-            if (attenuation <= 0.0) continue;  // beyond its range
-        }
-
-        float shadow = 1.0;
-        bool casts = i < DIR_CASTERS || (i >= SPOT_BEGIN && i < SPOT_BEGIN + SPOT_CASTERS) ||
-                     (i >= POINT_BEGIN && i < POINT_BEGIN + POINT_CASTERS);
-        if (casts) {
-            vec3 lookup = vWorldPosition;
-#ifdef NORMAL_OFFSET
-            // Move the lookup along the normal by a fixed number of texels' world size (Holbert's normal offset).
-            lookup += n * (L.shadow.w * texelWorld);
+    // uLights: directional, spot, point; casters first within each kind. Loop bounds are compile-time constants.
+#if DIR_CASTERS > 0
+    for (int i = 0; i < DIR_CASTERS; ++i) directionalLight(s, uLights[i], true);
 #endif
-#if MAP_ARRAYS_CUBE > 0
-            if (i >= POINT_BEGIN) shadow = shadowCube(L, lookup);
+#if DIR_LIGHTS > DIR_CASTERS
+    for (int i = DIR_CASTERS; i < DIR_LIGHTS; ++i) directionalLight(s, uLights[i], false);
 #endif
-#if MAP_ARRAYS_2D > 0
-            if (i < POINT_BEGIN) shadow = shadow2D(L, lookup);
+#if SPOT_CASTERS > 0
+    for (int i = SPOT_BEGIN; i < SPOT_BEGIN + SPOT_CASTERS; ++i) spotLight(s, uLights[i], true);
 #endif
-        }
-        shadowSum += shadow;
-        reaching += 1.0;
-
-        float nDotL = max(dot(n, l), 0.0);
-        vec3 h = normalize(l + v);
-        float highlight = nDotL > 0.0 ? pow(max(dot(n, h), 0.0), 48.0) * 0.25 : 0.0;
-        float direct = L.radiance.w * shadow * attenuation;
-        lambert += (1.0 - uAmbient) * nDotL * direct * L.radiance.rgb;
-        specular += highlight * direct * L.radiance.rgb;
-    }
+#if SPOT_LIGHTS > SPOT_CASTERS
+    for (int i = SPOT_BEGIN + SPOT_CASTERS; i < POINT_BEGIN; ++i) spotLight(s, uLights[i], false);
+#endif
+#if POINT_CASTERS > 0
+    for (int i = POINT_BEGIN; i < POINT_BEGIN + POINT_CASTERS; ++i) pointLight(s, uLights[i], true);
+#endif
+#if POINT_LIGHTS > POINT_CASTERS
+    for (int i = POINT_BEGIN + POINT_CASTERS; i < LIGHT_COUNT; ++i) pointLight(s, uLights[i], false);
 #endif
 
 #if defined(VIEW_SHADOW)
-    outColor = vec4(vec3(reaching > 0.0 ? shadowSum / reaching : 0.0), 1.0);
+    outColor = vec4(vec3(s.reaching > 0.0 ? s.shadowSum / s.reaching : 0.0), 1.0);
 #elif defined(VIEW_LIGHT_DEPTH)
     // The first light's depth: directional as stored, spot and point as linear distance (not all white).
     float depth = 0.0;
@@ -193,7 +249,7 @@ void main() {
 #endif
     outColor = vec4(vec3(clamp(depth, 0.0, 1.0)), 1.0);
 #else
-    vec3 color = uBaseColor * (uAmbient + lambert) + specular;
+    vec3 color = uBaseColor * (uAmbient + s.lambert) + s.specular;
     outColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);
 #endif
 }

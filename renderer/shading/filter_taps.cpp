@@ -31,7 +31,17 @@ std::vector<FilterTap> filterTaps(const FilterSettings& filter) {
 }
 
 std::vector<std::string> filterDefines(const FilterSettings& filter) {
-    const std::vector<glm::vec2> taps = filterTechnique(filter.kind).unitTaps(filter);
+    const FilterTechnique& technique = filterTechnique(filter.kind);
+    const std::vector<glm::vec2> taps = technique.unitTaps(filter);
+    // A square grid of whole texels (as its taps must be, in this order) goes as loops, not a constant array.
+    if (technique.gridRadius) {
+        const int r = technique.gridRadius(filter);
+        std::vector<glm::vec2> grid;
+        for (int y = -r; y <= r; ++y)
+            for (int x = -r; x <= r; ++x) grid.emplace_back(float(x), float(y));
+        if (grid == taps)
+            return {"FILTER_TAPS " + std::to_string(taps.size()), "FILTER_GRID_RADIUS " + std::to_string(r)};
+    }
     std::string values;
     char buf[64];
     for (const glm::vec2& p : taps) {

@@ -44,7 +44,7 @@ std::vector<std::string> MainVariantKey::defines() const {
 std::string MainVariantKey::name() const {
     std::string joined;
     for (std::string d : defines()) {
-        if (d.starts_with("FILTER_TAP_OFFSETS")) continue;  // the numbers follow from the filter, said by FILTER_TAPS
+        if (d.starts_with("FILTER_TAP_OFFSETS") || d.starts_with("FILTER_GRID_RADIUS")) continue;  // the numbers follow from the filter, said by FILTER_TAPS
         if (d.starts_with("FILTER_TAPS")) d = "FILTER_" + upper(filterTechnique(filter).name) +
                                               (filter == FilterKind::Pcf ? " PCF_KERNEL " + std::to_string(kernel) : "") +
                                               " " + d;

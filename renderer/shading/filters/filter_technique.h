@@ -21,6 +21,9 @@ struct FilterTechnique {
     float (*scale)(const FilterSettings& filter);
     // How many texels from the lookup the filter reads: within k of an edge acne and leak are not judged.
     double (*radiusTexels)(const FilterSettings& filter);
+    // Optional: when the taps are the square grid -R..R (row by row), R; the shader then loops instead of reading a
+    // constant array (much faster for large kernels on some drivers).
+    int (*gridRadius)(const FilterSettings& filter) = nullptr;
 };
 
 const FilterTechnique& filterTechnique(FilterKind kind);

@@ -14,7 +14,8 @@ const FilterTechnique& pcfFilter() {
             return taps;
         },
         [](const FilterSettings&) { return 1.0f; },
-        [](const FilterSettings& filter) { return double(filter.kernel - 1) / 2.0; }};
+        [](const FilterSettings& filter) { return double(filter.kernel - 1) / 2.0; },
+        [](const FilterSettings& filter) { return filter.kernel / 2; }};
     return technique;
 }
 
