@@ -61,7 +61,9 @@ int main(int argc, char** argv) {
     editCmd->add_option("--preset", edit.preset, "a preset JSON path, or the name of a shipped or user preset");
     editCmd->add_option("--width", edit.width, "window width")->capture_default_str()->check(CLI::Range(320, 16384));
     editCmd->add_option("--height", edit.height, "window height")->capture_default_str()->check(CLI::Range(240, 16384));
-    editCmd->add_option("--screenshot-dir", edit.screenshotDir, "where F12 writes screenshots")->capture_default_str();
+    editCmd->add_option("--screenshot-dir", edit.screenshotDir,
+                        "where F12 writes screenshots (default: $SHADOWLAB_SCREENSHOTS, else "
+                        "$XDG_DATA_HOME/shadowlab/screenshots, else ~/.local/share/shadowlab/screenshots)");
 
     cli::MeasureOptions measure;
     CLI::App* measureCmd = app.add_subcommand("measure", "Measure acne, leak, wrong pixels, edge error and their causes against the exact reference");

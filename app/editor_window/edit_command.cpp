@@ -151,7 +151,8 @@ int runEdit(const EditOptions& options) {
             editor::EditorOptions editorOptions;
             editorOptions.scene = options.scene;
             editorOptions.preset = options.preset;
-            editorOptions.screenshotDir = options.screenshotDir;
+            editorOptions.screenshotDir =
+                options.screenshotDir.empty() ? userScreenshotsDir().string() : options.screenshotDir;
             editorPtr = std::make_unique<editor::Editor>(editorOptions);
         } catch (const std::exception& e) {
             std::cerr << "shadowlab edit: " << e.what() << "\n";

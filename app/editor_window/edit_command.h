@@ -11,7 +11,7 @@ struct EditOptions {
     std::string preset;  // path or shipped name; empty = "default"
     int width = 1600;
     int height = 900;
-    std::string screenshotDir = "screenshots";
+    std::string screenshotDir;  // empty: the user's data folder (userScreenshotsDir())
 };
 
 // Runs until the window closes. Without a display (or GL 4.5) it says so and returns 1.

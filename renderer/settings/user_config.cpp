@@ -32,6 +32,14 @@ fs::path userPresetsDir() {
 
 fs::path recentFilesPath() { return userConfigDir() / "recent-files.json"; }
 
+fs::path userScreenshotsDir() {
+    if (std::string own = environment("SHADOWLAB_SCREENSHOTS"); !own.empty()) return fs::path(own);
+    if (std::string xdg = environment("XDG_DATA_HOME"); !xdg.empty()) return fs::path(xdg) / "shadowlab" / "screenshots";
+    if (std::string home = environment("HOME"); !home.empty())
+        return fs::path(home) / ".local" / "share" / "shadowlab" / "screenshots";
+    return fs::path("screenshots");  // no home at all: beside the working folder, as before
+}
+
 std::string ensureFolder(const fs::path& folder) {
     std::error_code ec;
     const fs::file_status status = fs::status(folder, ec);

@@ -84,6 +84,23 @@ TEST(UserConfig, UserPresetsFolderIsItsOwnVariableElseInsideTheConfigFolder) {
     EXPECT_EQ(userPresetsDir(), fs::path("/cfg/presets"));
 }
 
+TEST(UserConfig, ScreenshotsGoToTheUsersDataFolder) {
+    ScopedEnv home("HOME", "/home/alice");
+    {
+        ScopedEnv own("SHADOWLAB_SCREENSHOTS", "/shots");
+        ScopedEnv xdg("XDG_DATA_HOME", "/xdg-data");
+        EXPECT_EQ(userScreenshotsDir(), fs::path("/shots"));
+    }
+    {
+        ScopedEnv own("SHADOWLAB_SCREENSHOTS", "");
+        ScopedEnv xdg("XDG_DATA_HOME", "/xdg-data");
+        EXPECT_EQ(userScreenshotsDir(), fs::path("/xdg-data/shadowlab/screenshots"));
+    }
+    ScopedEnv own("SHADOWLAB_SCREENSHOTS", std::nullopt);
+    ScopedEnv xdg("XDG_DATA_HOME", std::nullopt);
+    EXPECT_EQ(userScreenshotsDir(), fs::path("/home/alice/.local/share/shadowlab/screenshots"));
+}
+
 TEST(UserConfig, EnsureFolderCreatesParentsAndRefusesAFile) {
     TempDir dir;
     EXPECT_EQ(ensureFolder(dir.path / "a" / "b"), "");
