@@ -33,6 +33,12 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out", render.out, "the camera view as PNG")->capture_default_str();
     renderCmd->add_option("--shadow-map", render.shadowMapExr, "the raw shadow map as a 1-channel float EXR");
     renderCmd->add_option("--shadow-map-png", render.shadowMapPng, "a viewable PNG of the shadow map");
+    renderCmd->add_option("--compare", render.compare,
+                          "A/B: a second preset, drawn right of the divider from the same camera, each side labelled "
+                          "with its pass times");
+    renderCmd->add_option("--split", render.split, "with --compare: the divider, 0..1 of the width")->capture_default_str();
+    renderCmd->add_flag("--measure", render.measure,
+                        "with --compare: each side's acne, leak and wrong pixels against the exact reference");
     renderCmd->add_option("--light", render.light,
                           "whose map --shadow-map / --shadow-map-png write (a point light: its six faces as a cross)")
         ->capture_default_str();

@@ -1,5 +1,6 @@
 #include "cli/render_command.h"
 
+#include "accuracy/accuracy_meter.h"
 #include "cli/frame_report.h"
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
@@ -7,15 +8,50 @@
 #include "frame/renderer.h"
 #include "gl/gl_errors.h"
 #include "image/image_io.h"
+#include "image/split_view.h"
 #include "scene/scene_source.h"
 #include "settings/preset_io.h"
 #include "settings/settings_fields.h"
 #include "shadow/shadow_map_files.h"
 
+#include <algorithm>
 #include <array>
+#include <cstdio>
 #include <iostream>
 
 namespace shadowlab::cli {
+
+namespace {
+
+std::vector<std::uint8_t> topRowFirst(const std::vector<std::uint8_t>& glRows, int width, int height) {
+    std::vector<std::uint8_t> out(glRows.size());
+    const std::size_t stride = std::size_t(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(glRows.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * stride), stride,
+                    out.begin() + std::ptrdiff_t(std::size_t(y) * stride));
+    return out;
+}
+
+std::string milliseconds(const std::optional<double>& ms) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f ms", ms.value_or(0.0));
+    return ms ? text : "n/a";
+}
+
+std::vector<std::string> compareLabel(const std::string& side, const std::string& preset, const FrameStats& stats) {
+    return {side + ": " + preset,
+            "shadow " + milliseconds(stats.shadowPass.milliseconds) + ", main " + milliseconds(stats.mainPass.milliseconds) +
+                " (" + (stats.timingSource.rfind("GPU", 0) == 0 ? "GPU" : "CPU") + ")"};
+}
+
+std::string accuracyLine(const AccuracyReport& r) {
+    char text[128];
+    std::snprintf(text, sizeof text, "acne %.3f %%, leak %.3f %%, wrong %.3f %%", r.acnePercent, r.leakPercent,
+                  r.wrongPercent);
+    return text;
+}
+
+}  // namespace
 
 int runRender(const RenderOptions& options) {
     std::vector<std::string> overrides = options.overrides;
@@ -31,6 +67,16 @@ int runRender(const RenderOptions& options) {
     for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.shadowMapExr, "--shadow-map"},
                                        std::pair{options.shadowMapPng, "--shadow-map-png"}})
         if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+
+    std::optional<Settings> settingsB;
+    if (!options.compare.empty()) {
+        settingsB = settingsFromCli(options.compare, {}, options.scene);
+        if (!settingsB) return 2;
+        if (!(options.split >= 0.0 && options.split <= 1.0))
+            return fail("--split " + std::to_string(options.split) + ": expected a fraction of the width in [0, 1]");
+    } else if (options.measure) {
+        return fail("--measure goes with --compare (for one preset's numbers use `shadowlab measure`)");
+    }
 
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
@@ -54,11 +100,35 @@ int runRender(const RenderOptions& options) {
         for (const std::string& w : stats.warnings) std::cerr << "warning: " << w << "\n";
         for (const std::string& e : gl::takeDebugErrors()) std::cerr << "GL error: " << e << "\n";
 
-        const std::vector<std::uint8_t> pixels = target.readColor();
+        std::vector<std::uint8_t> pixels = target.readColor();
+        bool flip = true;  // GL rows (bottom first) unless composed top-first below
         // The picture carries the preset that made it, with the scene and the camera used (render --preset shot.png).
         Settings used = *settings;
         used.camera = recordedCamera(camera, settings->camera.autoFrame);
-        if (std::string error = writePng(options.out, target.width(), target.height(), 4, pixels.data(), true,
+        if (settingsB) {
+            // B from the same camera, with its own renderer (its maps are B's own); then one split picture.
+            Renderer rendererB;
+            RenderTarget targetB;
+            if (std::string error = targetB.resize(options.width, options.height); !error.empty()) return fail(error);
+            FrameStats statsB = rendererB.render(scene, *settingsB, camera, targetB);
+            if (!statsB.ok) return fail(options.compare + ": " + statsB.error);
+            rendererB.waitForTimings(statsB);
+            std::vector<std::string> labelA = compareLabel("A", options.preset.empty() ? "default" : options.preset, stats);
+            std::vector<std::string> labelB = compareLabel("B", options.compare, statsB);
+            if (options.measure) {
+                AccuracyMeter meter;  // one reference for both sides when the light and view are the same
+                for (auto [side, label] : {std::pair{&*settings, &labelA}, std::pair{&*settingsB, &labelB}}) {
+                    const AccuracyReport report = meter.measure(scene, *side, camera, options.width, options.height);
+                    if (!report.ok) return fail("--measure: " + report.error);
+                    label->push_back(accuracyLine(report));
+                }
+            }
+            pixels = composeSplitView(topRowFirst(pixels, options.width, options.height),
+                                      topRowFirst(targetB.readColor(), options.width, options.height), options.width,
+                                      options.height, options.split, labelA, labelB);
+            flip = false;
+        }
+        if (std::string error = writePng(options.out, target.width(), target.height(), 4, pixels.data(), flip,
                                          presetPngText(used, options.scene));
             !error.empty())
             return fail(error);

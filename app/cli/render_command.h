@@ -15,6 +15,9 @@ struct RenderOptions {
     std::string shadowMapExr;
     std::string shadowMapPng;
     int light = 0;  // whose map --shadow-map / --shadow-map-png write
+    std::string compare;  // A/B: preset B, drawn right of the divider (A = --preset with --set)
+    double split = 0.5;   // where the divider stands, 0..1 of the width
+    bool measure = false; // with --compare: each side's acne / leak / wrong pixels against the exact reference
     std::string view;                    // lit | shadow | light-depth; empty = the preset's
 };
 

@@ -1,5 +1,7 @@
 #include "image/line_plot.h"
 
+#include "image/canvas.h"
+
 // stb is third-party: its warnings are silenced for this include only.
 #pragma GCC diagnostic push
 #ifdef __clang__
@@ -13,7 +15,6 @@
 #pragma GCC diagnostic ignored "-Wuseless-cast"
 #pragma GCC diagnostic ignored "-Wold-style-cast"
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb_easy_font.h>
 #pragma GCC diagnostic pop
 
 #include <algorithm>
@@ -24,57 +25,6 @@
 namespace shadowlab {
 
 namespace {
-
-class Canvas {
-public:
-    Canvas(int w, int h) : w_(w), h_(h), rgba_(std::size_t(w) * std::size_t(h) * 4, 255) {}
-
-    void blend(int x, int y, const PlotColor& c) {
-        if (x < 0 || y < 0 || x >= w_ || y >= h_) return;
-        std::uint8_t* p = &rgba_[(std::size_t(y) * std::size_t(w_) + std::size_t(x)) * 4];
-        const int a = c[3];
-        for (int k = 0; k < 3; ++k) p[k] = std::uint8_t((c[std::size_t(k)] * a + p[k] * (255 - a)) / 255);
-        p[3] = 255;
-    }
-    void fill(int x0, int y0, int x1, int y1, const PlotColor& c) {
-        for (int y = std::max(y0, 0); y < std::min(y1, h_); ++y)
-            for (int x = std::max(x0, 0); x < std::min(x1, w_); ++x) blend(x, y, c);
-    }
-    // A 2-pixel wide line (Bresenham with a thickening pixel below), thick enough to read in a PNG.
-    void line(double ax, double ay, double bx, double by, const PlotColor& c, int thickness = 2) {
-        const int steps = int(std::ceil(std::max(std::abs(bx - ax), std::abs(by - ay)))) + 1;
-        for (int i = 0; i <= steps; ++i) {
-            const double t = double(i) / steps;
-            const int x = int(std::lround(ax + (bx - ax) * t)), y = int(std::lround(ay + (by - ay) * t));
-            for (int d = 0; d < thickness; ++d) setPixel(x, y + d, c);
-        }
-    }
-    void text(int x, int y, const std::string& s, const PlotColor& c) {
-        // stb_easy_font emits quads (4 vertices of 16 bytes: x, y, z floats and a colour) at scale 1 (7 px tall).
-        static char buffer[99999];
-        const int quads = stb_easy_font_print(float(x), float(y), const_cast<char*>(s.c_str()), nullptr, buffer,
-                                              int(sizeof(buffer)));
-        for (int q = 0; q < quads; ++q) {
-            const float* v = reinterpret_cast<const float*>(buffer + q * 64);
-            fill(int(v[0]), int(v[1]), int(v[8]), int(v[9]), c);
-        }
-    }
-    // A filled disc (or a 2-pixel ring) of radius r centred on (cx, cy).
-    void disc(double cx, double cy, double r, bool ring, const PlotColor& c) {
-        for (int y = int(std::floor(cy - r - 1)); y <= int(std::ceil(cy + r + 1)); ++y)
-            for (int x = int(std::floor(cx - r - 1)); x <= int(std::ceil(cx + r + 1)); ++x) {
-                const double d = std::hypot(double(x) - cx, double(y) - cy);
-                if (d <= r && (!ring || d >= r - 2.0)) blend(x, y, c);
-            }
-    }
-    static int textWidth(const std::string& s) { return stb_easy_font_width(const_cast<char*>(s.c_str())); }
-    std::vector<std::uint8_t> take() { return std::move(rgba_); }
-
-private:
-    void setPixel(int x, int y, const PlotColor& c) { blend(x, y, c); }
-    int w_, h_;
-    std::vector<std::uint8_t> rgba_;
-};
 
 std::string tickText(double v, double spacing) {
     const int decimals = std::clamp(int(std::ceil(-std::log10(spacing))), 0, 9);

@@ -85,6 +85,27 @@ expect_error bad-command "" "$SHADOWLAB" frobnicate
 printf 'not a gltf' >broken.gltf
 expect_error broken-gltf "broken.gltf" "$SHADOWLAB" render --scene broken.gltf --out x.png
 
+# Issue 13, A/B: preset B right of the divider, from the same camera, each side labelled (with --measure, accuracy).
+expect_ok render-compare "$SHADOWLAB" render --scene builtin:grazing --preset acne --compare default --measure \
+  --split 0.5 --width 320 --height 180 --out ab.png
+[ "$(png_size ab.png)" = "320 180" ] && pass "the A/B picture is the view's size" || fail "ab.png size: $(png_size ab.png)"
+# The acne side is striped (many colours), the default side flat: the halves must differ in distinct colours.
+python3 "$SOURCE_DIR/tests/e2e/split_check.py" ab.png && pass "left half striped, right half clean" \
+  || fail "split picture: $(python3 "$SOURCE_DIR/tests/e2e/split_check.py" ab.png 2>&1)"
+expect_error compare-split "--split 2" "$SHADOWLAB" render --scene builtin:textbook --compare default --split 2 \
+  --width 64 --height 64 --out x.png
+expect_error measure-alone "--measure goes with --compare" "$SHADOWLAB" render --scene builtin:textbook --measure \
+  --width 64 --height 64 --out x.png
+expect_error compare-missing "nope.json" "$SHADOWLAB" render --scene builtin:textbook --compare nope.json \
+  --width 64 --height 64 --out x.png
+expect_ok render-point-cross "$SHADOWLAB" render --scene builtin:textbook --set lights.1.type=point \
+  --set lights.1.position=1,4,3 --set lights.1.shadow.resolution=64 --light 1 --shadow-map-png cross.png \
+  --width 64 --height 64 --out x.png
+[ "$(png_size cross.png)" = "256 192" ] && pass "a point light's map is a 4x3 cross of faces" \
+  || fail "cross.png size: $(png_size cross.png)"
+expect_error no-light-3 "there is no light 3" "$SHADOWLAB" render --scene builtin:textbook --light 3 \
+  --shadow-map-png m.png --width 64 --height 64 --out x.png
+
 # No command opens the editor; without a display it says so and exits non-zero (tests/e2e/editor_test.sh opens it).
 expect_error noargs "needs a display" "$SHADOWLAB"
 
