@@ -357,6 +357,30 @@ void Editor::revertPreset() {
     state_.say("reverted to preset " + state_.preset.name());
 }
 
+void Editor::renamePreset(const std::string& name) {
+    const std::string old = state_.preset.path();
+    std::string error = presetNameProblem(name);
+    const std::string path = (std::filesystem::path(old).parent_path() / (name + ".json")).string();
+    if (error.empty()) error = state_.preset.rename(path);
+    if (!error.empty()) {
+        state_.say("rename: " + error, true);
+        return;
+    }
+    refreshPresetList();
+    state_.say("renamed " + old + " to " + path);
+}
+
+void Editor::deletePreset() {
+    const std::string old = state_.preset.path();
+    const std::string deleted = (std::filesystem::path(old).parent_path() / "deleted").string();
+    if (std::string error = state_.preset.remove(deleted); !error.empty()) {
+        state_.say("delete: " + error, true);
+        return;
+    }
+    refreshPresetList();
+    state_.say("moved " + old + " to " + deleted + "/ (recoverable); Save asks for a new name");
+}
+
 void Editor::requestScreenshot(bool withShadowMap) {
     screenshotRequested_ = true;
     screenshotWithMap_ = withShadowMap;

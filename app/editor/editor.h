@@ -69,6 +69,8 @@ public:
     void savePreset() override;
     void openSaveAs() override;
     void revertPreset() override;
+    void renamePreset(const std::string& name) override;
+    void deletePreset() override;
     void requestScreenshot(bool withShadowMap) override;
     void frameScene() override;
     void measureAccuracy() override;

@@ -128,6 +128,9 @@ public:
     virtual void savePreset() = 0;                      // in place, or opens Save As for shipped/unnamed presets
     virtual void openSaveAs() = 0;
     virtual void revertPreset() = 0;
+    // The current user preset: a new file name in the same folder, or moved into the folder's deleted/ subfolder.
+    virtual void renamePreset(const std::string& name) = 0;
+    virtual void deletePreset() = 0;
     virtual void requestScreenshot(bool withShadowMap) = 0;
     virtual void frameScene() = 0;
     // Accuracy: measure the current view, search for a bias (applied to the settings when done), cancel either.

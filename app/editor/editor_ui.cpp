@@ -20,13 +20,6 @@ namespace {
 constexpr float kToolbarHeight = 34.0f;
 constexpr float kStatusHeight = 26.0f;
 
-std::string presetNameProblem(const std::string& name) {
-    if (name.empty()) return "enter a name";
-    if (name.find_first_of("/\\") != std::string::npos) return "a name cannot contain / or \\";
-    if (name.front() == '.') return "a name cannot start with a dot";
-    return {};
-}
-
 }  // namespace
 
 void Editor::buildUi() {

@@ -66,4 +66,40 @@ std::string PresetSession::saveAs(const std::string& path, const Settings& setti
     return {};
 }
 
+std::string presetNameProblem(const std::string& name) {
+    if (name.empty()) return "enter a name";
+    if (name.find_first_of("/\\") != std::string::npos) return "a name cannot contain / or \\";
+    if (name.front() == '.') return "a name cannot start with a dot";
+    return {};
+}
+
+std::string PresetSession::rename(const std::string& path) {
+    namespace fs = std::filesystem;
+    if (!canSaveInPlace()) return "only your own presets can be renamed (shipped presets and pictures are read-only)";
+    std::error_code ec;
+    if (fs::exists(path, ec)) return path + " already exists";
+    fs::rename(path_, path, ec);  // same folder: atomic, nothing rewritten
+    if (ec) return "cannot rename " + path_ + " to " + path + ": " + ec.message();
+    path_ = path;
+    name_ = presetNameFromPath(path);
+    return {};
+}
+
+std::string PresetSession::remove(const std::string& deletedFolder) {
+    namespace fs = std::filesystem;
+    if (!canSaveInPlace()) return "only your own presets can be deleted (shipped presets and pictures are read-only)";
+    std::error_code ec;
+    fs::create_directories(deletedFolder, ec);
+    if (ec) return "cannot create " + deletedFolder + ": " + ec.message();
+    // Never overwrite an earlier deleted copy: name-1.json, name-2.json, ...
+    fs::path target = fs::path(deletedFolder) / fs::path(path_).filename();
+    for (int n = 1; fs::exists(target, ec); ++n)
+        target = fs::path(deletedFolder) / (name_ + "-" + std::to_string(n) + ".json");
+    fs::rename(path_, target, ec);
+    if (ec) return "cannot move " + path_ + " to " + target.string() + ": " + ec.message();
+    path_.clear();
+    name_ = name_ + " (deleted)";
+    return {};
+}
+
 }  // namespace shadowlab::editor

@@ -19,6 +19,11 @@ public:
     std::string save(const Settings& settings, const std::string& scene);
     // Saves to `path` (refuses to replace an existing file unless `overwrite`) and makes it the current preset.
     std::string saveAs(const std::string& path, const Settings& settings, bool overwrite, const std::string& scene);
+    // User presets only (canSaveInPlace): renames the file to `path` in the same folder (refused if that exists), the
+    // content untouched; or moves it into `deletedFolder` (recoverable, never erased), after which the session is
+    // unnamed (Save asks for a name) and the settings stay as they are.
+    std::string rename(const std::string& path);
+    std::string remove(const std::string& deletedFolder);
     // Back to the settings as last loaded or saved; the view mode stays as the user chose it (see dirty()).
     void revert(Settings& settings) const;
 
@@ -44,5 +49,8 @@ private:
 
 // "acne" for ".../presets/acne.json".
 std::string presetNameFromPath(const std::string& path);
+
+// "" when `name` can name a preset file in the user folder, else what is wrong with it.
+std::string presetNameProblem(const std::string& name);
 
 }  // namespace shadowlab::editor

@@ -3,6 +3,9 @@
 #include "editor_harness.h"
 #include "settings/preset_io.h"
 
+#include <fstream>
+#include <iterator>
+
 namespace shadowlab::editor::test {
 
 namespace {
@@ -71,6 +74,44 @@ TEST_F(EditorPresets, CtrlSOnAShippedPresetSavesACopyInTheUserFolderThatLoadsBac
     h.pressKey(keys::kS, /*ctrl=*/true);
     EXPECT_FALSE(h.hasControl("saveAs.name"));
     EXPECT_EQ(loadPresetFile(saved.string()).settings->lights[0].shadow.resolution, 512);
+}
+
+TEST_F(EditorPresets, YourOwnPresetsCanBeRenamedAndDeletedShippedOnesCannot) {
+    EditorHarness& h = *harness;
+    // A shipped preset: both buttons are drawn but do nothing (disabled).
+    h.click("preset.rename");
+    EXPECT_FALSE(h.hasControl("rename.name"));
+    h.click("shadow.resolution=1K");
+    h.pressKey(keys::kS, /*ctrl=*/true);
+    h.selectAllAndType("first-name");
+    const std::filesystem::path users = folder / "user-presets";
+    ASSERT_TRUE(std::filesystem::exists(users / "first-name.json"));
+    const std::string text = [&] {
+        std::ifstream in(users / "first-name.json");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+
+    h.click("preset.rename");
+    ASSERT_TRUE(h.hasControl("rename.name"));
+    h.selectAllAndType("second-name");
+    EXPECT_FALSE(std::filesystem::exists(users / "first-name.json"));
+    ASSERT_TRUE(std::filesystem::exists(users / "second-name.json"));
+    EXPECT_EQ(h.state().preset.name(), "second-name");
+    std::ifstream renamed(users / "second-name.json");
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(renamed), {}), text) << "a rename rewrites nothing";
+    h.frame();
+    EXPECT_TRUE(h.hasControl("preset.user=second-name"));
+
+    // Delete moves the file into deleted/ (nothing the user saved is lost); the settings stay.
+    const Settings before = h.state().settings;
+    h.click("preset.delete");
+    h.click("delete.ok");
+    EXPECT_FALSE(std::filesystem::exists(users / "second-name.json"));
+    EXPECT_TRUE(std::filesystem::exists(users / "deleted" / "second-name.json"));
+    EXPECT_EQ(h.state().settings, before);
+    EXPECT_FALSE(h.state().preset.canSaveInPlace());
+    h.frame();
+    EXPECT_FALSE(h.hasControl("preset.user=second-name"));
 }
 
 TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {

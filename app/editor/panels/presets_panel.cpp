@@ -2,6 +2,8 @@
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
+#include <imgui_stdlib.h>
+
 namespace shadowlab::editor {
 
 void drawPresetsPanel(PanelContext& ctx) {
@@ -40,6 +42,45 @@ void drawPresetsPanel(PanelContext& ctx) {
     if (ImGui::Button("Revert")) ctx.actions.revertPreset();
     ImGui::EndDisabled();
     state.controls.recordLastItem("preset.revert");
+
+    // Your own presets can be renamed and deleted (moved to deleted/, recoverable); shipped ones are read-only.
+    static std::string newName;
+    ImGui::BeginDisabled(!state.preset.canSaveInPlace());
+    if (ImGui::Button("Rename...")) {
+        newName = state.preset.name();
+        ImGui::OpenPopup("Rename preset");
+    }
+    state.controls.recordLastItem("preset.rename");
+    ImGui::SameLine();
+    if (ImGui::Button("Delete...")) ImGui::OpenPopup("Delete preset");
+    state.controls.recordLastItem("preset.delete");
+    ImGui::EndDisabled();
+    if (ImGui::BeginPopupModal("Rename preset", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+        ImGui::SetNextItemWidth(260.0f);
+        bool submit = ImGui::InputText("new name", &newName, ImGuiInputTextFlags_EnterReturnsTrue);
+        state.controls.recordLastItem("rename.name");
+        submit |= ImGui::Button("Rename", ImVec2(110, 0));
+        state.controls.recordLastItem("rename.ok");
+        ImGui::SameLine();
+        const bool cancel = ImGui::Button("Cancel", ImVec2(110, 0));
+        state.controls.recordLastItem("rename.cancel");
+        if (submit) ctx.actions.renamePreset(newName);
+        if (submit || cancel) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    if (ImGui::BeginPopupModal("Delete preset", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ImGui::Text("Move \"%s\" into deleted/ in your presets folder?", state.preset.name().c_str());
+        ImGui::TextDisabled("(recoverable: nothing is erased; the current settings stay)");
+        const bool confirm = ImGui::Button("Delete", ImVec2(110, 0));
+        state.controls.recordLastItem("delete.ok");
+        ImGui::SameLine();
+        const bool cancel = ImGui::Button("Cancel", ImVec2(110, 0));
+        state.controls.recordLastItem("delete.cancel");
+        if (confirm) ctx.actions.deletePreset();
+        if (confirm || cancel) ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
     ImGui::TextDisabled("yours: %s", state.userPresetsDir.c_str());
 }
 
