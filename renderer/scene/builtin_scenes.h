@@ -134,9 +134,9 @@ struct CourtyardBox {
 };
 inline constexpr CourtyardBox kCourtyardBuildings[] = {
     {"hall", {-6.5f, 2.5f, -5.0f}, {5.0f, 5.0f, 8.0f}},
-    {"tower", {6.5f, 4.0f, -6.5f}, {4.0f, 8.0f, 4.0f}},
+    {"tower", {-6.5f, 4.0f, 6.5f}, {4.0f, 8.0f, 4.0f}},  // far from the auto-framed camera: it hides nothing
     {"house", {6.0f, 1.5f, 5.0f}, {6.0f, 3.0f, 4.0f}},
-    {"shed", {-6.0f, 1.0f, 6.0f}, {3.0f, 2.0f, 3.0f}},
+    {"shed", {6.0f, 1.0f, -6.0f}, {3.0f, 2.0f, 3.0f}},
 };
 inline constexpr float kCourtyardPostHeight = 2.5f;
 inline constexpr CourtyardBox kCourtyardPosts[] = {
@@ -146,12 +146,12 @@ inline constexpr CourtyardBox kCourtyardPosts[] = {
     {"post-se", {1.5f, 0.5f * kCourtyardPostHeight, 1.5f}, {0.1f, kCourtyardPostHeight, 0.1f}},
     {"post-thin", {0.0f, 0.5f * kCourtyardPostHeight, 3.0f}, {0.03f, kCourtyardPostHeight, 0.03f}},
 };
-inline constexpr glm::vec3 kCourtyardSunDir{-0.45f, -1.0f, 0.35f};  // travels toward -x, +z (not normalized)
+inline constexpr glm::vec3 kCourtyardSunDir{-0.5f, -1.0f, -0.25f};  // travels toward -x, -z (not normalized)
 inline constexpr glm::vec3 kCourtyardHallSpot{-3.5f, 5.5f, -3.0f};  // above the hall's inner corner
 inline constexpr glm::vec3 kCourtyardHallSpotTarget{2.0f, 0.0f, 2.5f};
 inline constexpr float kCourtyardHallSpotConeDeg = 60.0f;  // full cone
-inline constexpr glm::vec3 kCourtyardTowerSpot{4.0f, 7.5f, -4.0f};  // beside the tower's top
-inline constexpr glm::vec3 kCourtyardTowerSpotTarget{-2.0f, 0.0f, 3.0f};
+inline constexpr glm::vec3 kCourtyardTowerSpot{-4.0f, 7.5f, 4.0f};  // beside the tower's top
+inline constexpr glm::vec3 kCourtyardTowerSpotTarget{2.5f, 0.0f, -1.5f};
 inline constexpr float kCourtyardTowerSpotConeDeg = 45.0f;
 inline constexpr float kCourtyardSpotRange = 20.0f;
 inline constexpr glm::vec3 kCourtyardLantern{0.0f, 3.0f, 0.0f};  // 0.5 above the posts' tops
