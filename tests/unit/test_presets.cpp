@@ -1,10 +1,14 @@
 // Presets: JSON shape, partial presets over a base, warnings for unknown keys, all-or-nothing errors, exact float
 // round trips through files, atomic saves that never lose the previous file, and the shipped presets.
+#include "light/scene_lights.h"
+#include "scene/builtin_scenes.h"
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
 
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -523,4 +527,40 @@ TEST(Presets, ShippedPresetsShowWhatTheirNamesSay) {
     EXPECT_EQ(wide.filter.kind, FilterKind::Pcf);
     EXPECT_EQ(wide.filter.kernel, 9);
     EXPECT_GE(wide.lights[0].shadow.slopeScaledDepthBias, static_cast<float>(wide.filter.kernel / 2) + 1.0f);
+}
+
+// presets/room.json and presets/courtyard.json list their scene's lights themselves (useSceneLights stays off), so
+// they light the scene the same way its SceneLights do: same kinds, order, positions, aims, cones, ranges, colours.
+TEST(Presets, LightPresetsHoldTheirScenesLights) {
+    for (const std::string name : {"room", "courtyard"}) {
+        SCOPED_TRACE(name);
+        const PresetLoadResult r = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/" + name + ".json");
+        ASSERT_TRUE(r.settings) << joinLines(r.errors);
+        EXPECT_EQ(r.scene, "builtin:" + name);
+        EXPECT_FALSE(r.settings->useSceneLights);
+        const std::optional<Scene> scene = makeBuiltinScene(name);
+        ASSERT_TRUE(scene);
+        Settings fromScene;
+        fromScene.useSceneLights = true;
+        const std::vector<LightSettings> expected = effectiveLights(fromScene, *scene);
+        const std::vector<LightSettings>& lights = r.settings->lights;
+        ASSERT_EQ(lights.size(), expected.size());
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            SCOPED_TRACE("light " + std::to_string(i) + " (" + scene->lights[i].name + ")");
+            const LightSettings &got = lights[i], &want = expected[i];
+            EXPECT_EQ(got.type, want.type);
+            EXPECT_TRUE(got.enabled && got.castsShadows);
+            if (want.type != LightType::Point)  // the preset may write the aim unnormalized, e.g. [1, -1, 1]
+                EXPECT_GT(glm::dot(glm::normalize(got.direction), glm::normalize(want.direction)), 1.0f - 1e-6f);
+            if (want.type != LightType::Directional) {
+                EXPECT_EQ(got.position, want.position);
+                EXPECT_EQ(got.range, want.range);
+            }
+            if (want.type == LightType::Spot) EXPECT_NEAR(got.spotConeDeg, want.spotConeDeg, 1e-4f);
+            EXPECT_EQ(got.color, want.color);
+            EXPECT_EQ(got.intensity, want.intensity);
+            // Tuned, not left at the defaults' 0.5-texel normal offset (acne 0.13 % for courtyard's spot-hall).
+            EXPECT_EQ(got.shadow.normalOffset, 1.0f);
+        }
+    }
 }
