@@ -216,6 +216,17 @@ Scene roof() {
     return scene;
 }
 
+SceneLight pointLight(const char* name, const glm::vec3& position, float range, const glm::vec3& color, float intensity) {
+    SceneLight light;
+    light.name = name;
+    light.type = SceneLightType::Point;
+    light.position = position;
+    light.range = range;
+    light.color = color;
+    light.intensity = intensity;
+    return light;
+}
+
 // Six single-sided quads facing into the room, one mesh each (floor, ceiling, four walls), and the pillar and the
 // table; the point light at the centre is a SceneLight, so useSceneLights picks it up like a glTF light.
 Scene room() {
@@ -248,13 +259,7 @@ Scene room() {
         }
     }
 
-    SceneLight bulb;
-    bulb.name = "bulb";
-    bulb.type = SceneLightType::Point;
-    bulb.position = kRoomLight;
-    bulb.range = kRoomLightRange;
-    bulb.color = {1.0f, 0.95f, 0.85f};
-    scene.lights.push_back(bulb);
+    scene.lights.push_back(pointLight("bulb", kRoomLight, kRoomLightRange, {1.0f, 0.95f, 0.85f}, 1.0f));
     return scene;
 }
 
@@ -296,14 +301,7 @@ Scene courtyard() {
                                          kCourtyardHallSpotConeDeg, {0.75f, 0.85f, 1.0f}));
     scene.lights.push_back(courtyardSpot("spot-tower", kCourtyardTowerSpot, kCourtyardTowerSpotTarget,
                                          kCourtyardTowerSpotConeDeg, {1.0f, 0.85f, 0.65f}));
-    SceneLight lantern;
-    lantern.name = "lantern";
-    lantern.type = SceneLightType::Point;
-    lantern.position = kCourtyardLantern;
-    lantern.range = kCourtyardLanternRange;
-    lantern.color = {1.0f, 0.75f, 0.45f};
-    lantern.intensity = 0.6f;
-    scene.lights.push_back(lantern);
+    scene.lights.push_back(pointLight("lantern", kCourtyardLantern, kCourtyardLanternRange, {1.0f, 0.75f, 0.45f}, 0.6f));
     return scene;
 }
 

@@ -85,6 +85,13 @@ std::vector<glm::dvec3> sphereDirections(int count) {
     return dirs;
 }
 
+// The lights a frame uses with useSceneLights on.
+std::vector<LightSettings> sceneLightsOf(const Scene& scene) {
+    Settings settings;
+    settings.useSceneLights = true;
+    return effectiveLights(settings, scene);
+}
+
 const SceneLight& onlyLight(const Scene& scene) {
     if (scene.lights.size() != 1) throw std::runtime_error("expected one light");
     return scene.lights[0];
@@ -108,9 +115,7 @@ TEST(RoomScene, OnePointLightAtTheCentreWhoseRangeReachesEveryCorner) {
         EXPECT_LT(glm::length(c - bulb.position), bulb.range) << "corner " << corner;
     }
     // useSceneLights brings it in as a point light with its range.
-    Settings settings;
-    settings.useSceneLights = true;
-    const std::vector<LightSettings> lights = effectiveLights(settings, room);
+    const std::vector<LightSettings> lights = sceneLightsOf(room);
     ASSERT_EQ(lights.size(), 1u);
     EXPECT_EQ(lights[0].type, LightType::Point);
     EXPECT_EQ(lights[0].position, b::kRoomLight);
@@ -250,9 +255,7 @@ TEST(CourtyardScene, ASunTwoSpotsAndALanternOverBuildingsAndThinPosts) {
         EXPECT_FALSE(shadowedFrom(yard, foot - outward * 1.0, lamp));
     }
 
-    Settings settings;
-    settings.useSceneLights = true;
-    const std::vector<LightSettings> lights = effectiveLights(settings, yard);
+    const std::vector<LightSettings> lights = sceneLightsOf(yard);
     ASSERT_EQ(lights.size(), 4u);
     EXPECT_EQ(lights[0].type, LightType::Directional);
     EXPECT_EQ(lights[1].type, LightType::Spot);
