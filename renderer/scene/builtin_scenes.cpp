@@ -216,7 +216,8 @@ Scene roof() {
     return scene;
 }
 
-SceneLight pointLight(const char* name, const glm::vec3& position, float range, const glm::vec3& color, float intensity) {
+SceneLight pointLight(const char* name, const glm::vec3& position, float range, const glm::vec3& color,
+                      float intensity) {
     SceneLight light;
     light.name = name;
     light.type = SceneLightType::Point;
@@ -301,7 +302,8 @@ Scene courtyard() {
                                          kCourtyardHallSpotConeDeg, {0.75f, 0.85f, 1.0f}));
     scene.lights.push_back(courtyardSpot("spot-tower", kCourtyardTowerSpot, kCourtyardTowerSpotTarget,
                                          kCourtyardTowerSpotConeDeg, {1.0f, 0.85f, 0.65f}));
-    scene.lights.push_back(pointLight("lantern", kCourtyardLantern, kCourtyardLanternRange, {1.0f, 0.75f, 0.45f}, 0.6f));
+    scene.lights.push_back(
+        pointLight("lantern", kCourtyardLantern, kCourtyardLanternRange, {1.0f, 0.75f, 0.45f}, 0.6f));
     return scene;
 }
 
