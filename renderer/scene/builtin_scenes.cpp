@@ -274,10 +274,12 @@ SceneLight courtyardSpot(const char* name, const glm::vec3& position, const glm:
     spot.outerConeRad = 0.5f * glm::radians(coneDeg);  // glTF's outer cone is the half angle
     spot.range = kCourtyardSpotRange;
     spot.color = color;
-    spot.intensity = 0.6f;
+    spot.intensity = 0.3f;
     return spot;
 }
 
+// Intensities sum to about 1 where every light reaches (N.L and the range window included), so no light's shadow is
+// lost in a saturated pixel.
 Scene courtyard() {
     Scene scene = baseScene("courtyard");
     addFloor(scene);
@@ -296,14 +298,14 @@ Scene courtyard() {
     sun.name = "sun";
     sun.direction = glm::normalize(kCourtyardSunDir);
     sun.color = {1.0f, 0.96f, 0.88f};
-    sun.intensity = 0.8f;
+    sun.intensity = 0.5f;
     scene.lights.push_back(sun);
     scene.lights.push_back(courtyardSpot("spot-hall", kCourtyardHallSpot, kCourtyardHallSpotTarget,
                                          kCourtyardHallSpotConeDeg, {0.75f, 0.85f, 1.0f}));
     scene.lights.push_back(courtyardSpot("spot-tower", kCourtyardTowerSpot, kCourtyardTowerSpotTarget,
                                          kCourtyardTowerSpotConeDeg, {1.0f, 0.85f, 0.65f}));
     scene.lights.push_back(
-        pointLight("lantern", kCourtyardLantern, kCourtyardLanternRange, {1.0f, 0.75f, 0.45f}, 0.6f));
+        pointLight("lantern", kCourtyardLantern, kCourtyardLanternRange, {1.0f, 0.75f, 0.45f}, 0.35f));
     return scene;
 }
 
