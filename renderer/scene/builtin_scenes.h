@@ -135,7 +135,7 @@ struct CourtyardBox {
 inline constexpr CourtyardBox kCourtyardBuildings[] = {
     {"hall", {-6.5f, 2.5f, -5.0f}, {5.0f, 5.0f, 8.0f}},
     {"tower", {-6.5f, 4.0f, 6.5f}, {4.0f, 8.0f, 4.0f}},  // far from the auto-framed camera: it hides nothing
-    {"house", {6.0f, 1.5f, 5.0f}, {6.0f, 3.0f, 4.0f}},
+    {"house", {6.0f, 2.0f, 5.0f}, {6.0f, 4.0f, 4.0f}},  // its roof above the lantern: never edge-on to it
     {"shed", {6.0f, 1.0f, -6.0f}, {3.0f, 2.0f, 3.0f}},
 };
 inline constexpr float kCourtyardPostHeight = 2.5f;
