@@ -1,11 +1,13 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
+#include "cli/bench_lights.h"
 #include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
 #include "cli/probe_command.h"
 #include "cli/profile_command.h"
 #include "cli/render_command.h"
+#include "cli/sweep_command.h"
 #include "cli/tune_command.h"
 #include "editor_window/edit_command.h"
 #include "settings/settings_fields.h"
@@ -31,6 +33,9 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out", render.out, "the camera view as PNG")->capture_default_str();
     renderCmd->add_option("--shadow-map", render.shadowMapExr, "the raw shadow map as a 1-channel float EXR");
     renderCmd->add_option("--shadow-map-png", render.shadowMapPng, "a viewable PNG of the shadow map");
+    renderCmd->add_option("--light", render.light,
+                          "whose map --shadow-map / --shadow-map-png write (a point light: its six faces as a cross)")
+        ->capture_default_str();
     renderCmd->add_option("--view", render.view, "lit | shadow | light-depth")
         ->check(CLI::IsMember({"lit", "shadow", "light-depth"}));
 
@@ -46,6 +51,9 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
     benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
+    benchCmd->add_flag("--lights", bench.lights,
+                       "many lights: each view's time, views a static frame and a moved light render, the main pass "
+                       "with 1, 2, 4, 8 ... lights shadowed and not");
 
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
@@ -66,6 +74,9 @@ int main(int argc, char** argv) {
     measureCmd->add_option("--overlay", measure.overlay, "write the error overlay as PNG");
     measureCmd->add_option("--cause-overlay", measure.causeOverlay,
                            "write the overlay coloured by cause (why each mismatched pixel is wrong) as PNG");
+    measureCmd->add_option("--remeasure-bench", measure.remeasureBench,
+                           "then time N live re-measures after a bias change (GPU count) against the CPU path")
+        ->check(CLI::Range(1, 10000));
 
     cli::TuneOptions tune;
     CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");
@@ -110,6 +121,25 @@ int main(int argc, char** argv) {
     profileCmd->add_option("--plot-width", profile.plotWidth, "chart width")->capture_default_str();
     profileCmd->add_option("--plot-height", profile.plotHeight, "chart height")->capture_default_str();
 
+    cli::SweepOptions sweep;
+    CLI::App* sweepCmd = app.add_subcommand("sweep", "What accuracy costs: time and measure every point of preset-key axes, with the raster limit and the Pareto front");
+    sweepCmd->add_option("--scene", sweep.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    sweepCmd->add_option("--preset", sweep.preset, "a preset JSON path, or the name of a shipped preset");
+    sweepCmd->add_option("--set", sweep.overrides, "override a setting: key=value (repeatable)");
+    sweepCmd->add_option("--axis", sweep.axes, "KEY=V1,V2,...: a preset key and its values (repeatable; the points are "
+                                               "the cartesian product)")->required();
+    sweepCmd->add_option("--width", sweep.width, "view width")->capture_default_str();
+    sweepCmd->add_option("--height", sweep.height, "view height")->capture_default_str();
+    sweepCmd->add_option("--frames", sweep.frames, "timed frames per point (median)")->capture_default_str()->check(
+        CLI::Range(1, 100000));
+    sweepCmd->add_option("--json", sweep.json, "write every point's numbers and settings as JSON");
+    sweepCmd->add_option("--csv", sweep.csv, "write every point's numbers and settings as CSV");
+    sweepCmd->add_option("--chart", sweep.chart, "write the chart (cost vs wrong pixels, the front, the preset) as PNG");
+    sweepCmd->add_option("--chart-width", sweep.chartWidth, "chart width")->capture_default_str()->check(
+        CLI::Range(200, 8192));
+    sweepCmd->add_option("--chart-height", sweep.chartHeight, "chart height")->capture_default_str()->check(
+        CLI::Range(150, 8192));
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -121,13 +151,14 @@ int main(int argc, char** argv) {
     }
 
     if (*renderCmd) return cli::runRender(render);
-    if (*benchCmd) return cli::runBench(bench);
+    if (*benchCmd) return bench.lights ? cli::runBenchLights(bench) : cli::runBench(bench);
     if (*editCmd) return editor_window::runEdit(edit);
     if (*measureCmd) return cli::runMeasure(measure);
     if (*tuneCmd) return cli::runTune(tune);
     if (*exportCmd) return cli::runExport(exportOptions);
     if (*probeCmd) return cli::runProbe(probe);
     if (*profileCmd) return cli::runProfile(profile);
+    if (*sweepCmd) return cli::runSweep(sweep);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {
