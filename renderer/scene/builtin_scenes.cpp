@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,13 @@ namespace shadowlab {
 namespace {
 
 using namespace builtin;
+
+// The six faces of an axis-aligned box: outward normal and an in-face axis (the other is cross(normal, axis)).
+struct BoxFace {
+    glm::vec3 normal, axis;
+};
+constexpr BoxFace kBoxFaces[6] = {{{1, 0, 0}, {0, 1, 0}}, {{-1, 0, 0}, {0, 1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+                                  {{0, -1, 0}, {0, 0, 1}}, {{0, 0, 1}, {1, 0, 0}}, {{0, 0, -1}, {1, 0, 0}}};
 
 // Builds one Mesh from planar quads (flat normals) and spheres (analytic normals), all CCW seen from outside.
 struct MeshBuilder {
@@ -39,11 +47,8 @@ struct MeshBuilder {
     // Axis-aligned box, then rotated by `frame` (a rotation) about the origin: world = frame * (center + local).
     void box(const glm::vec3& center, const glm::vec3& size, const glm::mat3& frame = glm::mat3(1.0f)) {
         const glm::vec3 h = 0.5f * size;
-        const std::pair<glm::vec3, glm::vec3> faces[6] = {  // (outward normal, in-face axis)
-            {{1, 0, 0}, {0, 1, 0}}, {{-1, 0, 0}, {0, 1, 0}}, {{0, 1, 0}, {0, 0, 1}},
-            {{0, -1, 0}, {0, 0, 1}}, {{0, 0, 1}, {1, 0, 0}}, {{0, 0, -1}, {1, 0, 0}}};
         const std::size_t first = mesh.positions.size();
-        for (const auto& [n, u] : faces) quad(center + n * h, u * h, glm::cross(n, u) * h);
+        for (const BoxFace& f : kBoxFaces) quad(center + f.normal * h, f.axis * h, glm::cross(f.normal, f.axis) * h);
         for (std::size_t i = first; i < mesh.positions.size(); ++i) {
             mesh.positions[i] = frame * mesh.positions[i];
             mesh.normals[i] = frame * mesh.normals[i];
@@ -211,6 +216,99 @@ Scene roof() {
     return scene;
 }
 
+SceneLight pointLight(const char* name, const glm::vec3& position, float range, const glm::vec3& color,
+                      float intensity) {
+    SceneLight light;
+    light.name = name;
+    light.type = SceneLightType::Point;
+    light.position = position;
+    light.range = range;
+    light.color = color;
+    light.intensity = intensity;
+    return light;
+}
+
+// Six single-sided quads facing into the room, one mesh each (floor, ceiling, four walls), and the pillar and the
+// table; the point light at the centre is a SceneLight, so useSceneLights picks it up like a glTF light.
+Scene room() {
+    Scene scene = baseScene("room");
+    scene.materials.push_back(opaque("wall", {0.75f, 0.78f, 0.82f, 1.0f}));  // single-sided (glTF's default)
+    const glm::vec3 center = 0.5f * (kRoomMin + kRoomMax), h = 0.5f * (kRoomMax - kRoomMin);
+    const char* names[6] = {"wall+x", "wall-x", "ceiling", "floor", "wall+z", "wall-z"};
+    for (int i = 0; i < 6; ++i) {
+        const BoxFace& f = kBoxFaces[i];
+        MeshBuilder side(names[i], f.normal.y < 0.0f ? 0 : 2);  // the floor (outward normal -y) keeps "floor"
+        side.quad(center + f.normal * h, glm::cross(f.normal, f.axis) * h, f.axis * h);  // swapped: faces inward
+        addObject(scene, std::move(side));
+    }
+    MeshBuilder pillar("pillar", 1);
+    pillar.box(kRoomPillarCenter, kRoomPillarSize);
+    addObject(scene, std::move(pillar));
+
+    // The table: a top on four legs, one mesh per box (each mesh is one convex object).
+    MeshBuilder top("table-top", 1);
+    const float legHeight = kRoomTableHeight - kRoomTableTopSize.y;
+    top.box(kRoomTableCenter + glm::vec3(0.0f, legHeight + 0.5f * kRoomTableTopSize.y, 0.0f), kRoomTableTopSize);
+    addObject(scene, std::move(top));
+    const glm::vec2 legOffset = 0.5f * glm::vec2(kRoomTableTopSize.x, kRoomTableTopSize.z) - 1.5f * kRoomTableLegSize;
+    for (const float sx : {-1.0f, 1.0f}) {
+        for (const float sz : {-1.0f, 1.0f}) {
+            MeshBuilder leg("table-leg", 1);
+            leg.box(kRoomTableCenter + glm::vec3(sx * legOffset.x, 0.5f * legHeight, sz * legOffset.y),
+                    {kRoomTableLegSize, legHeight, kRoomTableLegSize});
+            addObject(scene, std::move(leg));
+        }
+    }
+
+    scene.lights.push_back(pointLight("bulb", kRoomLight, kRoomLightRange, {1.0f, 0.95f, 0.85f}, 1.0f));
+    return scene;
+}
+
+SceneLight courtyardSpot(const char* name, const glm::vec3& position, const glm::vec3& target, float coneDeg,
+                         const glm::vec3& color) {
+    SceneLight spot;
+    spot.name = name;
+    spot.type = SceneLightType::Spot;
+    spot.position = position;
+    spot.direction = glm::normalize(target - position);
+    spot.outerConeRad = 0.5f * glm::radians(coneDeg);  // glTF's outer cone is the half angle
+    spot.range = kCourtyardSpotRange;
+    spot.color = color;
+    spot.intensity = 0.3f;
+    return spot;
+}
+
+// Intensities sum to about 1 where every light reaches (N.L and the range window included), so no light's shadow is
+// lost in a saturated pixel.
+Scene courtyard() {
+    Scene scene = baseScene("courtyard");
+    addFloor(scene);
+    scene.materials.push_back(opaque("building", {0.7f, 0.66f, 0.6f, 1.0f}));
+    for (const CourtyardBox& b : kCourtyardBuildings) {
+        MeshBuilder building(b.name, 2);
+        building.box(b.center, b.size);
+        addObject(scene, std::move(building));
+    }
+    for (const CourtyardBox& p : kCourtyardPosts) {
+        MeshBuilder post(p.name, 1);
+        post.box(p.center, p.size);
+        addObject(scene, std::move(post));
+    }
+    SceneLight sun;
+    sun.name = "sun";
+    sun.direction = glm::normalize(kCourtyardSunDir);
+    sun.color = {1.0f, 0.96f, 0.88f};
+    sun.intensity = 0.5f;
+    scene.lights.push_back(sun);
+    scene.lights.push_back(courtyardSpot("spot-hall", kCourtyardHallSpot, kCourtyardHallSpotTarget,
+                                         kCourtyardHallSpotConeDeg, {0.75f, 0.85f, 1.0f}));
+    scene.lights.push_back(courtyardSpot("spot-tower", kCourtyardTowerSpot, kCourtyardTowerSpotTarget,
+                                         kCourtyardTowerSpotConeDeg, {1.0f, 0.85f, 0.65f}));
+    scene.lights.push_back(
+        pointLight("lantern", kCourtyardLantern, kCourtyardLanternRange, {1.0f, 0.75f, 0.45f}, 0.35f));
+    return scene;
+}
+
 struct Entry {
     const char* name;
     const char* description;
@@ -224,6 +322,9 @@ constexpr Entry kScenes[] = {
     {"fence", "an alpha-tested (MASK) double-sided fence of slats and a rail over a floor", fence},
     {"sphere-plane", "a finely tessellated unit sphere floating over a floor: the analytic check", spherePlane},
     {"roof", "a single-sided roof facing down over a floor, lit from above: cullMode=back drops its shadow", roof},
+    {"room", "a closed room lit by a point light at its centre, a pillar and a table: cube-map seams cross the "
+             "floor and walls", room},
+    {"courtyard", "buildings and thin posts lit by a sun, two spot lights and a point-light lantern", courtyard},
 };
 
 const Entry* find(const std::string& name) {

@@ -20,7 +20,7 @@ std::optional<Scene> makeBuiltinScene(const std::string& name);  // nullopt for 
 
 namespace builtin {
 
-// Every scene except "grazing": a floor quad at y = 0, centred at the origin, normal +y.
+// Every scene except "grazing" and "room": a floor quad at y = 0, centred at the origin, normal +y.
 inline constexpr float kFloorSize = 20.0f;  // 20 x 20
 
 // The default light of Settings (direction the light travels, not normalized); "grazing" is built against it.
@@ -101,6 +101,61 @@ inline constexpr glm::vec3 kRoofCenter{0.0f, 3.0f, 0.0f};
 inline constexpr float kRoofSize = 6.0f;  // 6 x 6
 inline constexpr glm::vec3 kRoofBoxCenter{5.0f, 0.75f, -4.0f};
 inline constexpr float kRoofBoxSize = 1.5f;
+
+// "room": a closed box room (hard case 9, point-light cube seams). Floor, ceiling and four walls are single-sided
+// quads (material "wall"; the floor keeps "floor") whose front faces look INTO the room: from the light inside they
+// are front faces, and an outside camera sees through the near walls into the room (back faces are not drawn).
+// The point light sits at the room's centre. The room is wider and deeper than it is high, and deeper than wide,
+// so the cube map's face edges cross the floor, the ceiling and the long walls (in a cube room with the light at
+// its centre every face edge would lie on a room edge): on the floor the -y face covers |x|, |z| <= kRoomLight.y
+// (a 6 x 6 square), the side faces the rest, split by the diagonals |x| = |z|; on the walls x = +-5 the faces
+// change at z = +-5. The pillar stands on the diagonal x = z, so its shadow wedge holds the diagonal seam and its
+// edges cross the square's edges (floor and ceiling) and run onto the wall x = 5 across the seam at z = 5. The
+// table's shadow straddles the square's edge x = -3. Both touch the floor (contact shadows).
+inline constexpr glm::vec3 kRoomMin{-5.0f, 0.0f, -7.0f};
+inline constexpr glm::vec3 kRoomMax{5.0f, 6.0f, 7.0f};
+inline constexpr glm::vec3 kRoomLight{0.0f, 3.0f, 0.0f};  // the centre of the room
+inline constexpr float kRoomLightRange = 10.0f;           // beyond the farthest corner (sqrt(5^2 + 3^2 + 7^2) = 9.11)
+inline constexpr glm::vec3 kRoomPillarCenter{1.5f, 3.0f, 1.5f};
+inline constexpr glm::vec3 kRoomPillarSize{0.6f, 6.0f, 0.6f};  // floor to ceiling
+inline constexpr glm::vec3 kRoomTableCenter{-2.5f, 0.0f, -1.5f};  // centre of the table's footprint on the floor
+inline constexpr glm::vec3 kRoomTableTopSize{2.0f, 0.1f, 1.2f};
+inline constexpr float kRoomTableHeight = 0.85f;  // top of the table top
+inline constexpr float kRoomTableLegSize = 0.08f;  // square legs, thin casters, inset by one leg size
+
+// "courtyard": the 20 x 20 floor with four buildings around its edge and thin posts in the middle, lit by four
+// lights (Scene::lights, in this order): a directional sun, two spot lights on the hall and the tower aimed into
+// the courtyard, and a point-light lantern above the posts, just higher than their tops, so the posts throw long
+// shadows outward onto the ground and the buildings' walls.
+struct CourtyardBox {
+    const char* name;
+    glm::vec3 center;
+    glm::vec3 size;
+};
+inline constexpr CourtyardBox kCourtyardBuildings[] = {
+    {"hall", {-6.5f, 2.5f, -5.0f}, {5.0f, 5.0f, 8.0f}},
+    {"tower", {-6.5f, 4.0f, 6.5f}, {4.0f, 8.0f, 4.0f}},  // far from the auto-framed camera: it hides nothing
+    {"house", {6.0f, 2.0f, 5.0f}, {6.0f, 4.0f, 4.0f}},  // its roof above the lantern: never edge-on to it
+    {"shed", {6.0f, 1.0f, -6.0f}, {3.0f, 2.0f, 3.0f}},
+};
+inline constexpr float kCourtyardPostHeight = 2.5f;
+inline constexpr CourtyardBox kCourtyardPosts[] = {
+    {"post-nw", {-1.5f, 0.5f * kCourtyardPostHeight, -1.5f}, {0.1f, kCourtyardPostHeight, 0.1f}},
+    {"post-ne", {1.5f, 0.5f * kCourtyardPostHeight, -1.5f}, {0.1f, kCourtyardPostHeight, 0.1f}},
+    {"post-sw", {-1.5f, 0.5f * kCourtyardPostHeight, 1.5f}, {0.1f, kCourtyardPostHeight, 0.1f}},
+    {"post-se", {1.5f, 0.5f * kCourtyardPostHeight, 1.5f}, {0.1f, kCourtyardPostHeight, 0.1f}},
+    {"post-thin", {0.0f, 0.5f * kCourtyardPostHeight, 3.0f}, {0.03f, kCourtyardPostHeight, 0.03f}},
+};
+inline constexpr glm::vec3 kCourtyardSunDir{-0.5f, -1.0f, -0.25f};  // travels toward -x, -z (not normalized)
+inline constexpr glm::vec3 kCourtyardHallSpot{-3.5f, 5.5f, -3.0f};  // above the hall's inner corner
+inline constexpr glm::vec3 kCourtyardHallSpotTarget{2.0f, 0.0f, 2.5f};
+inline constexpr float kCourtyardHallSpotConeDeg = 60.0f;  // full cone
+inline constexpr glm::vec3 kCourtyardTowerSpot{-4.0f, 7.5f, 4.0f};  // beside the tower's top
+inline constexpr glm::vec3 kCourtyardTowerSpotTarget{2.5f, 0.0f, -1.5f};
+inline constexpr float kCourtyardTowerSpotConeDeg = 45.0f;
+inline constexpr float kCourtyardSpotRange = 20.0f;
+inline constexpr glm::vec3 kCourtyardLantern{0.0f, 3.0f, 0.0f};  // 0.5 above the posts' tops
+inline constexpr float kCourtyardLanternRange = 14.0f;           // reaches the buildings' walls
 
 }  // namespace builtin
 }  // namespace shadowlab

@@ -47,7 +47,7 @@ for scene in "$SOURCE_DIR"/../shared/scenes/*/*.gltf; do
 done
 
 expect_ok scenes "$SHADOWLAB" scenes
-for name in textbook grazing thin-walls fence; do
+for name in textbook grazing thin-walls fence room courtyard; do
   grep -q "builtin:$name" scenes.out && pass "scenes lists $name" || fail "scenes does not list $name"
 done
 expect_ok info "$SHADOWLAB" info

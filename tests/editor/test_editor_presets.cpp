@@ -117,6 +117,7 @@ TEST_F(EditorPresets, YourOwnPresetsCanBeRenamedAndDeletedShippedOnesCannot) {
 TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
     EditorHarness& h = *harness;
     h.click("shadow.resolution=1K");
+    h.wheel("preset.shipped=default", -5.0f);  // "soft" sorts last: scroll the list down to it, as a user would
     h.click("preset.shipped=soft");
     ASSERT_TRUE(h.hasControl("dialog.cancel")) << "the unsaved-changes question was not asked";
     h.click("dialog.cancel");
@@ -130,6 +131,7 @@ TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
 
     // "Save" on a shipped preset goes through Save As, then switches.
     h.click("shadow.resolution=1K");
+    h.wheel("preset.shipped=soft", 5.0f);  // back up to "acne", the first
     h.click("preset.shipped=acne");
     h.click("dialog.save");
     ASSERT_TRUE(h.hasControl("saveAs.name"));

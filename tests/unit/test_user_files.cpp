@@ -201,7 +201,7 @@ TEST(PresetCatalog, ShippedPresetsAreReadOnlyAndUserPresetsFollowSorted) {
 
     std::vector<std::string> shipped, mine;
     for (const PresetEntry& e : all) (e.readOnly ? shipped : mine).push_back(e.name);
-    EXPECT_EQ(shipped, (std::vector<std::string>{"acne", "default", "pcf-wide", "peter-panning", "soft"}));
+    EXPECT_EQ(shipped, (std::vector<std::string>{"acne", "courtyard", "default", "pcf-wide", "peter-panning", "room", "soft"}));
     EXPECT_EQ(mine, (std::vector<std::string>{"alpha", "zeta"}));
     EXPECT_TRUE(all.front().readOnly);  // shipped first
     EXPECT_FALSE(all.back().readOnly);
@@ -210,9 +210,9 @@ TEST(PresetCatalog, ShippedPresetsAreReadOnlyAndUserPresetsFollowSorted) {
 
 TEST(PresetCatalog, MissingUserFolderAndSameFolderTwice) {
     const fs::path shipped = fs::path(SHADOWLAB_SOURCE_DIR) / "presets";
-    EXPECT_EQ(listPresets(shipped, "/nonexistent/presets").size(), 5u);
+    EXPECT_EQ(listPresets(shipped, "/nonexistent/presets").size(), 7u);
     std::vector<PresetEntry> twice = listPresets(shipped, shipped);
-    EXPECT_EQ(twice.size(), 5u);
+    EXPECT_EQ(twice.size(), 7u);
     for (const PresetEntry& e : twice) EXPECT_TRUE(e.readOnly);
     EXPECT_TRUE(listPresets("/nonexistent/a", "/nonexistent/b").empty());
 }
