@@ -158,10 +158,14 @@ void main() {
         // nearestRankIndex: ceil(p n / 100) - 1, at least 0.
         uint n = words[C_MISMATCHED];
         uint rank = (uPercent * n + 99u) / 100u;
-        for (int m = 0; m < 3; ++m) {
-            words[WORD_RANK + m] = rank > 0u ? rank - 1u : 0u;
-            words[WORD_PREFIX + m] = 0u;
-        }
+        // Written out: NVIDIA's compiler refuses a loop index here ("lvalue in array access too complex").
+        uint first = rank > 0u ? rank - 1u : 0u;
+        words[WORD_RANK + 0] = first;
+        words[WORD_RANK + 1] = first;
+        words[WORD_RANK + 2] = first;
+        words[WORD_PREFIX + 0] = 0u;
+        words[WORD_PREFIX + 1] = 0u;
+        words[WORD_PREFIX + 2] = 0u;
         dispatchSize[0] = (words[WORD_LISTED] + uint(GROUP_SIZE) - 1u) / uint(GROUP_SIZE);
         dispatchSize[1] = 1u;
         dispatchSize[2] = 1u;
@@ -171,6 +175,13 @@ void main() {
 #elif STAGE == STAGE_HISTOGRAM
 shared uint groupBins[3 * 256];
 
+// Counts a key in measure m's histogram when its higher bytes match the bytes picked so far.
+void binKey(int m, float value) {
+    uint bits = orderBits(value);
+    if (uShift == 24 || (bits >> uint(uShift + 8)) == (words[WORD_PREFIX + m] >> uint(uShift + 8)))
+        atomicAdd(groupBins[m * 256 + int((bits >> uint(uShift)) & 0xFFu)], 1u);
+}
+
 void main() {
     uint local = gl_LocalInvocationIndex;
     for (uint b = local; b < 768u; b += uint(GROUP_SIZE)) groupBins[b] = 0u;
@@ -179,13 +190,10 @@ void main() {
         uint i = listed[gl_GlobalInvocationID.x];
         float d = keys[i];
         vec2 u = units[i];
-        float values[3] = float[3](d, d * u.x, d * u.y);
-        for (int m = 0; m < 3; ++m) {
-            uint bits = orderBits(values[m]);
-            // Only keys whose higher bytes match the bytes picked so far.
-            if (uShift == 24 || (bits >> uint(uShift + 8)) == (words[WORD_PREFIX + m] >> uint(uShift + 8)))
-                atomicAdd(groupBins[m * 256 + int((bits >> uint(uShift)) & 0xFFu)], 1u);
-        }
+        // One call per measure with a constant index: NVIDIA's compiler refuses a loop over a local array here.
+        binKey(0, d);
+        binKey(1, d * u.x);
+        binKey(2, d * u.y);
     }
     barrier();
     for (uint b = local; b < 768u; b += uint(GROUP_SIZE))
