@@ -103,6 +103,7 @@ void Editor::renderFrame() {
         state_.animatedAzimuthDeg = std::fmod(state_.animatedAzimuthDeg + state_.animateDegreesPerSecond * dt, 360.0);
     }
     renderViewport();
+    renderAbView();
     pollAccuracy();
     runProbe();
     runProfile();
@@ -138,6 +139,7 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     state_.sceneSpec = spec;
     state_.scenePathInput = spec;
     renderer_->sceneChanged();
+    abRenderer_.sceneChanged();
     for (std::size_t i = 0; i < state_.scene->warnings.size() && i < 3; ++i)
         state_.say(state_.scene->name + ": " + state_.scene->warnings[i]);
     // A new scene gets the preset's camera (auto-framed by default, and on a scene it was not tuned on).
@@ -150,8 +152,7 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     }
 }
 
-Settings Editor::effectiveSettings() const {
-    Settings s = state_.settings;
+Settings Editor::previewed(Settings s) const {
     if (state_.animateLight && state_.animatedAzimuthDeg != 0.0) {
         // The preview turns the light around the vertical axis through the scene's centre.
         const glm::dmat4 turn =
@@ -442,7 +443,7 @@ bool Editor::busy() const {
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
                         state_.showLightFrustum};
-    return !(key == *lastRendered_) || mapPictureStale_;
+    return !(key == *lastRendered_) || mapPictureStale_ || abViewDue();
 }
 
 std::optional<std::string> Editor::takeWindowScreenshotRequest() {
