@@ -17,6 +17,14 @@ std::string sideName(const EditorState& state, const Settings& settings) {
     return state.preset.name() + (state.preset.dirty(settings) ? " *" : "");
 }
 
+// A frame that skipped the shadow pass (its map was still valid) labelled with the time of the newest one that ran:
+// the side's shadow cost, not "n/a".
+FrameStats withShadowTime(FrameStats stats, const FrameStats& lastRan) {
+    if (!stats.shadowPass.ran && lastRan.shadowPass.milliseconds)
+        stats.shadowPass.milliseconds = lastRan.shadowPass.milliseconds;
+    return stats;
+}
+
 }  // namespace
 
 void startAb(EditorState& state) {
@@ -82,7 +90,8 @@ std::vector<std::string> abLabel(const EditorState& state, bool sideA, const std
     if (sideA)
         lines = ab.haveStatsA ? compareLabel("A", ab.aName, ab.statsA) : std::vector<std::string>{"A: " + ab.aName};
     else
-        lines = state.haveStats ? compareLabel("B", sideName(state, state.settings), state.stats)
+        lines = state.haveStats ? compareLabel("B", sideName(state, state.settings),
+                                               withShadowTime(state.stats, state.lastShadowPass))
                                 : std::vector<std::string>{"B: " + sideName(state, state.settings)};
     if (now) {
         AccuracyViewKey key = *now;
@@ -136,6 +145,7 @@ bool AbRenderer::render(EditorState& state, const Settings& settingsA, const Cam
     if (frustum) {
         if (std::string error = frustum->draw(stats, target_); !error.empty()) state.say("A/B: light frustum: " + error, true);
     }
+    if (state.ab.haveStatsA) stats = withShadowTime(std::move(stats), state.ab.statsA);
     state.ab.statsA = std::move(stats);
     state.ab.haveStatsA = true;
     ++state.ab.renders;

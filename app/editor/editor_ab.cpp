@@ -53,17 +53,23 @@ void Editor::abToolbar() {
                               "draggable divider and B right of it, each with its pass times and accuracy");
         return;
     }
-    if (ImGui::Button("Swap")) swapAb(state_);
+    // While comparing, one highlighted button opens the rest (the toolbar has no room for three more).
+    ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    if (ImGui::Button("A/B ...")) ImGui::OpenPopup("abMenu");
+    ImGui::PopStyleColor();
+    state_.controls.recordLastItem("ab.menu");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Comparing A (left) with the edited B (right): swap, apply A or stop");
+    if (!ImGui::BeginPopup("abMenu")) return;
+    if (ImGui::Selectable("Swap A and B")) swapAb(state_);
     state_.controls.recordLastItem("ab.swap");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("A and B trade settings: you then edit the former A");
-    ImGui::SameLine();
-    if (ImGui::Button("Apply A")) applyA(state_);
+    if (ImGui::Selectable("Apply A")) applyA(state_);
     state_.controls.recordLastItem("ab.applyA");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The edited settings (B) become A's: %s", state_.ab.aName.c_str());
-    ImGui::SameLine();
-    if (ImGui::Button("Stop A/B")) stopAb(state_);
+    if (ImGui::Selectable("Stop comparing")) stopAb(state_);
     state_.controls.recordLastItem("ab.stop");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to one view; the edited settings (B) stay");
+    ImGui::EndPopup();
 }
 
 void Editor::abDividerInput(ImVec2 imagePos, ImVec2 imageSize) {

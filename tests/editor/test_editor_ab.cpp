@@ -51,7 +51,7 @@ TEST_F(EditorAb, SnapshotEditDragSwapApply) {
     EditorHarness& h = *harness;
     const AbState& ab = h.state().ab;
     const float savedBias = h.state().settings.lights[0].shadow.depthBias;
-    ASSERT_FALSE(h.hasControl("ab.swap"));
+    ASSERT_FALSE(h.hasControl("ab.menu"));
     h.click("ab.start");
     h.settle();
     ASSERT_TRUE(ab.active);
@@ -90,6 +90,7 @@ TEST_F(EditorAb, SnapshotEditDragSwapApply) {
     EXPECT_EQ(ab.renders, 1) << "moving the divider re-rendered A";
 
     // Swap: B is the saved preset again (no "*"), A holds the edit.
+    h.click("ab.menu");
     h.click("ab.swap");
     h.settle();
     EXPECT_EQ(h.state().settings.lights[0].shadow.depthBias, savedBias);
@@ -100,6 +101,7 @@ TEST_F(EditorAb, SnapshotEditDragSwapApply) {
     EXPECT_EQ(ab.renders, 2) << "A changed on the swap, so it rendered once more";
 
     // Apply A: B takes A's settings and is the unsaved edit again.
+    h.click("ab.menu");
     h.click("ab.applyA");
     h.settle();
     Settings expected = ab.a;
@@ -110,6 +112,7 @@ TEST_F(EditorAb, SnapshotEditDragSwapApply) {
     EXPECT_EQ(ab.renders, 2) << "applying A did not change A";
 
     // Stop: one view, the edited settings stay.
+    h.click("ab.menu");
     h.click("ab.stop");
     h.settle();
     EXPECT_FALSE(ab.active);
