@@ -143,7 +143,8 @@ bool AbRenderer::render(EditorState& state, const Settings& settingsA, const Cam
         return true;
     }
     if (frustum) {
-        if (std::string error = frustum->draw(stats, target_); !error.empty()) state.say("A/B: light frustum: " + error, true);
+        if (std::string error = frustum->draw(stats, target_); !error.empty())
+            state.say("A/B: light frustum: " + error, true);
     }
     if (state.ab.haveStatsA) stats = withShadowTime(std::move(stats), state.ab.statsA);
     state.ab.statsA = std::move(stats);

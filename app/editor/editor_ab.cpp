@@ -58,7 +58,8 @@ void Editor::abToolbar() {
     if (ImGui::Button("A/B ...")) ImGui::OpenPopup("abMenu");
     ImGui::PopStyleColor();
     state_.controls.recordLastItem("ab.menu");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Comparing A (left) with the edited B (right): swap, apply A or stop");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Comparing A (left) with the edited B (right): swap, apply A or stop");
     if (!ImGui::BeginPopup("abMenu")) return;
     if (ImGui::Selectable("Swap A and B")) swapAb(state_);
     state_.controls.recordLastItem("ab.swap");

@@ -104,6 +104,8 @@ void Editor::drawViewport() {
     ImGui::SetNextItemWidth(150.0f);
     viewModeCombo();
     ImGui::SameLine();
+    abToolbar();  // next to what the view shows: it splits the view
+    ImGui::SameLine();
     ImGui::Checkbox("light frustum", &state_.showLightFrustum);
     state_.controls.recordLastItem("viewport.frustum");
     ImGui::SameLine();
@@ -127,8 +129,6 @@ void Editor::drawViewport() {
     ImGui::Checkbox("+ shadow map", &state_.screenshotWithShadowMap);
     state_.controls.recordLastItem("viewport.screenshotWithMap");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Screenshots also write the shadow map as float EXR and PNG");
-    ImGui::SameLine();
-    abToolbar();
     // How to move the camera, where there is room for it (else on the Frame button's tooltip).
     const char* help = "drag: orbit | middle / Shift+drag: pan | wheel: zoom";
     const float helpWidth = ImGui::CalcTextSize(help).x;

@@ -20,7 +20,8 @@ void messageLogButton(EditorState& state) {
     const std::string label = "Log (" + std::to_string(state.messages.size()) + ")###messageLog";
     if (ImGui::SmallButton(label.c_str())) ImGui::OpenPopup("Message log");
     state.controls.recordLastItem("status.log");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The last %d messages, with their times", int(EditorState::kMessagesKept));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The last %d messages, with their times", int(EditorState::kMessagesKept));
     // Above the status line, as wide as a long message needs, never off the window.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const ImVec2 size(std::min(display.x - 20.0f, ImGui::GetFontSize() * 60.0f), std::min(display.y * 0.6f, 420.0f));

@@ -15,9 +15,9 @@ std::string milliseconds(const std::optional<double>& ms) {
 }  // namespace
 
 std::vector<std::string> compareLabel(const std::string& side, const std::string& name, const FrameStats& stats) {
-    return {side + ": " + name,
-            "shadow " + milliseconds(stats.shadowPass.milliseconds) + ", main " + milliseconds(stats.mainPass.milliseconds) +
-                " (" + (stats.timingSource.rfind("GPU", 0) == 0 ? "GPU" : "CPU") + ")"};
+    return {side + ": " + name, "shadow " + milliseconds(stats.shadowPass.milliseconds) + ", main " +
+                                    milliseconds(stats.mainPass.milliseconds) + " (" +
+                                    (stats.timingSource.rfind("GPU", 0) == 0 ? "GPU" : "CPU") + ")"};
 }
 
 std::string accuracyLine(const AccuracyReport& r) {

@@ -2,7 +2,11 @@
 // editing B never re-renders A; Swap and Apply A move settings between the sides and the preset's "*" follows.
 #include "editor_harness.h"
 
+#include "accuracy/compare_label.h"
+
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -32,14 +36,28 @@ protected:
         long differ = 0, total = 0;
         for (int y = hh / 2; y < hh * 9 / 10; ++y)
             for (int x = int(x0); x < int(x1); ++x) {
-                const std::size_t wi = (std::size_t(int(view.y) + y) * std::size_t(h.width()) + std::size_t(int(view.x) + x)) * 4;
+                const std::size_t wi =
+                    (std::size_t(int(view.y) + y) * std::size_t(h.width()) + std::size_t(int(view.x) + x)) * 4;
                 const std::size_t bi = (std::size_t(hh - 1 - y) * std::size_t(w) + std::size_t(x)) * 4;
                 int d = 0;
-                for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(window[wi + std::size_t(c)]) - int(bPixels[bi + std::size_t(c)])));
+                for (std::size_t c = 0; c < 3; ++c)
+                    d = std::max(d, std::abs(int(window[wi + c]) - int(bPixels[bi + c])));
                 differ += d > 3;
                 ++total;
             }
         return total ? double(differ) / double(total) : 0.0;
+    }
+    // Measure in the Accuracy panel and wait for the numbers (at most two minutes).
+    void measure() {
+        harness->click("accuracy.measure");
+        const auto start = std::chrono::steady_clock::now();
+        while (harness->state().accuracy.running) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            harness->frame();
+            ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 120.0)
+                << "the measurement did not finish";
+        }
+        harness->frame(2);
     }
     std::filesystem::path folder;
     std::unique_ptr<EditorHarness> harness;
@@ -134,6 +152,43 @@ TEST_F(EditorAb, LabelsNameEachSideWithItsTimes) {
     EXPECT_EQ(a[1].rfind("shadow ", 0), 0u) << a[1];
     EXPECT_NE(a[1].find(" ms, main "), std::string::npos) << a[1];
     EXPECT_NE(b[1].find(" ms, main "), std::string::npos) << b[1];
+}
+
+TEST_F(EditorAb, EachSideShowsTheAccuracyMeasuredForIt) {
+    harness.reset();
+    harness = std::make_unique<EditorHarness>(testOptions(folder), 1280, 720);  // a small view measures quickly
+    harness->settle();
+    EditorHarness& h = *harness;
+    measure();  // the preset's settings: they become A
+    ASSERT_TRUE(h.state().accuracy.report.has_value());
+    const AccuracyReport reportA = *h.state().accuracy.report;
+    const double acneA = reportA.acnePercent;
+    h.click("ab.start");
+    h.settle();
+    type("shadow.depthBias", "0");
+    type("shadow.slopeScaledDepthBias", "0");
+    type("shadow.normalOffset", "0");
+    std::vector<std::string> b = abLabel(h.state(), false, h.editor().currentView());
+    EXPECT_EQ(b.size(), 2u) << "B shows numbers measured for other settings";
+    measure();
+    ASSERT_TRUE(h.state().accuracy.report.has_value());
+    const double acneB = h.state().accuracy.report->acnePercent;
+    EXPECT_GT(acneB, acneA + 1.0) << "no bias should show acne";
+    const std::optional<AccuracyViewKey> now = h.editor().currentView();
+    const std::vector<std::string> a = abLabel(h.state(), true, now);
+    b = abLabel(h.state(), false, now);
+    ASSERT_EQ(a.size(), 3u);
+    ASSERT_EQ(b.size(), 3u);
+    EXPECT_EQ(a[2], accuracyLine(reportA));
+    EXPECT_EQ(b[2], accuracyLine(*h.state().accuracy.report));
+    EXPECT_EQ(a[2].rfind("acne ", 0), 0u) << a[2];
+    h.saveWindow("ab-accuracy");
+    // A moved camera: neither side's numbers describe the view any more. (The divider, at the view's centre where a
+    // drag starts, goes aside first.)
+    h.drag("ab.divider", -h.editor().viewportRect().z * 0.3f, 0.0f);
+    h.drag("viewport.image", 60.0f, 0.0f);
+    EXPECT_EQ(abLabel(h.state(), true, h.editor().currentView()).size(), 2u);
+    EXPECT_EQ(abLabel(h.state(), false, h.editor().currentView()).size(), 2u);
 }
 
 }  // namespace shadowlab::editor::test
