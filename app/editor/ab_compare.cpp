@@ -34,6 +34,7 @@ void startAb(EditorState& state) {
     state.ab.haveStatsA = false;
     state.ab.renders = 0;
     state.ab.measured.clear();
+    state.ab.seen = -1;
     rememberMeasurement(state.ab, state.accuracy);
     state.say("A/B: A is a snapshot of " + state.ab.aName + "; edits change B (right of the divider)");
 }
@@ -73,7 +74,9 @@ Settings abSettingsA(const EditorState& state) {
 }
 
 void rememberMeasurement(AbState& ab, const AccuracyState& accuracy) {
-    if (!accuracy.report || !accuracy.reportKey) return;
+    const long reports = accuracy.measurements + accuracy.liveMeasurements;
+    if (reports == ab.seen || !accuracy.report || !accuracy.reportKey) return;
+    ab.seen = reports;
     auto same = [&](const auto& entry) { return entry.first == *accuracy.reportKey; };
     auto it = std::find_if(ab.measured.begin(), ab.measured.end(), same);
     if (it != ab.measured.end()) {

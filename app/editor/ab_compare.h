@@ -29,8 +29,10 @@ struct AbState {
     FrameStats statsA;      // A's newest frame
     bool haveStatsA = false;
     long renders = 0;       // passes A ran since the comparison started
-    // Measurements seen while comparing (newest last, a few): a side shows the one made for its settings and view.
-    std::vector<std::pair<AccuracyViewKey, AccuracyReport>> measured;
+    // Measurements' numbers seen while comparing (newest last, a few): a side shows the one made for its settings
+    // and view. `seen` counts the accuracy state's reports already looked at.
+    std::vector<std::pair<AccuracyViewKey, AccuracyNumbers>> measured;
+    long seen = -1;
 };
 
 // The toolbar's actions. start: A = the current settings. swap: A and B trade settings. applyA: B = A (the comparison

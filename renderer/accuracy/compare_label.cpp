@@ -20,7 +20,7 @@ std::vector<std::string> compareLabel(const std::string& side, const std::string
                                     (stats.timingSource.rfind("GPU", 0) == 0 ? "GPU" : "CPU") + ")"};
 }
 
-std::string accuracyLine(const AccuracyReport& r) {
+std::string accuracyLine(const AccuracyNumbers& r) {
     char text[128];
     std::snprintf(text, sizeof text, "acne %.3f %%, leak %.3f %%, wrong %.3f %%", r.acnePercent, r.leakPercent,
                   r.wrongPercent);

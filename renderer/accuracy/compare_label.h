@@ -13,6 +13,6 @@ namespace shadowlab {
 std::vector<std::string> compareLabel(const std::string& side, const std::string& name, const FrameStats& stats);
 
 // "acne 0.012 %, leak 0.000 %, wrong 0.340 %"
-std::string accuracyLine(const AccuracyReport& report);
+std::string accuracyLine(const AccuracyNumbers& numbers);
 
 }  // namespace shadowlab
