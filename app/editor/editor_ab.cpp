@@ -40,8 +40,9 @@ void Editor::renderAbView() {
 bool Editor::abViewDue() const {
     if (!state_.ab.active || !state_.scene || !orbit_) return false;
     if (state_.accuracy.showOverlay && state_.accuracy.overlayTexture) return false;
-    return abRenderer_.due(state_, previewed(abSettingsA(state_)), orbit_->toCamera(), int(viewportRect_.z),
-                           int(viewportRect_.w), state_.showLightFrustum);
+    const int w = int(viewportRect_.z), h = int(viewportRect_.w);
+    if (w < 16 || h < 16 || target_.width() != w || target_.height() != h) return false;  // B renders first
+    return abRenderer_.due(state_, previewed(abSettingsA(state_)), orbit_->toCamera(), w, h, state_.showLightFrustum);
 }
 
 void Editor::abToolbar() {

@@ -27,7 +27,13 @@ void messageLogButton(EditorState& state) {
     const ImVec2 size(std::min(display.x - 20.0f, ImGui::GetFontSize() * 60.0f), std::min(display.y * 0.6f, 420.0f));
     ImGui::SetNextWindowSize(size, ImGuiCond_Appearing);
     ImGui::SetNextWindowPos(ImVec2(10.0f, ImGui::GetItemRectMin().y - 4.0f), ImGuiCond_Appearing, ImVec2(0.0f, 1.0f));
-    if (!ImGui::BeginPopup("Message log")) return;
+    // Opaque: the panels behind it would show through the text.
+    ImVec4 background = ImGui::GetStyleColorVec4(ImGuiCol_PopupBg);
+    background.w = 1.0f;
+    ImGui::PushStyleColor(ImGuiCol_PopupBg, background);
+    const bool open = ImGui::BeginPopup("Message log");
+    ImGui::PopStyleColor();
+    if (!open) return;
     const ImVec2 pos = ImGui::GetWindowPos(), windowSize = ImGui::GetWindowSize();
     state.controls.record("log", ControlRect{pos.x, pos.y, windowSize.x, windowSize.y});
     ImGui::TextDisabled("%d messages, newest last (also printed in the terminal)", int(state.messages.size()));
