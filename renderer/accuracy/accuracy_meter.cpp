@@ -3,6 +3,7 @@
 #include "accuracy/accuracy_metrics.h"
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/gbuffer_pass.h"
+#include "accuracy/light_isolation.h"
 #include "accuracy/shadow_boundary.h"
 #include "frame/renderer.h"
 #include "reference/embree_scene.h"
@@ -34,11 +35,6 @@ struct SurfaceKey {
     int width, height;
     bool operator==(const SurfaceKey&) const = default;
 };
-
-bool sameLight(const ReferenceLight& a, const ReferenceLight& b) {
-    return a.spot == b.spot && a.direction == b.direction && (!a.spot || (a.position == b.position &&
-                                                                          a.cosHalfCone == b.cosHalfCone));
-}
 
 void setStage(AccuracyProgress* progress, float fraction, const char* stage) {
     if (!progress) return;
@@ -128,7 +124,7 @@ void AccuracyMeter::sceneChanged() {
     impl_->renderer.sceneChanged();
 }
 
-AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settings, const Camera& camera, int width,
+AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given, const Camera& camera, int width,
                                       int height, AccuracyProgress* progress) {
     Impl& m = *impl_;
     const auto start = Clock::now();
@@ -143,11 +139,15 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
         return fail("cancelled");
     };
     if (width < 1 || height < 1) return fail("view size must be at least 1x1");
-    if (std::vector<std::string> problems = settings.validate(); !problems.empty()) {
+    if (std::vector<std::string> problems = given.validate(); !problems.empty()) {
         std::string text;
         for (const std::string& p : problems) text += (text.empty() ? "" : "; ") + p;
         return fail("invalid settings: " + text);
     }
+    std::string isolationError;
+    const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
+    if (!isolated) return fail(isolationError);
+    const Settings& settings = *isolated;
 
     // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
     setStage(progress, 0.0f, "rendering the tool's frame");
@@ -215,12 +215,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     if (cancelled(progress)) return stop();
 
     // Exact visibility, once per light.
-    ReferenceLight light;
-    light.spot = stats.light.perspective;
-    light.direction = stats.light.direction;
-    light.position = stats.light.position;
-    light.cosHalfCone = std::cos(std::atan(stats.light.tanHalfFov));
-    const bool visibilityReused = m.visibilityLight && sameLight(*m.visibilityLight, light);
+    const ReferenceLight light = referenceLight(settings.lights[0], m.origin);
+    const bool visibilityReused = m.visibilityLight && *m.visibilityLight == light;
     if (!visibilityReused) {
         setStage(progress, 0.45f, "tracing shadow rays");
         m.visibilityLight.reset();
@@ -314,8 +310,10 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     input.worldPerPixel = [&](std::size_t i) { return glm::dot(m.samples.point[i] - eye, forward) * pixelPerDepth; };
     const MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
+    report.pixelOnBoundary.assign(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
-        report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
+        report.pixelOnBoundary[i] = boundary.onBoundary(i) ? 1 : 0;
+        report.counts.boundaryPixels += report.pixelOnBoundary[i];
         const PixelClass c = m.visibility.classes[i];
         if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
             ++report.counts.shadowedNearEdge;
@@ -330,6 +328,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     report.pixelClass = m.visibility.classes;
     report.pixelShadow = shadowFactor;
     report.pixelCause = metrics.causes;
+    report.pixelMark = metrics.marks;
+    report.pixelMeasured = metrics.measured;
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");

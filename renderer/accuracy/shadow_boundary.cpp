@@ -17,7 +17,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kProbeDirections = 16;
 constexpr double kProbeStepTexels = 0.5;
 
-bool hasVisibility(PixelClass c) { return c != PixelClass::Background && c != PixelClass::NonFinite; }
+// Out of range: the light does not reach it, so it is on neither side of a shadow boundary.
+bool hasVisibility(PixelClass c) {
+    return c != PixelClass::Background && c != PixelClass::NonFinite && c != PixelClass::OutOfRange;
+}
 
 glm::dvec2 toTexels(const LightSpace& light, const glm::dvec3& p) {
     const glm::dvec4 clip = light.viewProjection() * glm::dvec4(p, 1.0);
@@ -80,7 +83,7 @@ double ShadowBoundary::probe(std::size_t i, double k) {
     const glm::dvec3& n = samples_->normal[i];
     const bool lit = isLit((*classes_)[i]);
     // Moving along the light's rays keeps the texel: lift each ring point back onto the tangent plane that way.
-    const glm::dvec3 along = probe_.light.spot ? glm::normalize(p - probe_.light.position) : light_.direction;
+    const glm::dvec3 along = probe_.light.positional() ? glm::normalize(p - probe_.light.position) : light_.direction;
     const double nDotAlong = glm::dot(n, along);
     if (std::abs(nDotAlong) < 1e-9) return kInfinity;
     const double texelWorld =
