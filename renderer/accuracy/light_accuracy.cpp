@@ -55,12 +55,10 @@ void combineLights(ManyLightsReport& many) {
         const AccuracyReport* worst = nullptr;
         int worstSeverity = 0;
         double worstSeverityError = 0.0;
-        unsigned greySum = 0;
         for (const LightAccuracy& light : many.lights) {
             const AccuracyReport& r = light.report;
             surface = surface || r.pixelClass[i] != PixelClass::Background;
             onBoundary = onBoundary || r.pixelOnBoundary[i];
-            greySum += r.overlayRgba[i * 4];
             if (!r.pixelMeasured[i]) continue;
             measured = true;
             const bool isLitHere = isLit(r.pixelClass[i]);
@@ -100,8 +98,11 @@ void combineLights(ManyLightsReport& many) {
             if (from) {
                 std::copy_n(&((*from).*pick)[i * 4], 4, out);
             } else {
-                const auto grey = std::uint8_t(greySum / unsigned(many.lights.size()));
-                out[0] = out[1] = out[2] = grey;
+                for (int ch = 0; ch < 3; ++ch) {
+                    unsigned sum = 0;
+                    for (const LightAccuracy& light : many.lights) sum += ((light.report).*pick)[i * 4 + std::size_t(ch)];
+                    out[ch] = std::uint8_t(sum / unsigned(many.lights.size()));
+                }
             }
         }
         if (surface && !measured) ++many.unreached;
