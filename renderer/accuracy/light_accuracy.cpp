@@ -16,7 +16,7 @@ int severity(const AccuracyReport& r, std::size_t i, double error) {
     const PixelMark mark = r.pixelMark[i];
     if (mark == PixelMark::None) return 0;
     const bool beyondK = mark == PixelMark::Acne || mark == PixelMark::Leak;
-    return 1 + (beyondK ? 1 : 0) + (error >= 0.5 ? 2 : 0);
+    return 1 + (beyondK ? 2 : 0) + (error >= 0.5 ? 1 : 0);
 }
 
 double errorAt(const AccuracyReport& r, std::size_t i) {

@@ -17,7 +17,8 @@
 //   mean error    = mean over measured pixels of the largest |S-V| among the lights that reach the pixel
 //   edge error    = the largest of the lights' edge errors (each unit on its own): a bound, not a percentile
 //   causes        = each mismatched pixel counted once, under the cause of its worst light
-// The worst light at a pixel: wrong beyond k > wrong within k > visibly wrong beyond k > within k, then larger |S-V|.
+// The worst light at a pixel: acne / leak beyond k (wrong first) > mismatched within k (wrong first), then the larger
+// |S-V|; so the union overlay shows a counted acne / leak colour wherever any light has one.
 // The overlays of the whole picture colour each pixel as its worst light's overlay does; pixels no light gets
 // wrong show the true boundary of any light, else the mean of the lights' dimmed pictures.
 #include "accuracy/accuracy_meter.h"
