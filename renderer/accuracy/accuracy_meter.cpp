@@ -294,7 +294,6 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     const glm::dvec3 eye = camera.position - m.origin;
     const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
     const double pixelPerDepth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) / double(height);
-    const LightSpace& lightSpace = stats.light;
     MetricsInput input;
     input.classes = &m.visibility.classes;
     input.shadowFactor = &shadowFactor;
@@ -302,11 +301,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     input.k = k;
     input.distance = distance;
     input.cause = [&](std::size_t i, double) { return causes[i]; };
-    input.worldPerTexel = [&](std::size_t i) {
-        return lightSpace.perspective
-                   ? lightSpace.texelSizeAt(glm::dot(m.samples.point[i] - lightSpace.position, lightSpace.direction))
-                   : lightSpace.texelWorldSize;
-    };
+    input.worldPerTexel = [&](std::size_t i) { return boundary.texelWorldSizeAt(m.samples.point[i]); };
     input.worldPerPixel = [&](std::size_t i) { return glm::dot(m.samples.point[i] - eye, forward) * pixelPerDepth; };
     const MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;

@@ -2,6 +2,7 @@
 // synthetic per-light verdicts, and a two-light frame measured light by light equals each light measured alone.
 #include "accuracy/light_accuracy.h"
 #include "accuracy/light_isolation.h"
+#include "accuracy/shadow_boundary.h"
 #include "gl_fixture.h"
 #include "reference_fixture.h"
 
@@ -99,6 +100,49 @@ TEST(PointLightReference, BeyondTheRangeIsNeitherLitNorShadowed) {
     EXPECT_EQ(s.classes[0], PixelClass::Shadowed);
     EXPECT_EQ(s.classes[1], PixelClass::OutsideCone);
     EXPECT_EQ(s.classes[2], PixelClass::OutOfRange) << "beyond the range before outside the cone";
+}
+
+// A row of floor points x = x0, x0 + step, ... (y = 0, normal up), lit below `edge`, shadowed from it on.
+struct FloorRow {
+    SurfaceSamples samples;
+    std::vector<PixelClass> classes;
+};
+FloorRow floorRow(double x0, double step, int n, double edge) {
+    std::vector<glm::dvec3> points, normals;
+    FloorRow row;
+    for (int i = 0; i < n; ++i) {
+        points.emplace_back(x0 + step * i, 0.0, 0.0);
+        normals.emplace_back(0.0, 1.0, 0.0);
+        row.classes.push_back(x0 + step * i < edge ? PixelClass::Lit : PixelClass::Shadowed);
+    }
+    row.samples = floorSamples(points, normals);
+    return row;
+}
+
+TEST(PointLightBoundary, DistancesAreTexelsOfThePixelsCubeFaceAcrossSeamsToo) {
+    LightSpace face;  // what the boundary takes from the light space for a point light: resolution and near plane
+    face.resolution = 512;
+    face.nearPlane = 0.01;
+    BoundaryProbe probe;  // no BVH: visible boundaries only
+    probe.light = referenceLight(pointAt({0.0f, 5.0f, 0.0f}), glm::dvec3(0.0));
+    // Light 5 above the floor: the floor near it is seen by the -Y face, depth 5, so 1 world unit along x is
+    // 512 / 2 / 5 = 51.2 texels. The boundary lies at x = 1.0 (between 0.95 and 1.05); the pixel at x = 2.05 is
+    // 1.05 units = 53.76 texels from it.
+    const FloorRow near = floorRow(0.05, 0.1, 30, 1.0);
+    ShadowBoundary b(near.samples, near.classes, face, probe);
+    EXPECT_NEAR(b.visibleDistance(20), 1.05 * 51.2, 1e-4);  // cached as float
+    EXPECT_NEAR(b.texelWorldSizeAt({2.05, 0.0, 0.0}), 2.0 * 5.0 / 512.0, 1e-12);
+    EXPECT_TRUE(b.onBoundary(9)) << "the lit pixel of the pair";
+
+    // Light 1 above the floor: x = 3 is seen by the +X face (depth 3), the boundary at x = 0.8 by the -Y face. On
+    // the +X face's plane the floor point x lies at -1/x (times 256 texels from its centre): the distance across the
+    // seam is (1/0.8 - 1/3) x 256 = 234.67 texels, up to the midpoint's curvature (the pair 0.75 / 0.85).
+    probe.light = referenceLight(pointAt({0.0f, 1.0f, 0.0f}), glm::dvec3(0.0));
+    const FloorRow far = floorRow(0.05, 0.1, 40, 0.8);
+    ShadowBoundary seam(far.samples, far.classes, face, probe);
+    const double expected = (0.5 * (1.0 / 0.75 + 1.0 / 0.85) - 1.0 / 2.95) * 256.0;
+    EXPECT_NEAR(seam.visibleDistance(29), expected, 1e-4) << "x = 2.95 on the +X face";
+    EXPECT_NEAR(seam.texelWorldSizeAt({2.95, 0.0, 0.0}), 2.0 * 2.95 / 512.0, 1e-12);
 }
 
 // A synthetic per-light report: pixel verdicts as given (lit / shadowed / out of range), S per pixel, marks derived.
