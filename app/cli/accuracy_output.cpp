@@ -67,7 +67,11 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
     if (c.referenceReused) {
         out << "  reference      reused (same scene, light, camera and size)\n";
     } else {
-        out << "  G-buffer       " << c.gbufferMs << " ms (pass + read-back + double-precision surface rebuild)\n";
+        // 0 ms: the surface samples came from the cache (same camera and size; another light was traced).
+        if (c.gbufferMs > 0.0)
+            out << "  G-buffer       " << c.gbufferMs << " ms (pass + read-back + double-precision surface rebuild)\n";
+        else
+            out << "  G-buffer       reused (same camera and size)\n";
         out << "  shadow rays    " << c.traceMs << " ms for " << c.rays << " rays on " << c.threads << " threads = "
             << std::setprecision(2) << c.raysPerSecond / 1e6 << " Mrays/s\n"
             << std::setprecision(1);
