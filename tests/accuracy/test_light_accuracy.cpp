@@ -197,6 +197,37 @@ TEST(WholePicture, APixelIsWrongWhenWrongForAnyLightThatReachesIt) {
     EXPECT_NEAR(many.whole.wrongPercent, 100.0 * 4.0 / 6.0, 1e-9);
 }
 
+TEST(LightIsolation, TheSceneLightsAreIsolatedAndTunedByTheirIndex) {
+    // Two glTF lights with useSceneLights and one settings light: both scene lights take lights[0]'s tuning.
+    Scene scene = boxScene();
+    SceneLight sun;
+    sun.type = SceneLightType::Directional;
+    SceneLight bulb;
+    bulb.type = SceneLightType::Point;
+    bulb.position = glm::vec3(0.0f, 5.0f, 0.0f);
+    bulb.range = 6.0f;
+    scene.lights = {sun, bulb};
+    Settings s;
+    s.useSceneLights = true;
+    std::string error;
+    const std::optional<Settings> one = isolateLight(s, scene, 1, error);
+    ASSERT_TRUE(one) << error;
+    ASSERT_EQ(one->lights.size(), 1u);
+    EXPECT_EQ(one->lights[0].type, LightType::Point);
+    EXPECT_FLOAT_EQ(one->lights[0].range, 6.0f);
+    EXPECT_FALSE(one->useSceneLights);
+    EXPECT_EQ(unmeasurableReason(s, scene, 2), "lights.2: no such light (the scene has 2 lights: 0..1)");
+    // Tuning scene light 1 pads the list so scene light 0 keeps the tuning it had.
+    ShadowMapSettings tuned;
+    tuned.depthBias = 7.0f;
+    setLightShadow(s, 1, tuned);
+    ASSERT_EQ(s.lights.size(), 2u);
+    EXPECT_EQ(s.lights[0].shadow, ShadowMapSettings{});
+    EXPECT_EQ(s.lights[1].shadow, tuned);
+    EXPECT_EQ(isolateLight(s, scene, 1, error)->lights[0].shadow, tuned);
+    EXPECT_EQ(isolateLight(s, scene, 0, error)->lights[0].shadow, ShadowMapSettings{});
+}
+
 class LightAccuracyTest : public GlTest {};
 
 // Directional light with too little bias (acne) and a spot light over the same view.
