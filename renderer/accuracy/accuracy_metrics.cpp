@@ -1,19 +1,13 @@
 #include "accuracy/accuracy_metrics.h"
 
+#include "shading/filters/filter_technique.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
 
-double filterRadiusTexels(const FilterSettings& filter) {
-    switch (filter.kind) {
-        case FilterKind::Point: return 0.0;
-        case FilterKind::Hardware2x2: return 1.0;
-        case FilterKind::Pcf: return double(filter.kernel - 1) / 2.0;
-        case FilterKind::Poisson: return double(filter.poissonRadius) + 1.0;
-    }
-    return 0.0;
-}
+double filterRadiusTexels(const FilterSettings& filter) { return filterTechnique(filter.kind).radiusTexels(filter); }
 
 double percentile(std::vector<double>& values, double p) {
     if (values.empty()) return 0.0;

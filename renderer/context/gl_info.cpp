@@ -20,6 +20,7 @@ GlInfo queryGlInfo() {
     info.version = glString(GL_VERSION);
     info.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info.maxTextureSize);
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &info.maxArrayTextureLayers);
     glGetIntegerv(GL_MAX_SAMPLES, &info.maxSamples);
     info.polygonOffsetClamp = glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr;
     info.clipControl = glClipControl != nullptr;

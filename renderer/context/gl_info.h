@@ -10,6 +10,7 @@ struct GlInfo {
     std::string version;
     std::string glslVersion;
     int maxTextureSize = 0;
+    int maxArrayTextureLayers = 256;  // GL_MAX_ARRAY_TEXTURE_LAYERS (2048 on most desktop GPUs)
     int maxSamples = 0;
     bool polygonOffsetClamp = false;  // GL 4.6 / ARB / EXT_polygon_offset_clamp
     bool clipControl = false;         // GL 4.5 core

@@ -18,29 +18,49 @@ struct PassStats {
     std::optional<double> milliseconds;   // newest finished timing of this pass (GPU: may lag a few frames)
 };
 
+// One shadow view of the frame (a directional or spot light's map, or one cube face of a point light's), rendered or
+// skipped, and why. Lights that cast no shadow are listed once (face -1) with the reason.
+struct ShadowViewStats {
+    std::size_t light = 0;  // index into the frame's lights (the effective ones: useSceneLights resolved)
+    int face = -1;          // a point light's cube face (0..5, GL order +X,-X,+Y,-Y,+Z,-Z); -1 otherwise
+    std::string name;       // "light 0", "light 2 +X"
+    bool hasView = false;   // false: the light casts no shadow (disabled, castsShadows off)
+    LightSpace space;
+    bool ran = false;
+    std::string reason;
+    std::optional<double> milliseconds;
+    int resolution = 0;
+    DepthFormat format = DepthFormat::D32F;
+    int castersDrawn = 0;
+    int castersSkipped = 0;  // outside the view's volume
+    std::size_t triangles = 0;
+};
+
 struct FrameStats {
     bool ok = false;
     std::string error;                  // when !ok: why nothing was drawn (the previous image is unchanged)
     std::vector<std::string> warnings;  // drawn, but something was refused or approximated
 
-    PassStats shadowPass;
+    PassStats shadowPass;  // all shadow views together: ran if any ran, the time of those that ran
     PassStats mainPass;
+    std::vector<ShadowViewStats> views;  // every view of every light (see ShadowViewStats)
+    std::size_t lightCount = 0;          // the frame's lights (the effective ones)
     std::string timingSource;           // "GPU (timer queries)" or "CPU (software rasterizer, ...)"
 
-    bool shadowMapReallocated = false;
-    int shadowMapResolution = 0;
+    bool shadowMapReallocated = false;       // some map array was (re)allocated this frame
+    int shadowMapResolution = 0;             // the first view's map (light 0 in one-light scenes)
     DepthFormat shadowMapFormat = DepthFormat::D32F;
-    std::size_t shadowMapBytes = 0;
-    int castersDrawn = 0;
+    std::size_t shadowMapBytes = 0;          // every map array together
+    int castersDrawn = 0;                    // summed over the views that ran
     int castersSkipped = 0;
     int alphaTestedCasters = 0;
     std::size_t shadowTriangles = 0;
     std::size_t sceneTriangles = 0;
     std::vector<std::string> mainVariants;  // the #define sets compiled into the programs this frame used
 
-    LightSpace light;
-    std::string lightSource;  // which light was used, in words
-    BiasReport bias;  // what the bias amounts to at this scene's receivers
+    LightSpace light;         // the first view's light space (light 0's in one-light scenes)
+    std::string lightSource;  // which lights were used, in words
+    BiasReport bias;  // what the first view's bias amounts to at this scene's receivers
     glm::dvec3 renderOrigin{0.0};
     glm::dmat4 cameraViewProjection{1.0};  // render-origin-relative
 };

@@ -2,9 +2,12 @@
 #include "frame/renderer.h"
 
 #include "gl/gl_errors.h"
+#include "light/volume_overlap.h"
+#include "settings/settings_fields.h"
 
 #include <glm/ext/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -71,19 +74,31 @@ Renderer::Renderer()
       shadowPass_(std::make_unique<ShadowPass>()),
       timer_(info_.softwareRasterizer ? TimingSource::CpuAroundFinish : TimingSource::GpuQueries) {}
 
-std::string Renderer::shadowPassReason(const ShadowInputs& now, bool reallocated) const {
-    if (!lastShadow_) return "first frame";
-    if (reallocated) return "shadow map reallocated";
+const ShadowMap& Renderer::shadowMap() const {
+    static const ShadowMap empty;
+    const auto it = views_.find(firstView_);
+    return it == views_.end() ? empty : it->second.map;
+}
+
+const ShadowMap* Renderer::viewMap(std::size_t light, int face) const {
+    const auto it = views_.find({light, face});
+    return it == views_.end() || !it->second.map.valid() ? nullptr : &it->second.map;
+}
+
+std::string Renderer::viewReason(const std::optional<ViewInputs>& last, const ViewInputs& now) {
+    if (!last) return "first frame";
+    if (now.mapGeneration != last->mapGeneration) return "shadow map reallocated";
     std::vector<std::string> reasons;
-    if (now.sceneFingerprint != lastShadow_->sceneFingerprint) reasons.push_back("scene changed");
-    if (now.lightViewProjection != lastShadow_->lightViewProjection) reasons.push_back("light changed");
-    const ShadowMapSettings& a = now.shadow;
-    const ShadowMapSettings& b = lastShadow_->shadow;
-    if (a.depthBias != b.depthBias || a.slopeScaledDepthBias != b.slopeScaledDepthBias ||
-        a.depthBiasClamp != b.depthBiasClamp)
-        reasons.push_back("bias changed");
-    if (a.cullMode != b.cullMode) reasons.push_back("cull mode changed");
-    if (now.depthClamp != lastShadow_->depthClamp) reasons.push_back("depth clamp changed");
+    if (now.sceneFingerprint != last->sceneFingerprint) reasons.push_back("scene changed");
+    // The light's keys that change its views (the key table's shadow-view tags), by name.
+    std::string keys;
+    for (const std::string& key : diffLight(last->light, now.light).keys) {
+        const SettingsField* field = findSettingsField("lights.0." + key);
+        if (field && (field->invalidates & kInvalidatesShadowView)) keys += (keys.empty() ? "" : ", ") + key;
+    }
+    if (!keys.empty()) reasons.push_back(keys + " changed");
+    if (keys.empty() && now.viewProjection != last->viewProjection) reasons.push_back("light space changed");
+    if (now.empty != last->empty) reasons.push_back(now.empty ? "no caster in its volume any more" : "casters entered its volume");
     return joinLines(reasons);
 }
 
@@ -100,10 +115,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         return stats;
     }
 
-    // Settings with the scene's light applied (light.useSceneLight); normal offset needs no separate copy.
-    Settings settings = requested;
-    settings = withEffectiveLights(requested, scene);
+    // The frame's lights: the settings' or the scene's (useSceneLights).
+    Settings settings = withEffectiveLights(requested, scene);
     stats.lightSource = describeLightSource(requested, scene);
+    stats.lightCount = settings.lights.size();
 
     const std::size_t fingerprint = sceneFingerprint(scene);
     if (!gpuScene_ || &gpuScene_->scene() != &scene || gpuSceneFingerprint_ != fingerprint) {
@@ -114,69 +129,223 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     }
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
-
-    // A resolution the GPU refuses keeps the previous map (and says so); with no map at all there is no frame.
-    const std::string mapError = shadowMap_.ensure(settings.lights[0].shadow.resolution, settings.lights[0].shadow.format,
-                                                   info_.maxTextureSize);
-    if (!mapError.empty()) {
-        if (!shadowMap_.valid()) {
-            stats.error = mapError;
-            return stats;
-        }
-        stats.warnings.push_back(mapError);
-        settings.lights[0].shadow.resolution = shadowMap_.resolution();
-        settings.lights[0].shadow.format = shadowMap_.format();
-    }
-    stats.shadowMapReallocated = shadowMap_.generation() != mapGenerationRendered_;
-
-    std::string lightError;
-    std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, stats.renderOrigin, lightError);
-    if (!light) {
-        stats.error = lightError;
-        return stats;
-    }
-    stats.light = *light;
-    stats.shadowMapResolution = shadowMap_.resolution();
-    stats.shadowMapFormat = shadowMap_.format();
-    stats.shadowMapBytes = shadowMap_.memoryBytes();
-    // The receivers' depths in the map change only with the scene and the light: not recomputed for a bias edit.
-    if (!receivers_ || receivers_->fingerprint != fingerprint ||
-        receivers_->lightViewProjection != light->viewProjection() || receivers_->resolution != light->resolution)
-        receivers_ = Receivers{fingerprint, light->viewProjection(), light->resolution,
-                               receiverDepths(scene, *light, stats.renderOrigin)};
-    stats.bias = biasReport(settings.lights[0].shadow, shadowMap_.format(), *light, receivers_->depths);
-    if (settings.lights[0].shadow.depthBiasClamp != 0.0f && !shadowPass_->hasPolygonOffsetClamp())
-        stats.warnings.push_back("shadow.depthBiasClamp: glPolygonOffsetClamp is not available; the clamp is ignored");
-
-    const ShadowInputs inputs{fingerprint, light->viewProjection(), settings.lights[0].shadow,
-                              settings.lights[0].projection.depthClamp};
-    const std::string reason = shadowPassReason(inputs, stats.shadowMapReallocated);
-    if (!reason.empty()) {
-        timer_.begin(TimedPass::Shadow);
-        const ShadowPassCounts counts =
-            shadowPass_->run(*gpuScene_, *light, settings.lights[0].shadow, settings.lights[0].projection.depthClamp, shadowMap_);
-        timer_.end(TimedPass::Shadow);
-        stats.shadowPass = {true, reason, timer_.latestMilliseconds(TimedPass::Shadow)};
-        stats.castersDrawn = counts.castersDrawn;
-        stats.castersSkipped = counts.castersSkipped;
-        stats.alphaTestedCasters = counts.alphaTestedCasters;
-        stats.shadowTriangles = counts.trianglesDrawn;
-        lastShadow_ = inputs;
-        mapGenerationRendered_ = shadowMap_.generation();
-    } else {
-        stats.shadowPass = {false, "unchanged: light, casters and shadow settings are the same", std::nullopt};
-    }
-
-    shadowMap_.configureSamplers(settings.sampler, settings.filter.kind);
     const glm::dmat4 view = camera.view(stats.renderOrigin);
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
+
+    // Each casting light's views, grouped into map arrays by (2D or cube, resolution, format).
+    struct PlannedView {
+        std::size_t light;
+        int face;
+        LightSpace space;
+        GroupKey group;
+        int layer = 0;
+    };
+    std::vector<PlannedView> planned;
+    std::map<GroupKey, int> layersPerGroup;
+    for (std::size_t i = 0; i < settings.lights.size(); ++i) {
+        LightSettings& light = settings.lights[i];
+        const std::string name = "light " + std::to_string(i);
+        if (!light.enabled || !light.castsShadows) {
+            ShadowViewStats entry;
+            entry.light = i;
+            entry.name = name;
+            entry.reason = !light.enabled ? "skipped: the light is off (enabled false)"
+                                          : "skipped: castsShadows is off (lit everywhere it reaches)";
+            stats.views.push_back(entry);
+            continue;
+        }
+        const bool cube = light.type == LightType::Point;
+        // A size the GPU refuses keeps the light's previous map (and says so); with no map at all there is no frame.
+        const auto previous = views_.find({i, cube ? 0 : -1});
+        const std::string kept = previous != views_.end() && previous->second.map.valid()
+                                     ? "keeping the " + std::to_string(previous->second.map.resolution()) + "² map"
+                                     : "no shadow map yet";
+        if (std::string refusal = shadowResolutionRefusal(light.shadow.resolution, info_.maxTextureSize, kept);
+            !refusal.empty()) {
+            if (previous == views_.end() || !previous->second.map.valid()) {
+                stats.error = refusal;
+                return stats;
+            }
+            stats.warnings.push_back(refusal);
+            light.shadow.resolution = previous->second.map.resolution();
+            light.shadow.format = previous->second.map.format();
+        }
+        const GroupKey group{cube, light.shadow.resolution, light.shadow.format};
+        std::string error;
+        if (cube) {
+            const auto faces = buildCubeFaceSpaces(light, scene.bounds, stats.renderOrigin, error);
+            if (!faces) {
+                stats.error = "lights." + std::to_string(i) + ": " + error;
+                return stats;
+            }
+            for (int f = 0; f < 6; ++f) planned.push_back({i, f, (*faces)[std::size_t(f)], group, 0});
+            layersPerGroup[group] += 6;
+        } else {
+            const auto space = buildLightSpace(light, scene.bounds, stats.renderOrigin, error);
+            if (!space) {
+                stats.error = (i == 0 ? std::string() : "lights." + std::to_string(i) + ": ") + error;
+                return stats;
+            }
+            planned.push_back({i, -1, *space, group, 0});
+            layersPerGroup[group] += 1;
+        }
+    }
+
+    // Allocate the arrays: each group's layers, reallocated when its count changes.
+    for (const auto& [group, layers] : layersPerGroup) {
+        ShadowMapArray& array = arrays_[group];
+        const std::uint64_t before = array.generation();
+        if (std::string error = array.ensure(group.cube, group.resolution, group.format, layers,
+                                             info_.maxTextureSize, info_.maxArrayTextureLayers);
+            !error.empty()) {
+            if (!array.valid()) arrays_.erase(group);
+            stats.error = error;
+            return stats;
+        }
+        stats.shadowMapReallocated = stats.shadowMapReallocated || array.generation() != before;
+    }
+    // Layers in light order within each array; unused arrays are freed.
+    std::map<GroupKey, int> nextLayer;
+    for (PlannedView& p : planned) p.layer = nextLayer[p.group]++;
+    for (auto it = arrays_.begin(); it != arrays_.end();)
+        it = nextLayer.count(it->first) ? std::next(it) : arrays_.erase(it);
+    for (auto it = views_.begin(); it != views_.end();) {
+        const bool used = std::any_of(planned.begin(), planned.end(), [&](const PlannedView& p) {
+            return p.light == it->first.first && p.face == it->first.second;
+        });
+        it = used ? std::next(it) : views_.erase(it);
+    }
+
+    // Run, clear or skip each view.
+    double shadowMilliseconds = 0.0;
+    bool anyMilliseconds = false;
+    std::vector<std::string> ranReasons;
+    bool anySkippedForOtherReason = false;
+    for (std::size_t v = 0; v < planned.size(); ++v) {
+        const PlannedView& p = planned[v];
+        const LightSettings& light = settings.lights[p.light];
+        ViewState& state = views_[{p.light, p.face}];
+        const ShadowMapArray& array = arrays_.at(p.group);
+        if (std::string error = state.map.attach(array, p.layer); !error.empty()) {
+            stats.error = error;
+            return stats;
+        }
+        ShadowViewStats entry;
+        entry.light = p.light;
+        entry.face = p.face;
+        entry.name = "light " + std::to_string(p.light) + (p.face >= 0 ? std::string(" ") + cubeFaces()[std::size_t(p.face)].name : "");
+        entry.hasView = true;
+        entry.space = p.space;
+        entry.resolution = array.resolution();
+        entry.format = array.format();
+
+        int inVolume = 0;
+        for (const GpuDraw& draw : gpuScene_->draws()) inVolume += casterInVolume(draw, p.space);
+        ViewInputs inputs{fingerprint, p.space.viewProjection(), light, state.map.generation(), inVolume == 0};
+        const std::string reason = viewReason(state.rendered, inputs);
+        if (reason.empty()) {
+            entry.reason = "unchanged: light, casters and shadow settings are the same";
+        } else if (!volumesOverlap(p.space.viewProjection(), stats.cameraViewProjection)) {
+            // Its map is not read by any visible pixel: rendered once the camera sees its volume.
+            entry.reason = "skipped: its volume misses the camera's view";
+            anySkippedForOtherReason = true;
+        } else if (inVolume == 0) {
+            clearShadowMap(state.map);  // read as lit everywhere; no draw
+            state.rendered = inputs;
+            entry.reason = "skipped: no caster in its volume (map cleared)";
+            anySkippedForOtherReason = true;
+        } else {
+            const int timed = PassTimer::kFirstViewPass + int(v);
+            timer_.begin(timed);
+            const ShadowPassCounts counts =
+                shadowPass_->run(*gpuScene_, p.space, light.shadow, light.projection.depthClamp, state.map);
+            timer_.end(timed);
+            state.rendered = inputs;
+            entry.ran = true;
+            entry.reason = reason;
+            entry.milliseconds = timer_.latestMilliseconds(timed);
+            entry.castersDrawn = counts.castersDrawn;
+            entry.castersSkipped = counts.castersSkipped;
+            entry.triangles = counts.trianglesDrawn;
+            stats.castersDrawn += counts.castersDrawn;
+            stats.castersSkipped += counts.castersSkipped;
+            stats.alphaTestedCasters += counts.alphaTestedCasters;
+            stats.shadowTriangles += counts.trianglesDrawn;
+            if (entry.milliseconds) {
+                shadowMilliseconds += *entry.milliseconds;
+                anyMilliseconds = true;
+            }
+            const std::string line = planned.size() == 1 ? reason : entry.name + ": " + reason;
+            ranReasons.push_back(line);
+        }
+        stats.views.push_back(entry);
+    }
+    std::stable_sort(stats.views.begin(), stats.views.end(), [](const ShadowViewStats& a, const ShadowViewStats& b) {
+        return a.light != b.light ? a.light < b.light : a.face < b.face;
+    });
+    for (const auto& [group, array] : arrays_) stats.shadowMapBytes += array.memoryBytes();
+    if (!ranReasons.empty()) {
+        stats.shadowPass = {true, joinLines(ranReasons), anyMilliseconds ? std::optional<double>(shadowMilliseconds)
+                                                                         : std::nullopt};
+    } else {
+        stats.shadowPass = {false,
+                            planned.empty() ? "no light casts a shadow"
+                            : anySkippedForOtherReason ? "skipped: no view needed rendering (see the views)"
+                                                       : "unchanged: light, casters and shadow settings are the same",
+                            std::nullopt};
+    }
+
+    // The first view: what one-light reports (bias, the map viewer, the probe) describe.
+    if (!planned.empty()) {
+        const PlannedView& first = planned.front();
+        firstView_ = {first.light, first.face};
+        const ShadowMap& map = views_.at(firstView_).map;
+        stats.light = first.space;
+        stats.shadowMapResolution = map.resolution();
+        stats.shadowMapFormat = map.format();
+        // The receivers' depths in the map change only with the scene and the light: not recomputed for a bias edit.
+        if (!receivers_ || receivers_->fingerprint != fingerprint ||
+            receivers_->lightViewProjection != first.space.viewProjection() ||
+            receivers_->resolution != first.space.resolution)
+            receivers_ = Receivers{fingerprint, first.space.viewProjection(), first.space.resolution,
+                                   receiverDepths(scene, first.space, stats.renderOrigin)};
+        stats.bias = biasReport(settings.lights[first.light].shadow, map.format(), first.space, receivers_->depths);
+        const bool clamps = std::any_of(settings.lights.begin(), settings.lights.end(), [](const LightSettings& l) {
+            return l.castsShadows && l.shadow.depthBiasClamp != 0.0f;
+        });
+        if (clamps && !shadowPass_->hasPolygonOffsetClamp())
+            stats.warnings.push_back("shadow.depthBiasClamp: glPolygonOffsetClamp is not available; the clamp is ignored");
+    } else {
+        firstView_ = {0, -2};
+    }
+
+    // The main pass: every enabled light, each casting one with its map array and layer.
+    sampler_.configure(settings.sampler, settings.filter.kind);
     MainPassInput in;
     in.scene = gpuScene_.get();
-    in.light = &*light;
-    in.shadowMap = &shadowMap_;
     in.settings = &settings;
     in.viewProjection = stats.cameraViewProjection;
     in.cameraPosition = camera.position - stats.renderOrigin;
+    in.renderOrigin = stats.renderOrigin;
+    in.compareSampler = sampler_.id();
+    std::map<GroupKey, int> arrayIndex;
+    for (const auto& [group, array] : arrays_) {
+        std::vector<GLuint>& list = group.cube ? in.mapsCube : in.maps2D;
+        arrayIndex[group] = int(list.size());
+        list.push_back(array.texture());
+    }
+    for (std::size_t i = 0; i < settings.lights.size(); ++i) {
+        if (!settings.lights[i].enabled) continue;
+        MainPassLight l;
+        l.settings = &settings.lights[i];
+        const auto casting = std::find_if(planned.begin(), planned.end(), [&](const PlannedView& p) { return p.light == i; });
+        if (casting != planned.end()) {
+            l.space = &casting->space;
+            l.mapArray = arrayIndex.at(casting->group);
+            l.layer = casting->group.cube ? casting->layer / 6 : casting->layer;
+        }
+        in.lights.push_back(l);
+    }
     timer_.begin(TimedPass::Main);
     const std::set<std::string> variants = mainPass_.run(in, target);
     timer_.end(TimedPass::Main);
@@ -188,7 +357,22 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 }
 
 void Renderer::waitForTimings(FrameStats& stats) {
-    if (stats.shadowPass.ran) stats.shadowPass.milliseconds = timer_.latestMilliseconds(TimedPass::Shadow, true);
+    double total = 0.0;
+    bool any = false;
+    // Views were timed under kFirstViewPass + their planning index; that index follows the order they ran in.
+    int planningIndex = 0;
+    for (ShadowViewStats& view : stats.views) {
+        if (!view.hasView) continue;
+        if (view.ran) {
+            view.milliseconds = timer_.latestMilliseconds(PassTimer::kFirstViewPass + planningIndex, true);
+            if (view.milliseconds) {
+                total += *view.milliseconds;
+                any = true;
+            }
+        }
+        ++planningIndex;
+    }
+    if (stats.shadowPass.ran && any) stats.shadowPass.milliseconds = total;
     if (stats.mainPass.ran) stats.mainPass.milliseconds = timer_.latestMilliseconds(TimedPass::Main, true);
 }
 

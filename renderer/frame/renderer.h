@@ -1,6 +1,8 @@
 #pragma once
-// The only entry point for a frame. Decides which passes must run (a shadow map whose light, casters and shadow
-// settings did not change is not re-rendered), which shader variants they need, runs them, and reports FrameStats.
+// The only entry point for a frame. Plans the shadow views (a directional or spot light has one, a point light six
+// cube faces): a view is rendered only when its light, casters or shadow settings changed, and skipped when it cannot
+// change the picture (no caster in its volume, a volume the camera does not see, a light that casts no shadow).
+// Then the main pass, specialised to the frame's light set and filter. FrameStats lists every view and why.
 #include "context/gl_info.h"
 #include "frame/camera.h"
 #include "frame/frame_stats.h"
@@ -11,8 +13,10 @@
 #include "shadow/shadow_pass.h"
 #include "timing/pass_timer.h"
 
+#include <map>
 #include <memory>
 #include <optional>
+#include <utility>
 
 namespace shadowlab {
 
@@ -28,43 +32,62 @@ public:
     // Call after editing a Scene in place (geometry or materials), so the next frame re-uploads it.
     void sceneChanged() { gpuScene_.reset(); }
 
-    // Forces the next frame's shadow pass (benchmarks time it every frame).
-    void invalidateShadowMap() { lastShadow_.reset(); }
+    // Forces the next frame to render every shadow view (benchmarks time them every frame).
+    void invalidateShadowMap() {
+        for (auto& [key, state] : views_) state.rendered.reset();
+    }
 
     // Waits for the newest GPU timings (benchmarks, one-shot renders); fills the stats' milliseconds.
     void waitForTimings(FrameStats& stats);
 
-    const ShadowMap& shadowMap() const { return shadowMap_; }
+    // The first shadow view's map (light 0's in a one-light scene); an empty map before the first frame.
+    const ShadowMap& shadowMap() const;
+    // The map of view `view` of FrameStats::views of the last frame (nullptr for lights without a view).
+    const ShadowMap* viewMap(std::size_t light, int face) const;
     // The scene as last uploaded (null before the first frame): the pixel probe's G-buffer draws the same draws.
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
     const GlInfo& glInfo() const { return info_; }
 
 private:
-    // What the last shadow pass drew from; the next one runs only if one of these changed.
-    struct ShadowInputs {
+    // What a view's map was last rendered from; the next render runs only if one of these changed.
+    struct ViewInputs {
         std::size_t sceneFingerprint = 0;  // includes the scene's address
-        glm::dmat4 lightViewProjection{0.0};
-        ShadowMapSettings shadow;
-        bool depthClamp = true;
+        glm::dmat4 viewProjection{0.0};
+        LightSettings light;               // compared through the key table's shadow-view tags
+        std::uint64_t mapGeneration = 0;
+        bool empty = false;                // no caster in its volume: the map was cleared
+        bool operator==(const ViewInputs&) const = default;
     };
-    std::string shadowPassReason(const ShadowInputs& now, bool reallocated) const;
+    struct ViewState {
+        ShadowMap map;
+        std::optional<ViewInputs> rendered;
+    };
+    using ViewKey = std::pair<std::size_t, int>;  // light, face
+    struct GroupKey {
+        bool cube = false;
+        int resolution = 0;
+        DepthFormat format = DepthFormat::D32F;
+        auto operator<=>(const GroupKey&) const = default;
+    };
+    static std::string viewReason(const std::optional<ViewInputs>& last, const ViewInputs& now);
 
     GlInfo info_;
-    ShadowMap shadowMap_;
+    std::map<GroupKey, ShadowMapArray> arrays_;
+    std::map<ViewKey, ViewState> views_;
+    ShadowSampler sampler_;
     std::unique_ptr<ShadowPass> shadowPass_;
     MainPass mainPass_;
     PassTimer timer_;
     std::unique_ptr<GpuScene> gpuScene_;
     std::size_t gpuSceneFingerprint_ = 0;
-    std::optional<ShadowInputs> lastShadow_;
-    std::uint64_t mapGenerationRendered_ = 0;  // the shadow map allocation the last shadow pass drew into
+    ViewKey firstView_{0, -2};  // the first view of the last frame (shadowMap())
     struct Receivers {
         std::size_t fingerprint = 0;
         glm::dmat4 lightViewProjection{0.0};
         int resolution = 0;
         ReceiverDepths depths;
     };
-    std::optional<Receivers> receivers_;  // the scene's depths in the map, for the bias report
+    std::optional<Receivers> receivers_;  // the scene's depths in the first view's map, for the bias report
 };
 
 // Changes whenever geometry, instances or alpha-relevant material values of the scene change.

@@ -71,8 +71,20 @@ bool allFinite(const glm::mat4& m) {
 
 std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
                                           std::string& error) {
-    const LightSettings& light = settings.lights[0];
-    const ProjectionSettings& proj = settings.lights[0].projection;
+    if (settings.lights.empty()) {
+        error = "lights: the settings have no light";
+        return std::nullopt;
+    }
+    return buildLightSpace(settings.lights[0], bounds, origin, error);
+}
+
+std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Bounds& bounds, const glm::dvec3& origin,
+                                          std::string& error) {
+    if (light.type == LightType::Point) {
+        error = "light: a point light has six views (buildCubeFaceSpaces)";
+        return std::nullopt;
+    }
+    const ProjectionSettings& proj = light.projection;
     const glm::dvec3 dir(light.direction);
     const double dirLength = glm::length(dir);
     if (!std::isfinite(dirLength) || dirLength < 1e-12) {
@@ -81,7 +93,7 @@ std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds
     }
     LightSpace ls;
     ls.direction = dir / dirLength;
-    ls.resolution = std::max(settings.lights[0].shadow.resolution, 1);
+    ls.resolution = std::max(light.shadow.resolution, 1);
     const glm::dmat3 basis = lightBasis(ls.direction);
 
     // The scene's bounding sphere, relative to the render origin (empty scenes get a unit sphere).
@@ -115,6 +127,7 @@ std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds
         const double distance = glm::length(center - ls.position);
         if (proj.autoFit) {
             ls.farPlane = distance + radius + fitMargin(radius);
+            if (light.range > 0.0f) ls.farPlane = std::min(ls.farPlane, double(light.range));  // nothing lit beyond
             ls.nearPlane = std::max({distance - radius - fitMargin(radius), ls.farPlane * 1e-3, 1e-4});
         } else {
             ls.nearPlane = proj.nearPlane;
@@ -134,6 +147,66 @@ std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds
         return std::nullopt;
     }
     return ls;
+}
+
+const std::array<CubeFace, 6>& cubeFaces() {
+    // GL's cube-map face order and orientation (OpenGL 4.5, table 8.19): rendering each face with this look
+    // direction and up vector, through a 90-degree perspective, puts a direction's texel where samplerCube reads it.
+    static const std::array<CubeFace, 6> faces = {{
+        {"+X", {1.0, 0.0, 0.0}, {0.0, -1.0, 0.0}},
+        {"-X", {-1.0, 0.0, 0.0}, {0.0, -1.0, 0.0}},
+        {"+Y", {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}},
+        {"-Y", {0.0, -1.0, 0.0}, {0.0, 0.0, -1.0}},
+        {"+Z", {0.0, 0.0, 1.0}, {0.0, -1.0, 0.0}},
+        {"-Z", {0.0, 0.0, -1.0}, {0.0, -1.0, 0.0}},
+    }};
+    return faces;
+}
+
+std::optional<std::array<LightSpace, 6>> buildCubeFaceSpaces(const LightSettings& light, const Bounds& bounds,
+                                                             const glm::dvec3& origin, std::string& error) {
+    const glm::dvec3 position = glm::dvec3(light.position) - origin;
+    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) - origin : glm::dvec3(bounds.center()) - origin;
+    const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
+    const double distance = glm::length(center - position);
+    double nearPlane = light.projection.nearPlane, farPlane = light.projection.farPlane;
+    if (light.projection.autoFit) {
+        // Far: the farthest point of the scene's sphere (or the range, if nearer); near: a thousandth of that, so
+        // casters close to the light still cast and D24/D32F keep their precision where the receivers are.
+        farPlane = distance + radius + fitMargin(radius);
+        if (light.range > 0.0f) farPlane = std::min(farPlane, double(light.range));
+        nearPlane = std::max(farPlane * 1e-3, 1e-4);
+    }
+    if (!(nearPlane < farPlane)) {
+        error = "projection: near (" + std::to_string(nearPlane) + ") must be less than far (" +
+                std::to_string(farPlane) + ")";
+        return std::nullopt;
+    }
+    std::array<LightSpace, 6> spaces;
+    for (int face = 0; face < 6; ++face) {
+        const CubeFace& f = cubeFaces()[std::size_t(face)];
+        LightSpace& ls = spaces[std::size_t(face)];
+        ls.perspective = true;
+        ls.cubeFace = face;
+        ls.position = position;
+        ls.direction = f.look;
+        ls.resolution = std::max(light.shadow.resolution, 1);
+        ls.tanHalfFov = 1.0;  // 90 degrees
+        ls.nearPlane = nearPlane;
+        ls.farPlane = farPlane;
+        ls.texelWorldSize = 2.0 * std::max(std::min(distance, farPlane), nearPlane) / ls.resolution;
+        // Columns right, up, back of the face's camera (lookAt with GL's up vector for the face).
+        const glm::dvec3 back = -f.look;
+        const glm::dvec3 right = glm::normalize(glm::cross(f.up, back));
+        const glm::dvec3 up = glm::cross(back, right);
+        ls.view = viewFromBasis(glm::dmat3(right, up, back), position);
+        ls.projection = glm::perspective(glm::radians(90.0), 1.0, nearPlane, farPlane);
+        if (!allFinite(ls.view) || !allFinite(ls.projection)) {
+            error = "light: the point light's matrices are not finite (check position, near and far)";
+            return std::nullopt;
+        }
+    }
+    return spaces;
 }
 
 }  // namespace shadowlab

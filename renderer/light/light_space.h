@@ -9,6 +9,7 @@
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -19,6 +20,7 @@ struct LightSpace {
     glm::dmat4 projection{1.0};  // light view -> clip
     glm::dmat4 viewProjection() const { return projection * view; }
     bool perspective = false;
+    int cubeFace = -1;                     // a point light's face (GL order +X,-X,+Y,-Y,+Z,-Z); -1 otherwise
     glm::dvec3 direction{0.0, -1.0, 0.0};  // unit, the direction light travels (spot: the cone axis)
     glm::dvec3 position{0.0};              // spot: world position; directional: the eye of the ortho volume
     double nearPlane = 0.0;
@@ -36,10 +38,27 @@ struct LightSpace {
 // Columns: right, up, back (= -direction). `direction` must be finite and non-zero.
 glm::dmat3 lightBasis(const glm::dvec3& direction);
 
-// Builds the light space for the settings and scene bounds; nullopt with `error` set if it cannot be finite.
-// `origin` is subtracted from every world position before the matrices apply (camera-relative rendering).
+// Builds the light space of a directional or spot light for the scene bounds; nullopt with `error` set if it
+// cannot be finite (or the light is a point light: see buildCubeFaceSpaces). `origin` is subtracted from every world
+// position before the matrices apply (camera-relative rendering).
+std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Bounds& bounds, const glm::dvec3& origin,
+                                          std::string& error);
+// The same for the settings' first light.
 std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
                                           std::string& error);
+
+struct CubeFace {
+    const char* name;  // "+X"
+    glm::dvec3 look;   // the face's axis: the direction its view looks along
+    glm::dvec3 up;     // GL's up vector for the face
+};
+const std::array<CubeFace, 6>& cubeFaces();
+
+// A point light's six views: 90-degree perspective faces in GL's cube-map order, each storing its own perspective
+// depth (so polygon offset means what it means for a spot light), all sharing near/far (autoFit: near = far / 1000,
+// far = the farthest point of the scene's bounding sphere, or the light's range if nearer).
+std::optional<std::array<LightSpace, 6>> buildCubeFaceSpaces(const LightSettings& light, const Bounds& bounds,
+                                                             const glm::dvec3& origin, std::string& error);
 
 bool allFinite(const glm::dmat4& m);
 bool allFinite(const glm::mat4& m);

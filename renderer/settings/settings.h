@@ -89,7 +89,7 @@ struct CameraSettings {
 };
 
 struct Settings {
-    std::vector<LightSettings> lights{LightSettings{}};
+    std::vector<LightSettings> lights = std::vector<LightSettings>(1);  // one default light
     float ambient = 0.15f;        // ambient term, unaffected by shadows
     bool useSceneLights = false;  // the scene's KHR_lights_punctual lights replace `lights` (see light_space.h)
     SamplerSettings sampler;

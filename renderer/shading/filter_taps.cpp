@@ -1,5 +1,7 @@
 #include "shading/filter_taps.h"
 
+#include "shading/filters/filter_technique.h"
+
 #include <cstdio>
 
 namespace shadowlab {
@@ -16,51 +18,28 @@ const std::array<glm::vec2, kPoissonTaps>& poissonDisk() {
     return disk;
 }
 
-bool filterIsBilinear(FilterKind kind) { return kind == FilterKind::Hardware2x2 || kind == FilterKind::Poisson; }
+bool filterIsBilinear(FilterKind kind) { return filterTechnique(kind).bilinear; }
 
 std::vector<FilterTap> filterTaps(const FilterSettings& filter) {
+    const FilterTechnique& technique = filterTechnique(filter.kind);
+    const float scale = technique.scale(filter);
     std::vector<FilterTap> taps;
-    switch (filter.kind) {
-        case FilterKind::Point: taps.push_back({{0.0, 0.0}, false}); break;
-        case FilterKind::Hardware2x2: taps.push_back({{0.0, 0.0}, true}); break;
-        case FilterKind::Pcf: {
-            const int r = filter.kernel / 2;
-            for (int y = -r; y <= r; ++y)
-                for (int x = -r; x <= r; ++x) taps.push_back({{double(x), double(y)}, false});
-            break;
-        }
-        case FilterKind::Poisson:
-            for (const glm::vec2& p : poissonDisk()) taps.push_back({glm::dvec2(p * filter.poissonRadius), true});
-            break;
-    }
+    // In float, as the shader computes TAP_OFFSETS[i] * uFilterScale.
+    for (const glm::vec2& unit : technique.unitTaps(filter))
+        taps.push_back({glm::dvec2(unit * scale), technique.bilinear});
     return taps;
 }
 
-std::vector<std::string> filterDefines(FilterKind kind, int kernel) {
-    std::vector<std::string> d;
-    switch (kind) {
-        case FilterKind::Point: d.push_back("FILTER_POINT"); break;
-        case FilterKind::Hardware2x2: d.push_back("FILTER_HARDWARE_2X2"); break;
-        case FilterKind::Pcf:
-            d.push_back("FILTER_PCF");
-            d.push_back("PCF_KERNEL " + std::to_string(kernel));
-            break;
-        case FilterKind::Poisson: {
-            d.push_back("FILTER_POISSON");
-            d.push_back("POISSON_TAPS " + std::to_string(kPoissonTaps));
-            std::string values;
-            char buf[64];
-            for (const glm::vec2& p : poissonDisk()) {
-                // %.9g round-trips a float: the GPU gets exactly the probe's numbers.
-                std::snprintf(buf, sizeof buf, "%svec2(%.9g, %.9g)", values.empty() ? "" : ", ", double(p.x),
-                              double(p.y));
-                values += buf;
-            }
-            d.push_back("POISSON_DISK " + values);
-            break;
-        }
+std::vector<std::string> filterDefines(const FilterSettings& filter) {
+    const std::vector<glm::vec2> taps = filterTechnique(filter.kind).unitTaps(filter);
+    std::string values;
+    char buf[64];
+    for (const glm::vec2& p : taps) {
+        // %.9g round-trips a float: the GPU gets exactly the probe's numbers.
+        std::snprintf(buf, sizeof buf, "%svec2(%.9g, %.9g)", values.empty() ? "" : ", ", double(p.x), double(p.y));
+        values += buf;
     }
-    return d;
+    return {"FILTER_TAPS " + std::to_string(taps.size()), "FILTER_TAP_OFFSETS " + values};
 }
 
 }  // namespace shadowlab

@@ -1,6 +1,6 @@
 #pragma once
-// The taps the main pass's shadow filter reads around the lookup, in texels: the one source for main.frag.glsl
-// (the Poisson disk and the PCF kernel reach it as #defines) and for the pixel probe, which recomputes S on the CPU.
+// The taps the main pass's shadow filter reads around the lookup, in texels, from the filter technique
+// (shading/filters/): the one source for main.frag.glsl (as #defines) and for the pixel probe, which recomputes S.
 #include "settings/settings.h"
 
 #include <glm/ext/vector_double2.hpp>
@@ -28,7 +28,8 @@ std::vector<FilterTap> filterTaps(const FilterSettings& filter);
 // Whether the filter's comparisons use the sampler's bilinear filter (the shadow map's sampler is set from this).
 bool filterIsBilinear(FilterKind kind);
 
-// The #defines main.frag.glsl takes its filter from (FILTER_*, PCF_KERNEL, POISSON_TAPS, POISSON_DISK).
-std::vector<std::string> filterDefines(FilterKind kind, int kernel);
+// The #defines main.frag.glsl takes its filter from: FILTER_TAPS and FILTER_TAP_OFFSETS (unscaled; the shader
+// multiplies by uFilterScale, the technique's scale).
+std::vector<std::string> filterDefines(const FilterSettings& filter);
 
 }  // namespace shadowlab

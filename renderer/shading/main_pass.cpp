@@ -1,45 +1,65 @@
 #include "shading/main_pass.h"
 
 #include "frame/face_culling.h"
+#include "shading/filters/filter_technique.h"
 
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
 
 namespace {
 
-constexpr GLuint kShadowMapUnit = 0;
-constexpr GLuint kBaseColorUnit = 1;
+constexpr GLuint kLightsBinding = 0;
 
-// Uniforms that are the same for every draw of a frame: set once per program per frame.
-void setFrameUniforms(const MainUniforms& u, const MainPassInput& in, const MainVariantKey& key) {
-    const Settings& settings = *in.settings;
-    const LightSpace& light = *in.light;
-    const float texel = 1.0f / float(in.shadowMap->resolution());
-    glUniformMatrix4fv(u.viewProjection, 1, GL_FALSE, glm::value_ptr(glm::mat4(in.viewProjection)));
-    glUniformMatrix4fv(u.lightViewProjection, 1, GL_FALSE, glm::value_ptr(glm::mat4(light.viewProjection())));
-    glUniform1i(u.shadowMap, GLint(kShadowMapUnit));
-    glUniform3fv(u.lightDirection, 1, glm::value_ptr(glm::vec3(light.direction)));
-    glUniform3fv(u.lightPosition, 1, glm::value_ptr(glm::vec3(light.position)));
-    glUniform3fv(u.cameraPosition, 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
-    glUniform2f(u.shadowTexel, texel, texel);
-    glUniform1f(u.lightIntensity, settings.lights[0].intensity);
-    glUniform1f(u.ambient, settings.ambient);
-    glUniform2f(u.lightDepthRange, float(light.nearPlane), float(light.farPlane));
-    if (key.normalOffset) {
-        glUniform1f(u.normalOffsetTexels, settings.lights[0].shadow.normalOffset);
-        // Spot: the texel's world size grows with distance, so the shader multiplies by its depth.
-        const double texelWorld = light.perspective ? 2.0 * light.tanHalfFov / light.resolution : light.texelWorldSize;
-        glUniform1f(u.texelWorldSize, float(texelWorld));
+// std140 layout of main.frag.glsl's LightData.
+struct LightBlock {
+    glm::mat4 viewProjection{1.0f};
+    glm::vec4 position{0.0f};
+    glm::vec4 direction{0.0f};
+    glm::vec4 radiance{0.0f};
+    glm::vec4 shadow{0.0f};
+    glm::vec4 depth{0.0f};
+};
+static_assert(sizeof(LightBlock) == 144, "std140 LightData is 144 bytes");
+
+// The order the shader walks lights in: directional, spot, point; casters first within each kind.
+int bucket(const MainPassLight& l) {
+    const int kind = l.settings->type == LightType::Directional ? 0 : l.settings->type == LightType::Spot ? 1 : 2;
+    return kind * 2 + (l.space ? 0 : 1);
+}
+
+LightBlock blockOf(const MainPassLight& l, const glm::dvec3& origin) {
+    const LightSettings& s = *l.settings;
+    LightBlock b;
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(s.direction));
+    b.position = glm::vec4(glm::vec3(glm::dvec3(s.position) - origin), s.range);
+    b.direction = glm::vec4(glm::vec3(direction), 0.0f);
+    b.radiance = glm::vec4(s.color, s.intensity);
+    if (s.type == LightType::Spot)
+        b.direction.w = float(std::cos(glm::radians(0.5 * double(std::clamp(s.spotConeDeg, 1.0f, 170.0f)))));
+    if (l.space) {
+        const LightSpace& space = *l.space;
+        b.viewProjection = glm::mat4(space.viewProjection());
+        b.position = glm::vec4(glm::vec3(space.position), s.range);
+        if (s.type != LightType::Point) b.direction = glm::vec4(glm::vec3(space.direction), b.direction.w);
+        // The cone the view was built with, as the one-light shader computed it.
+        if (s.type == LightType::Spot) b.direction.w = float(std::cos(std::atan(space.tanHalfFov)));
+        b.shadow = glm::vec4(float(l.mapArray), float(l.layer), 1.0f / float(space.resolution), s.shadow.normalOffset);
+        // Directional: a texel's world size; spot and point: per unit of depth (the shader multiplies).
+        const double texelWorld =
+            space.perspective ? 2.0 * space.tanHalfFov / space.resolution : space.texelWorldSize;
+        b.depth = glm::vec4(float(space.nearPlane), float(space.farPlane), float(texelWorld), 0.0f);
     }
-    if (key.perspectiveLight) glUniform1f(u.spotCosHalfAngle, float(std::cos(std::atan(light.tanHalfFov))));
-    if (key.filter == FilterKind::Poisson) glUniform1f(u.poissonRadiusTexels, settings.filter.poissonRadius);
-    if (key.alphaTexture) glUniform1i(u.baseColorTexture, GLint(kBaseColorUnit));
+    return b;
 }
 
 }  // namespace
+
+MainPass::MainPass() : lightBuffer_(gl::createBuffer()) {}
 
 std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& target) {
     const Settings& settings = *in.settings;
@@ -54,16 +74,50 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // PCF and bilinear taps at a cube edge read the neighbouring face
 
-    glBindTextureUnit(kShadowMapUnit, in.shadowMap->texture());
-    glBindSampler(kShadowMapUnit, in.shadowMap->compareSampler());
-
+    // The light set, in the shader's order, and its uniform block.
+    std::vector<MainPassLight> lights = in.lights;
+    std::stable_sort(lights.begin(), lights.end(),
+                     [](const MainPassLight& a, const MainPassLight& b) { return bucket(a) < bucket(b); });
     MainVariantKey base;
     base.filter = settings.filter.kind;
-    base.kernel = settings.filter.kernel;
+    base.kernel = settings.filter.kind == FilterKind::Pcf ? settings.filter.kernel : 0;
     base.view = settings.view;
-    base.perspectiveLight = in.light->perspective;
-    base.normalOffset = settings.lights[0].shadow.normalOffset > 0.0f;
+    std::vector<LightBlock> blocks;
+    for (const MainPassLight& l : lights) {
+        const bool casts = l.space != nullptr;
+        switch (l.settings->type) {
+            case LightType::Directional: ++base.lights.directional; base.lights.directionalCasters += casts; break;
+            case LightType::Spot: ++base.lights.spot; base.lights.spotCasters += casts; break;
+            case LightType::Point: ++base.lights.point; base.lights.pointCasters += casts; break;
+        }
+        base.normalOffset = base.normalOffset || (casts && l.settings->shadow.normalOffset > 0.0f);
+        blocks.push_back(blockOf(l, in.renderOrigin));
+    }
+    base.lights.mapArrays2D = int(in.maps2D.size());
+    base.lights.mapArraysCube = int(in.mapsCube.size());
+    if (!blocks.empty()) {
+        glNamedBufferData(lightBuffer_.id(), GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(),
+                          GL_STREAM_DRAW);
+        glBindBufferBase(GL_UNIFORM_BUFFER, kLightsBinding, lightBuffer_.id());
+    }
+
+    // Texture units: the 2D arrays, then the cube arrays, then the base colour texture.
+    std::vector<GLint> units2D, unitsCube;
+    GLuint unit = 0;
+    for (GLuint texture : in.maps2D) {
+        glBindTextureUnit(unit, texture);
+        glBindSampler(unit, in.compareSampler);
+        units2D.push_back(GLint(unit++));
+    }
+    for (GLuint texture : in.mapsCube) {
+        glBindTextureUnit(unit, texture);
+        glBindSampler(unit, in.compareSampler);
+        unitsCube.push_back(GLint(unit++));
+    }
+    const GLuint baseColorUnit = unit;
+    const float filterScale = filterTechnique(settings.filter.kind).scale(settings.filter);
 
     in.scene->bind();
     for (const GpuDraw& draw : in.scene->draws()) {
@@ -75,7 +129,16 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         const MainProgram& variant = variants_.program(key);
         const MainUniforms& u = variant.uniforms;
         glUseProgram(variant.program.id());
-        if (prepared.insert(&variant).second) setFrameUniforms(u, in, key);
+        if (prepared.insert(&variant).second) {
+            // Uniforms that are the same for every draw of a frame: set once per program per frame.
+            glUniformMatrix4fv(u.viewProjection, 1, GL_FALSE, glm::value_ptr(glm::mat4(in.viewProjection)));
+            glUniform3fv(u.cameraPosition, 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
+            glUniform1f(u.ambient, settings.ambient);
+            glUniform1f(u.filterScale, filterScale);
+            if (!units2D.empty()) glUniform1iv(u.maps2D, GLsizei(units2D.size()), units2D.data());
+            if (!unitsCube.empty()) glUniform1iv(u.mapsCube, GLsizei(unitsCube.size()), unitsCube.data());
+            if (key.alphaTexture) glUniform1i(u.baseColorTexture, GLint(baseColorUnit));
+        }
 
         glUniformMatrix4fv(u.model, 1, GL_FALSE, glm::value_ptr(draw.model));
         glUniformMatrix3fv(u.normalMatrix, 1, GL_FALSE, glm::value_ptr(draw.normalMatrix));
@@ -86,7 +149,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         if (key.alphaMask) {
             glUniform1f(u.alphaFactor, material->baseColorFactor.a);
             glUniform1f(u.alphaCutoff, material->alphaCutoff);
-            if (alphaTexture) glBindTextureUnit(kBaseColorUnit, alphaTexture);
+            if (alphaTexture) glBindTextureUnit(baseColorUnit, alphaTexture);
         }
         // Single-sided back faces are not drawn; double-sided ones are, and shading flips their normal.
         applyViewFaceCulling(material, draw.mirrored);
@@ -94,7 +157,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
                                  reinterpret_cast<const void*>(draw.firstIndexByte), draw.baseVertex);
     }
     resetFaceCulling();
-    glBindSampler(kShadowMapUnit, 0);
+    for (GLuint u = 0; u < unit; ++u) glBindSampler(u, 0);
     std::set<std::string> used;
     for (const MainProgram* program : prepared) used.insert(program->name);
     return used;

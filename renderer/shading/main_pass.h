@@ -1,6 +1,6 @@
 #pragma once
-// The camera pass: each pixel is projected into light space and compared with the shadow map; shading is
-// Lambert + Blinn-Phong with ambient, or one of the debug views (shadow factor, light-space depth).
+// The camera pass: each pixel is projected into each light's shadow view and compared with its map; shading is
+// Lambert + Blinn-Phong per light with ambient, or one of the debug views (shadow factor, light-space depth).
 #include "frame/gpu_scene.h"
 #include "frame/render_target.h"
 #include "light/light_space.h"
@@ -11,26 +11,40 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
+// One light as the main pass sees it.
+struct MainPassLight {
+    const LightSettings* settings = nullptr;
+    const LightSpace* space = nullptr;  // casting lights: the view it is compared in (a point light: any face)
+    int mapArray = -1;                  // casting lights: index into MainPassInput::maps2D or ::mapsCube
+    int layer = 0;                      // its layer in that array (a point light: its cube index)
+};
+
 struct MainPassInput {
     const GpuScene* scene = nullptr;
-    const LightSpace* light = nullptr;
-    const ShadowMap* shadowMap = nullptr;
-    const Settings* settings = nullptr;
+    const Settings* settings = nullptr;    // global settings (ambient, filter, view); lights come from `lights`
+    std::vector<MainPassLight> lights;     // enabled lights; casting ones have a space and a map
+    std::vector<GLuint> maps2D;            // sampler2DArrayShadow textures, in array-index order
+    std::vector<GLuint> mapsCube;          // samplerCubeArrayShadow textures
+    GLuint compareSampler = 0;
     glm::dmat4 viewProjection{1.0};  // render-origin-relative
     glm::dvec3 cameraPosition{0.0};  // render-origin-relative
+    glm::dvec3 renderOrigin{0.0};    // subtracted from light positions
 };
 
 class MainPass {
 public:
+    MainPass();
     // Draws into `target`; returns the names of the shader variants used.
     std::set<std::string> run(const MainPassInput& input, RenderTarget& target);
     std::size_t variantsBuilt() const { return variants_.size(); }
 
 private:
     MainVariantCache variants_;
+    gl::Buffer lightBuffer_;  // the Lights uniform block
 };
 
 }  // namespace shadowlab

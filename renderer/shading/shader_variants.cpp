@@ -2,17 +2,39 @@
 
 #include "gl/program.h"
 #include "shading/filter_taps.h"
+#include "shading/filters/filter_technique.h"
+
+#include <cctype>
 
 namespace shadowlab {
 
+namespace {
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+}  // namespace
+
 std::vector<std::string> MainVariantKey::defines() const {
-    std::vector<std::string> d = filterDefines(filter, kernel);
+    FilterSettings filterSettings;
+    filterSettings.kind = filter;
+    filterSettings.kernel = kernel;
+    std::vector<std::string> d = filterDefines(filterSettings);
     switch (view) {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;
         case ViewMode::LightDepth: d.push_back("VIEW_LIGHT_DEPTH"); break;
     }
-    if (perspectiveLight) d.push_back("LIGHT_PERSPECTIVE");
+    d.push_back("DIR_LIGHTS " + std::to_string(lights.directional));
+    d.push_back("DIR_CASTERS " + std::to_string(lights.directionalCasters));
+    d.push_back("SPOT_LIGHTS " + std::to_string(lights.spot));
+    d.push_back("SPOT_CASTERS " + std::to_string(lights.spotCasters));
+    d.push_back("POINT_LIGHTS " + std::to_string(lights.point));
+    d.push_back("POINT_CASTERS " + std::to_string(lights.pointCasters));
+    d.push_back("MAP_ARRAYS_2D " + std::to_string(lights.mapArrays2D));
+    d.push_back("MAP_ARRAYS_CUBE " + std::to_string(lights.mapArraysCube));
     if (normalOffset) d.push_back("NORMAL_OFFSET");
     if (alphaMask) d.push_back("ALPHA_MASK");
     if (alphaMask && alphaTexture) d.push_back("BASE_COLOR_TEXTURE");
@@ -21,7 +43,13 @@ std::vector<std::string> MainVariantKey::defines() const {
 
 std::string MainVariantKey::name() const {
     std::string joined;
-    for (const std::string& d : defines()) joined += (joined.empty() ? "" : " ") + d;
+    for (std::string d : defines()) {
+        if (d.starts_with("FILTER_TAP_OFFSETS")) continue;  // the numbers follow from the filter, said by FILTER_TAPS
+        if (d.starts_with("FILTER_TAPS")) d = "FILTER_" + upper(filterTechnique(filter).name) +
+                                              (filter == FilterKind::Pcf ? " PCF_KERNEL " + std::to_string(kernel) : "") +
+                                              " " + d;
+        joined += (joined.empty() ? "" : " ") + d;
+    }
     return joined;
 }
 
@@ -29,11 +57,9 @@ namespace {
 
 MainUniforms locateUniforms(GLuint p) {
     const auto at = [p](const char* name) { return glGetUniformLocation(p, name); };
-    return {at("uViewProjection"),     at("uModel"),          at("uNormalMatrix"),      at("uUvTransform"),
-            at("uLightViewProjection"), at("uShadowMap"),      at("uLightDirection"),    at("uLightPosition"),
-            at("uCameraPosition"),     at("uShadowTexel"),    at("uBaseColor"),         at("uLightIntensity"),
-            at("uAmbient"),            at("uLightDepthRange"), at("uNormalOffsetTexels"), at("uTexelWorldSize"),
-            at("uSpotCosHalfAngle"),   at("uPoissonRadiusTexels"), at("uAlphaFactor"),   at("uAlphaCutoff"),
+    return {at("uViewProjection"), at("uModel"),          at("uNormalMatrix"), at("uUvTransform"),
+            at("uMaps2D[0]"),      at("uMapsCube[0]"),    at("uCameraPosition"), at("uBaseColor"),
+            at("uAmbient"),        at("uFilterScale"),    at("uAlphaFactor"),  at("uAlphaCutoff"),
             at("uBaseColorTexture")};
 }
 

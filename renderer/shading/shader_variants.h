@@ -1,6 +1,7 @@
 #pragma once
 // Main-pass shader variants: the #defines a frame needs, and a cache of the programs built from them. Only the
-// features the scene and settings use are compiled in (no runtime branches on filter kind, kernel, view).
+// features the scene and settings use are compiled in: the light set (how many directional, spot and point lights,
+// how many of each cast), the map arrays, the filter technique's taps, the view (no runtime branches on them).
 #include "gl/gl_objects.h"
 #include "settings/settings.h"
 
@@ -10,26 +11,35 @@
 
 namespace shadowlab {
 
+// The lights a variant is built for, counted per kind; casters come first within each kind.
+struct LightSetKey {
+    int directional = 0, directionalCasters = 0;
+    int spot = 0, spotCasters = 0;
+    int point = 0, pointCasters = 0;
+    int mapArrays2D = 0;    // sampler2DArrayShadow groups (directional and spot views)
+    int mapArraysCube = 0;  // samplerCubeArrayShadow groups (point lights)
+    int lights() const { return directional + spot + point; }
+    auto operator<=>(const LightSetKey&) const = default;
+};
+
 struct MainVariantKey {
     FilterKind filter = FilterKind::Pcf;
-    int kernel = 3;
+    int kernel = 3;  // FilterKind::Pcf only (other filters' taps do not depend on it)
     ViewMode view = ViewMode::Lit;
-    bool perspectiveLight = false;
-    bool normalOffset = false;
+    LightSetKey lights;
+    bool normalOffset = false;  // some casting light offsets its lookup
     bool alphaMask = false;
     bool alphaTexture = false;
 
     std::vector<std::string> defines() const;
-    std::string name() const;  // the defines joined, for FrameStats and logs
+    std::string name() const;  // the defines joined (tap offsets shortened), for FrameStats and logs
     auto operator<=>(const MainVariantKey&) const = default;
 };
 
 // Uniform locations of a main-pass program, looked up once when it is built (-1 where the variant lacks one).
 struct MainUniforms {
-    GLint viewProjection, model, normalMatrix, uvTransform, lightViewProjection, shadowMap, lightDirection,
-        lightPosition, cameraPosition, shadowTexel, baseColor, lightIntensity, ambient, lightDepthRange,
-        normalOffsetTexels, texelWorldSize, spotCosHalfAngle, poissonRadiusTexels, alphaFactor, alphaCutoff,
-        baseColorTexture;
+    GLint viewProjection, model, normalMatrix, uvTransform, maps2D, mapsCube, cameraPosition, baseColor, ambient,
+        filterScale, alphaFactor, alphaCutoff, baseColorTexture;
 };
 
 struct MainProgram {

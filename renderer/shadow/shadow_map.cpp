@@ -36,48 +36,93 @@ int depthFormatBytes(DepthFormat format) {
     return 4;
 }
 
-std::string ShadowMap::ensure(int resolution, DepthFormat format, int maxTextureSize) {
-    if (texture_ && resolution == resolution_ && format == format_) return {};
+namespace {
+
+std::uint64_t nextGeneration() {
+    static std::uint64_t generation = 0;
+    return ++generation;
+}
+
+}  // namespace
+
+std::string shadowResolutionRefusal(int resolution, int maxTextureSize, const std::string& kept) {
     // The key's own range, narrowed by the GPU: the same bounds the preset table states.
     const SettingsField& key = *findSettingsField("shadow.resolution");
     const int lo = int(key.min), hi = std::min(int(key.max), maxTextureSize);
-    if (resolution < lo || resolution > hi)
-        return "shadow.resolution: " + std::to_string(resolution) + " is outside what this GPU allows [" +
-               std::to_string(lo) + ", " + std::to_string(hi) + "] (GL_MAX_TEXTURE_SIZE " +
-               std::to_string(maxTextureSize) + "); " +
-               (texture_ ? "keeping the " + std::to_string(resolution_) + "² map" : std::string("no shadow map yet"));
+    if (resolution >= lo && resolution <= hi) return {};
+    return "shadow.resolution: " + std::to_string(resolution) + " is outside what this GPU allows [" +
+           std::to_string(lo) + ", " + std::to_string(hi) + "] (GL_MAX_TEXTURE_SIZE " + std::to_string(maxTextureSize) +
+           "); " + kept;
+}
+
+std::string ShadowMapArray::ensure(bool cube, int resolution, DepthFormat format, int layers, int maxTextureSize,
+                                   int maxArrayLayers) {
+    if (texture_ && cube == cube_ && resolution == resolution_ && format == format_ && layers == layers_) return {};
+    const std::string kept = texture_ ? "keeping the " + std::to_string(resolution_) + "² map" : "no shadow map yet";
+    if (std::string refusal = shadowResolutionRefusal(resolution, maxTextureSize, kept); !refusal.empty()) return refusal;
+    if (layers < 1 || layers > maxArrayLayers)
+        return "shadow maps: " + std::to_string(layers) + " layers of " + std::to_string(resolution) +
+               "² exceed this GPU's GL_MAX_ARRAY_TEXTURE_LAYERS " + std::to_string(maxArrayLayers) + "; " + kept;
 
     gl::drainErrors();
-    gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture.id(), 1, depthInternalFormat(format), resolution, resolution);
+    gl::Texture texture = gl::createTexture(cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY);
+    glTextureStorage3D(texture.id(), 1, depthInternalFormat(format), resolution, resolution, layers);
     // The debug callback also records these; a refused allocation is a user-facing message, not a bug.
     if (std::string error = gl::drainErrors(); !error.empty()) {
         gl::takeDebugErrors();
-        return "shadow map " + std::to_string(resolution) + "² " + depthFormatName(format) + " could not be allocated (" +
-               error + "); keeping the previous map";
+        return "shadow map " + std::to_string(resolution) + "² " + depthFormatName(format) + " x " +
+               std::to_string(layers) + " could not be allocated (" + error + "); " + kept;
     }
+    texture_ = std::move(texture);
+    cube_ = cube;
+    resolution_ = resolution;
+    format_ = format;
+    layers_ = layers;
+    generation_ = nextGeneration();
+    return {};
+}
+
+std::string ShadowMap::ensure(int resolution, DepthFormat format, int maxTextureSize) {
+    if (own_ && own_->valid() && own_->resolution() == resolution && own_->format() == format) return {};
+    const std::string kept = texture_ ? "keeping the " + std::to_string(resolution_) + "² map" : "no shadow map yet";
+    if (std::string refusal = shadowResolutionRefusal(resolution, maxTextureSize, kept); !refusal.empty()) return refusal;
+    auto array = std::make_unique<ShadowMapArray>();
+    if (std::string error = array->ensure(false, resolution, format, 1, maxTextureSize, 1); !error.empty()) return error;
+    if (std::string error = attach(*array, 0); !error.empty()) return error;
+    own_ = std::move(array);
+    return {};
+}
+
+std::string ShadowMap::attach(const ShadowMapArray& array, int layer) {
+    if (texture_ && arrayGeneration_ == array.generation() && layer_ == layer) return {};
+    // A view must be a name that was never bound: glGenTextures, not glCreateTextures.
+    GLuint id = 0;
+    glGenTextures(1, &id);
+    gl::Texture view(id);
+    glTextureView(view.id(), GL_TEXTURE_2D, array.texture(), depthInternalFormat(array.format()), 0, 1,
+                  GLuint(layer), 1);
     gl::Framebuffer framebuffer = gl::createFramebuffer();
-    glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, texture.id(), 0);
+    glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, view.id(), 0);
     glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
     glNamedFramebufferReadBuffer(framebuffer.id(), GL_NONE);
     const GLenum status = glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
         return "shadow map framebuffer incomplete (status 0x" + std::to_string(status) + "); keeping the previous map";
-
-    texture_ = std::move(texture);
+    texture_ = std::move(view);
     framebuffer_ = std::move(framebuffer);
-    resolution_ = resolution;
-    format_ = format;
-    ++generation_;
-    if (!compareSampler_) compareSampler_ = gl::createSampler();
+    arrayGeneration_ = array.generation();
+    layer_ = layer;
+    resolution_ = array.resolution();
+    format_ = array.format();
+    generation_ = nextGeneration();
     return {};
 }
 
-void ShadowMap::configureSamplers(const SamplerSettings& sampler, FilterKind filter) {
-    if (!compareSampler_) compareSampler_ = gl::createSampler();
-    if (samplerState_ && samplerState_->first == sampler && samplerState_->second == filter) return;
-    samplerState_ = std::make_pair(sampler, filter);
-    const GLuint s = compareSampler_.id();
+void ShadowSampler::configure(const SamplerSettings& sampler, FilterKind filter) {
+    if (!sampler_) sampler_ = gl::createSampler();
+    if (state_ && state_->first == sampler && state_->second == filter) return;
+    state_ = std::make_pair(sampler, filter);
+    const GLuint s = sampler_.id();
     GLint wrap = GL_CLAMP_TO_BORDER;
     switch (sampler.addressMode) {
         case AddressMode::Wrap: wrap = GL_REPEAT; break;

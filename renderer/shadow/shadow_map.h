@@ -1,11 +1,11 @@
 #pragma once
-// The shadow map: a square depth texture and the framebuffer that renders into it, plus the two samplers that
-// read it (comparison for shading, raw depth for viewing/exporting). Reallocated only when size or format change;
-// a size or format the GPU refuses keeps the previous map.
+// Shadow map storage: arrays of square depth maps per resolution/format group, the per-view 2D map a shadow pass
+// renders into, and the comparison sampler the main pass reads them through.
 #include "gl/gl_objects.h"
 #include "settings/settings.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <string>
@@ -17,34 +17,83 @@ GLenum depthInternalFormat(DepthFormat format);
 const char* depthFormatName(DepthFormat format);
 int depthFormatBytes(DepthFormat format);
 
-class ShadowMap {
-public:
-    // Returns "" on success (or when nothing changed), else why the new map could not be made; the old one stays.
-    std::string ensure(int resolution, DepthFormat format, int maxTextureSize);
+// The maps of one resolution/format group: a 2D texture array (directional and spot views, a layer each) or a
+// cube-map array (point lights, six layers each). Immutable storage, reallocated only when the group's size, format
+// or layer count changes; an allocation the GPU refuses keeps the previous one.
+// "" when the shadow.resolution key and this GPU allow `resolution`, else the message saying the range and `kept`.
+std::string shadowResolutionRefusal(int resolution, int maxTextureSize, const std::string& kept);
 
-    // Sampler state from the settings (address mode, border depth, comparison filter); no GL calls if unchanged.
-    void configureSamplers(const SamplerSettings& sampler, FilterKind filter);
+class ShadowMapArray {
+public:
+    // Returns "" on success (or when nothing changed), else why the new array could not be made.
+    std::string ensure(bool cube, int resolution, DepthFormat format, int layers, int maxTextureSize,
+                       int maxArrayLayers);
 
     bool valid() const { return bool(texture_); }
-    std::uint64_t generation() const { return generation_; }  // bumped at each (re)allocation
+    bool cube() const { return cube_; }
     int resolution() const { return resolution_; }
     DepthFormat format() const { return format_; }
+    int layers() const { return layers_; }
+    GLuint texture() const { return texture_.id(); }
+    std::uint64_t generation() const { return generation_; }  // unique across all arrays, bumped at each allocation
+    std::size_t memoryBytes() const {
+        return std::size_t(resolution_) * std::size_t(resolution_) * std::size_t(layers_) * std::size_t(depthFormatBytes(format_));
+    }
+
+private:
+    gl::Texture texture_;
+    bool cube_ = false;
+    int resolution_ = 0;
+    int layers_ = 0;
+    DepthFormat format_ = DepthFormat::D32F;
+    std::uint64_t generation_ = 0;
+};
+
+// One shadow view's map: one layer of a ShadowMapArray seen as a plain 2D depth texture (a GL texture view, which
+// shares the array's storage), with the framebuffer the shadow pass renders that layer through. The map viewer,
+// the probe, the exporters and the screenshots read it like any 2D map.
+class ShadowMap {
+public:
+    // A standalone map (tests, tools): its own one-layer array. Returns "" or why it could not be made (the old
+    // map stays).
+    std::string ensure(int resolution, DepthFormat format, int maxTextureSize);
+    // Views layer `layer` of `array` (no GL work when it already does).
+    std::string attach(const ShadowMapArray& array, int layer);
+
+    bool valid() const { return bool(texture_); }
+    // Changes whenever the storage behind the map changes (a new allocation or another layer).
+    std::uint64_t generation() const { return generation_; }
+    int resolution() const { return resolution_; }
+    DepthFormat format() const { return format_; }
+    int layer() const { return layer_; }
     GLuint framebuffer() const { return framebuffer_.id(); }
     GLuint texture() const { return texture_.id(); }
-    GLuint compareSampler() const { return compareSampler_.id(); }
     std::size_t memoryBytes() const { return std::size_t(resolution_) * resolution_ * depthFormatBytes(format_); }
 
     // Reads the stored depth (row 0 = bottom, as GL stores it) as floats in [0,1].
     std::vector<float> readDepth() const;
 
 private:
-    gl::Texture texture_;
+    std::unique_ptr<ShadowMapArray> own_;  // set by ensure()
+    gl::Texture texture_;                  // the 2D view of the layer
     gl::Framebuffer framebuffer_;
-    gl::Sampler compareSampler_;
-    std::optional<std::pair<SamplerSettings, FilterKind>> samplerState_;  // what compareSampler_ is set to
-    int resolution_ = 0;
+    std::uint64_t arrayGeneration_ = 0;
     std::uint64_t generation_ = 0;
+    int layer_ = -1;
+    int resolution_ = 0;
     DepthFormat format_ = DepthFormat::D32F;
+};
+
+// The comparison sampler every shadow lookup goes through (address mode, border depth, the filter's bilinear or
+// nearest comparison); no GL calls when unchanged. Cube maps ignore the address mode (a direction is never outside).
+class ShadowSampler {
+public:
+    void configure(const SamplerSettings& sampler, FilterKind filter);
+    GLuint id() const { return sampler_.id(); }
+
+private:
+    gl::Sampler sampler_;
+    std::optional<std::pair<SamplerSettings, FilterKind>> state_;
 };
 
 }  // namespace shadowlab

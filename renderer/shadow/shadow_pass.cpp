@@ -49,7 +49,14 @@ ShadowPass::ShadowPass()
           {"ALPHA_MASK", "BASE_COLOR_TEXTURE"})),
       hasOffsetClamp_(glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr) {}
 
-bool ShadowPass::casterVisible(const GpuDraw& draw, const LightSpace& light) const {
+void clearShadowMap(const ShadowMap& map) {
+    glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+}
+
+bool casterInVolume(const GpuDraw& draw, const LightSpace& light) {
     if (!draw.hasFiniteBounds) return true;  // cannot tell: draw it (non-finite vertices are dropped at load)
     const glm::dvec3 c = glm::dvec3(light.view * glm::dvec4(glm::dvec3(draw.boundsCenter), 1.0));
     const double r = draw.boundsRadius;
@@ -93,7 +100,7 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     scene.bind();
     const Scene& model = scene.scene();
     for (const GpuDraw& draw : scene.draws()) {
-        if (!casterVisible(draw, light)) {
+        if (!casterInVolume(draw, light)) {
             ++counts.castersSkipped;
             continue;
         }

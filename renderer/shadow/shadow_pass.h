@@ -12,6 +12,13 @@
 
 namespace shadowlab {
 
+// Whether a draw's bounding sphere reaches a view's volume (its sides and far plane; casters before the near plane of
+// a directional view still cast through depth clamp). Draws without finite bounds count as inside.
+bool casterInVolume(const GpuDraw& draw, const LightSpace& light);
+
+// Clears a map to the far depth: a view with no caster in its volume reads as lit everywhere.
+void clearShadowMap(const ShadowMap& map);
+
 struct ShadowPassCounts {
     int castersDrawn = 0;
     int castersSkipped = 0;       // outside the light's volume
@@ -30,8 +37,6 @@ public:
     bool hasPolygonOffsetClamp() const { return hasOffsetClamp_; }
 
 private:
-    bool casterVisible(const GpuDraw& draw, const LightSpace& light) const;
-
     // A shadow-pass program with its uniform locations, looked up once (-1 where the program lacks one).
     struct CasterProgram {
         gl::Program program;

@@ -2,18 +2,21 @@
 
 namespace shadowlab {
 
-PassTimer::PassTimer(TimingSource source) : source_(source) {
-    if (source_ != TimingSource::GpuQueries) return;
-    for (PassQueries& pass : passes_)
-        for (gl::Query& query : pass.queries) query = gl::createQuery(GL_TIME_ELAPSED);
+PassTimer::PassTimer(TimingSource source) : source_(source) {}
+
+PassTimer::PassQueries& PassTimer::pass(int which) {
+    auto [it, created] = passes_.try_emplace(which);
+    if (created && source_ == TimingSource::GpuQueries)
+        for (gl::Query& query : it->second.queries) query = gl::createQuery(GL_TIME_ELAPSED);
+    return it->second;
 }
 
 const char* PassTimer::sourceLabel() const {
     return source_ == TimingSource::GpuQueries ? "GPU (timer queries)" : "CPU (software rasterizer, around glFinish)";
 }
 
-void PassTimer::begin(TimedPass which) {
-    PassQueries& pass = passes_[std::size_t(which)];
+void PassTimer::begin(int which) {
+    PassQueries& pass = this->pass(which);
     if (source_ == TimingSource::CpuAroundFinish) {
         glFinish();
         pass.cpuStart = std::chrono::steady_clock::now();
@@ -24,8 +27,8 @@ void PassTimer::begin(TimedPass which) {
     glBeginQuery(GL_TIME_ELAPSED, pass.queries[std::size_t(pass.next)].id());
 }
 
-void PassTimer::end(TimedPass which) {
-    PassQueries& pass = passes_[std::size_t(which)];
+void PassTimer::end(int which) {
+    PassQueries& pass = this->pass(which);
     if (source_ == TimingSource::CpuAroundFinish) {
         glFinish();
         pass.latest = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass.cpuStart).count();
@@ -52,8 +55,8 @@ void PassTimer::collect(PassQueries& pass, bool wait) {
     }
 }
 
-std::optional<double> PassTimer::latestMilliseconds(TimedPass which, bool wait) {
-    PassQueries& pass = passes_[std::size_t(which)];
+std::optional<double> PassTimer::latestMilliseconds(int which, bool wait) {
+    PassQueries& pass = this->pass(which);
     if (source_ == TimingSource::GpuQueries) collect(pass, wait);
     return pass.latest;
 }

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <chrono>
+#include <map>
 #include <optional>
 
 namespace shadowlab {
@@ -19,12 +20,20 @@ public:
     TimingSource source() const { return source_; }
     const char* sourceLabel() const;
 
-    void begin(TimedPass pass);
-    void end(TimedPass pass);
+    // A pass is TimedPass or any other number (the renderer times each shadow view as kFirstViewPass + index).
+    // Passes must not nest (one GL_TIME_ELAPSED query at a time).
+    static constexpr int kFirstViewPass = 16;
+    void begin(TimedPass pass) { begin(int(pass)); }
+    void end(TimedPass pass) { end(int(pass)); }
+    void begin(int pass);
+    void end(int pass);
 
     // The newest finished measurement of a pass in milliseconds, if any. With GPU queries it may be from an earlier
     // frame; `wait` blocks until the newest one is ready (for one-shot CLI renders and benchmarks).
-    std::optional<double> latestMilliseconds(TimedPass pass, bool wait = false);
+    std::optional<double> latestMilliseconds(TimedPass pass, bool wait = false) {
+        return latestMilliseconds(int(pass), wait);
+    }
+    std::optional<double> latestMilliseconds(int pass, bool wait = false);
 
 private:
     static constexpr int kRing = 4;
@@ -36,9 +45,10 @@ private:
         std::chrono::steady_clock::time_point cpuStart;
     };
     void collect(PassQueries& pass, bool wait);
+    PassQueries& pass(int which);
 
     TimingSource source_;
-    std::array<PassQueries, 2> passes_;
+    std::map<int, PassQueries> passes_;
 };
 
 }  // namespace shadowlab

@@ -76,7 +76,7 @@ TEST_F(EditorPanels, DraggingDepthBiasRaisesItAndTheNextFrameRedrawsTheShadowMap
     EXPECT_GT(h.state().settings.lights[0].shadow.depthBias, before + 10.0f);
     h.frame();
     EXPECT_TRUE(h.state().stats.shadowPass.ran);
-    EXPECT_EQ(h.state().stats.shadowPass.reason, "bias changed");
+    EXPECT_EQ(h.state().stats.shadowPass.reason, "shadow.depthBias changed");
 }
 
 TEST_F(EditorPanels, ClickingTheSlopeSliderSetsTheValueUnderTheMouse) {

@@ -34,7 +34,7 @@ TEST_F(FrameWork, ChangingOneBiasReRunsTheShadowPass) {
     s.lights[0].shadow.depthBias += 1.0f;
     const View changed = renderView(renderer, scene, s);
     EXPECT_TRUE(changed.stats.shadowPass.ran);
-    EXPECT_EQ(changed.stats.shadowPass.reason, "bias changed");
+    EXPECT_EQ(changed.stats.shadowPass.reason, "shadow.depthBias changed");  // named by the key table
     // Settings that only the main pass reads do not re-run it.
     s.filter.kind = FilterKind::Poisson;
     s.view = ViewMode::Shadow;
@@ -43,7 +43,7 @@ TEST_F(FrameWork, ChangingOneBiasReRunsTheShadowPass) {
     s.lights[0].direction.x += 0.01f;
     const View moved = renderView(renderer, scene, s);
     EXPECT_TRUE(moved.stats.shadowPass.ran);
-    EXPECT_EQ(moved.stats.shadowPass.reason, "light changed");
+    EXPECT_EQ(moved.stats.shadowPass.reason, "direction changed");
     s.lights[0].shadow.resolution = 1024;
     const View resized = renderView(renderer, scene, s);
     EXPECT_TRUE(resized.stats.shadowMapReallocated);

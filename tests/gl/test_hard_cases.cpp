@@ -183,10 +183,22 @@ std::vector<std::string> nonFiniteUniforms() {
             case GL_FLOAT_MAT4: components = 16; break;
             default: continue;
         }
+        const GLint location = glGetUniformLocation(GLuint(program), name);
+        if (location < 0) continue;  // a member of the Lights block: checked below, in the buffer
         float values[16] = {};
-        glGetUniformfv(GLuint(program), glGetUniformLocation(GLuint(program), name), values);
+        glGetUniformfv(GLuint(program), location, values);
         for (int c = 0; c < components; ++c)
             if (!std::isfinite(values[c])) bad.push_back(name);
+    }
+    // The per-light data (matrices, positions, cone, texel sizes) lives in the uniform buffer at binding 0.
+    GLint buffer = 0, bytes = 0;
+    glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 0, &buffer);
+    if (buffer != 0) {
+        glGetNamedBufferParameteriv(GLuint(buffer), GL_BUFFER_SIZE, &bytes);
+        std::vector<float> block(std::size_t(bytes) / sizeof(float));
+        glGetNamedBufferSubData(GLuint(buffer), 0, GLsizeiptr(block.size() * sizeof(float)), block.data());
+        for (std::size_t i = 0; i < block.size(); ++i)
+            if (!std::isfinite(block[i])) bad.push_back("Lights block float " + std::to_string(i));
     }
     return bad;
 }
