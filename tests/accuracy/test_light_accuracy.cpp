@@ -311,6 +311,42 @@ TEST_F(LightAccuracyTest, EachLightOfTwoMeasuresAsThatLightAlone) {
     EXPECT_EQ(one.whole.counts.wrong, spot.counts.wrong);
 }
 
+TEST_F(LightAccuracyTest, APointLightMeasuresThroughItsCubeMapAndSkipsWhatItsRangeDoesNotReach) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings s = loadShippedPreset("default");
+    s.lights[0].type = LightType::Point;
+    s.lights[0].position = glm::vec3(1.0f, 4.0f, 1.0f);
+    s.lights[0].range = 7.0f;
+    s.lights[0].shadow.depthBias = 0.6f;
+    s.lights[0].shadow.slopeScaledDepthBias = 2.0f;
+    s.lights[0].shadow.normalOffset = 1.0f;
+    const Camera camera = cameraFor(s.camera, scene, 320.0 / 180.0);
+    AccuracyMeter meter;
+    const ManyLightsReport many = measureLights(meter, scene, s, camera, 320, 180);
+    ASSERT_TRUE(many.ok) << many.error;
+    const AccuracyReport& r = many.lights.at(0).report;
+    saveOverlay(r, "point-light");
+    EXPECT_EQ(many.lights[0].type, LightType::Point);
+    // The floor beyond 7 units from the light is not reached: a large share of the view, counted in no number.
+    EXPECT_GT(r.counts.outOfRange, 5000u);
+    EXPECT_EQ(r.counts.outsideCone, 0u) << "a point light has no cone";
+    EXPECT_GT(r.counts.shadowed, 200u) << "the cube and the plank shadow the floor under the light";
+    const AccuracyCounts& c = r.counts;
+    EXPECT_EQ(c.measured + c.outOfRange + c.facingAway + c.background + c.nonFinite + c.coverageMismatch, c.pixels);
+    // The tool's cube map agrees with the exact segments to the light: few wrong pixels, little acne, no leak.
+    EXPECT_LT(r.wrongPercent, 0.5);
+    EXPECT_LT(r.acnePercent, 1.0);
+    EXPECT_LT(r.leakPercent, 0.5);
+    // Without bias the cube faces self-shadow: the numbers must see it.
+    s.lights[0].shadow.depthBias = 0.0f;
+    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
+    s.lights[0].shadow.normalOffset = 0.0f;
+    const ManyLightsReport zero = measureLights(meter, scene, s, camera, 320, 180);
+    ASSERT_TRUE(zero.ok) << zero.error;
+    EXPECT_GT(zero.lights[0].report.acnePercent, 10.0);
+    EXPECT_EQ(zero.lights[0].report.counts.outOfRange, c.outOfRange) << "the reference does not depend on the bias";
+}
+
 TEST_F(LightAccuracyTest, LightsThatCastNoShadowAreNotMeasuredAndSaySo) {
     const Scene scene = loadBuiltin("textbook");
     Settings s = twoLights();
