@@ -116,6 +116,16 @@ python3 -c "
 import json; a = json.load(open('light1.json')); b = json.load(open('two.json'))
 assert [l['index'] for l in a['lights']] == [1] and a['lights'][0]['counts'] == b['lights'][1]['counts']" \
   && pass "--light 1 measures light 1 alone, with the numbers it has among two" || fail "--light 1: $(head -3 measure-light1.out)"
+expect_ok measure-point "$SHADOWLAB" measure --scene builtin:textbook --preset ./two-lights.json \
+  --set lights.2.type=point --set 'lights.2.position=[1,4,1]' --set lights.2.range=7 --light 2 --width 320 \
+  --height 180 --json point.json --overlay point.png
+python3 -c "
+import json; l = json.load(open('point.json'))['lights'][0]
+assert l['index'] == 2 and l['type'] == 'point', l['type']
+assert l['counts']['outOfRange'] > 1000 and l['counts']['outsideCone'] == 0, l['counts']
+assert l['wrongPixelsPercent'] < 5, l['wrongPixelsPercent']" \
+  && pass "a point light is measured through its cube map; beyond its range is not counted" \
+  || fail "point light: $(grep -E 'wrong pixels|pixels [0-9]' measure-point.out | head -2)"
 expect_error light-5 "lights.5: no such light (the settings have 2 lights" "$SHADOWLAB" measure \
   --scene builtin:textbook --preset ./two-lights.json --light 5 --width 32 --height 32
 expect_error tune-light-5 "lights.5: no such light" "$SHADOWLAB" tune --scene builtin:textbook \
