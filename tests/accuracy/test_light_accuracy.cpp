@@ -311,6 +311,43 @@ TEST_F(LightAccuracyTest, EachLightOfTwoMeasuresAsThatLightAlone) {
     EXPECT_EQ(one.whole.counts.wrong, spot.counts.wrong);
 }
 
+// The premise of isolation, checked on the real renderer: the two-light frame's shadow view (the mean S of the lights
+// that reach a pixel) is made of exactly the S each light has when it is measured alone.
+TEST_F(LightAccuracyTest, TheTwoLightFrameIsMadeOfTheIsolatedShadowFactors) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings both = twoLights();
+    const int w = 320, h = 180;
+    const Camera camera = cameraFor(both.camera, scene, double(w) / h);
+    AccuracyMeter meter;
+    const ManyLightsReport many = measureLights(meter, scene, both, camera, w, h);
+    ASSERT_TRUE(many.ok) << many.error;
+    both.view = ViewMode::Shadow;
+    Renderer renderer;
+    RenderTarget target;
+    ASSERT_EQ(target.resize(w, h, GL_RGBA32F), "");
+    ASSERT_TRUE(renderer.render(scene, both, camera, target).ok);
+    std::vector<float> frame(std::size_t(w) * std::size_t(h) * 4);
+    glGetTextureImage(target.colorTexture(), 0, GL_RGBA, GL_FLOAT, GLsizei(frame.size() * sizeof(float)), frame.data());
+    const AccuracyReport& sun = many.lights[0].report;
+    const AccuracyReport& spot = many.lights[1].report;
+    long compared = 0, differ = 0, bothReach = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * std::size_t(w) + std::size_t(x);  // row 0 = top
+            if (sun.pixelClass[i] == PixelClass::Background) continue;
+            const float shown = frame[(std::size_t(h - 1 - y) * std::size_t(w) + std::size_t(x)) * 4];
+            const bool spotReaches = spot.pixelClass[i] != PixelClass::OutsideCone;
+            bothReach += spotReaches;
+            const float expected = spotReaches ? 0.5f * (sun.pixelShadow[i] + spot.pixelShadow[i]) : sun.pixelShadow[i];
+            ++compared;
+            differ += std::abs(shown - expected) > 1e-5f;
+        }
+    EXPECT_GT(bothReach, 2000) << "the spot light must reach part of the view";
+    EXPECT_GT(compared, 20000);
+    // Only the cone's rim may differ: the reference decides the cone in double, the shader in float.
+    EXPECT_LT(differ, compared / 1000) << differ << " of " << compared << " pixels differ";
+}
+
 TEST_F(LightAccuracyTest, APointLightMeasuresThroughItsCubeMapAndSkipsWhatItsRangeDoesNotReach) {
     const Scene scene = loadBuiltin("textbook");
     Settings s = loadShippedPreset("default");
