@@ -6,6 +6,7 @@
 #include "cli/probe_command.h"
 #include "cli/profile_command.h"
 #include "cli/render_command.h"
+#include "cli/sweep_command.h"
 #include "cli/tune_command.h"
 #include "editor_window/edit_command.h"
 #include "settings/settings_fields.h"
@@ -117,6 +118,25 @@ int main(int argc, char** argv) {
     profileCmd->add_option("--plot-width", profile.plotWidth, "chart width")->capture_default_str();
     profileCmd->add_option("--plot-height", profile.plotHeight, "chart height")->capture_default_str();
 
+    cli::SweepOptions sweep;
+    CLI::App* sweepCmd = app.add_subcommand("sweep", "What accuracy costs: time and measure every point of preset-key axes, with the raster limit and the Pareto front");
+    sweepCmd->add_option("--scene", sweep.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
+    sweepCmd->add_option("--preset", sweep.preset, "a preset JSON path, or the name of a shipped preset");
+    sweepCmd->add_option("--set", sweep.overrides, "override a setting: key=value (repeatable)");
+    sweepCmd->add_option("--axis", sweep.axes, "KEY=V1,V2,...: a preset key and its values (repeatable; the points are "
+                                               "the cartesian product)")->required();
+    sweepCmd->add_option("--width", sweep.width, "view width")->capture_default_str();
+    sweepCmd->add_option("--height", sweep.height, "view height")->capture_default_str();
+    sweepCmd->add_option("--frames", sweep.frames, "timed frames per point (median)")->capture_default_str()->check(
+        CLI::Range(1, 100000));
+    sweepCmd->add_option("--json", sweep.json, "write every point's numbers and settings as JSON");
+    sweepCmd->add_option("--csv", sweep.csv, "write every point's numbers and settings as CSV");
+    sweepCmd->add_option("--chart", sweep.chart, "write the chart (cost vs wrong pixels, the front, the preset) as PNG");
+    sweepCmd->add_option("--chart-width", sweep.chartWidth, "chart width")->capture_default_str()->check(
+        CLI::Range(200, 8192));
+    sweepCmd->add_option("--chart-height", sweep.chartHeight, "chart height")->capture_default_str()->check(
+        CLI::Range(150, 8192));
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -135,6 +155,7 @@ int main(int argc, char** argv) {
     if (*exportCmd) return cli::runExport(exportOptions);
     if (*probeCmd) return cli::runProbe(probe);
     if (*profileCmd) return cli::runProfile(profile);
+    if (*sweepCmd) return cli::runSweep(sweep);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

@@ -3,7 +3,7 @@
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
-#include "frame/renderer.h"
+#include "frame/timed_frames.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
 #include "settings/settings_fields.h"
@@ -13,19 +13,12 @@
 
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 
 namespace shadowlab::cli {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 // "pcf5" -> kind pcf, kernel 5; "poisson", "point", "hardware2x2" as they are.
 bool applyFilter(const std::string& name, Settings& settings) {
@@ -95,28 +88,14 @@ int runBench(const BenchOptions& options) {
                 Settings settings = *base;
                 settings.lights[0].shadow.resolution = resolution;
                 applyFilter(filter, settings);  // checked above
-                std::vector<double> shadowMs, mainMs;
-                double wallTotal = 0.0;
-                for (int frame = -3; frame < options.frames; ++frame) {  // 3 warm-up frames
-                    renderer.invalidateShadowMap();
-                    const auto start = std::chrono::steady_clock::now();
-                    FrameStats stats = renderer.render(scene, settings, camera, target);
-                    renderer.waitForTimings(stats);
-                    const double wall =
-                        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-                    if (!stats.ok) {
-                        std::cerr << "error: " << stats.error << "\n";
-                        return 1;
-                    }
-                    timing = stats.timingSource;
-                    if (frame < 0) continue;
-                    wallTotal += wall;
-                    if (stats.shadowPass.milliseconds) shadowMs.push_back(*stats.shadowPass.milliseconds);
-                    if (stats.mainPass.milliseconds) mainMs.push_back(*stats.mainPass.milliseconds);
+                const TimedFrames timed = timeFrames(renderer, scene, settings, camera, target, options.frames);
+                if (!timed.ok) {
+                    std::cerr << "error: " << timed.error << "\n";
+                    return 1;
                 }
+                timing = timed.timingSource;
                 const double mib = double(renderer.shadowMap().memoryBytes()) / (1024.0 * 1024.0);
-                const double shadow = median(shadowMs), main = median(mainMs);
-                const double wall = wallTotal / std::max(options.frames, 1);
+                const double shadow = timed.shadowMs, main = timed.mainMs, wall = timed.wallMsPerFrame;
                 std::cout << std::left << std::setw(12) << resolution << std::setw(13) << filter << std::setw(12)
                           << std::fixed << std::setprecision(1) << mib << std::setw(14) << std::setprecision(3)
                           << shadow << std::setw(14) << main << std::setprecision(2) << wall << "\n";

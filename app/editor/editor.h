@@ -74,6 +74,7 @@ public:
     void measureAccuracy() override;
     void suggestBias() override;
     void cancelAccuracy() override;
+    std::optional<AccuracyViewKey> currentView() const override { return accuracyKey(); }
 
 private:
     struct PendingSwitch {

@@ -173,6 +173,9 @@ void Editor::uploadAccuracyOverlay() {
 double Editor::idleWaitSeconds() const {
     // 20 redraws a second: progress shows, and the worker keeps the cores (flat out on llvmpipe starves it).
     if (state_.accuracy.running || autoDue_) return 0.05;
+    // A sweep times passes: 4 redraws a second show its progress without disturbing its timings (on llvmpipe a
+    // faster UI also starves the sweep's own GL context).
+    if (state_.sweep.running) return 0.25;
     return 0.5;
 }
 

@@ -6,6 +6,7 @@
 #include "editor/preset_session.h"
 #include "editor/probe_state.h"
 #include "editor/settings_edit.h"
+#include "editor/sweep_state.h"
 #include "frame/frame_stats.h"
 #include "overlay/shadow_map_view.h"
 #include "scene/async_scene_loader.h"
@@ -86,6 +87,7 @@ struct EditorState {
     MapViewerState viewer;
     AccuracyState accuracy;  // the Accuracy panel and the viewport's accuracy overlay
     ProbeState probe;        // the Probe panel: why the clicked pixel is lit or shadowed
+    SweepPanelState sweep;   // the Cost vs accuracy panel
 
     // Scene panel
     std::optional<SceneLoadProgress> loading;  // while a scene loads
@@ -132,6 +134,8 @@ public:
     virtual void measureAccuracy() = 0;
     virtual void suggestBias() = 0;
     virtual void cancelAccuracy() = 0;
+    // What a measurement now would be made for (settings, camera, scene, viewport size); none before a viewport.
+    virtual std::optional<AccuracyViewKey> currentView() const = 0;
 };
 
 }  // namespace shadowlab::editor

@@ -338,6 +338,7 @@ void Editor::drawPanels() {
         if (open) panel.draw(ctx);
         ImGui::End();
     }
+    drawSweepWindow(ctx);
 }
 
 void Editor::drawUnsavedChangesDialog() {

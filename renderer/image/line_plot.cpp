@@ -59,6 +59,14 @@ public:
             fill(int(v[0]), int(v[1]), int(v[8]), int(v[9]), c);
         }
     }
+    // A filled disc (or a 2-pixel ring) of radius r centred on (cx, cy).
+    void disc(double cx, double cy, double r, bool ring, const PlotColor& c) {
+        for (int y = int(std::floor(cy - r - 1)); y <= int(std::ceil(cy + r + 1)); ++y)
+            for (int x = int(std::floor(cx - r - 1)); x <= int(std::ceil(cx + r + 1)); ++x) {
+                const double d = std::hypot(double(x) - cx, double(y) - cy);
+                if (d <= r && (!ring || d >= r - 2.0)) blend(x, y, c);
+            }
+    }
     static int textWidth(const std::string& s) { return stb_easy_font_width(const_cast<char*>(s.c_str())); }
     std::vector<std::uint8_t> take() { return std::move(rgba_); }
 
@@ -92,34 +100,53 @@ std::vector<double> niceTicks(double low, double high, int count) {
     return ticks;
 }
 
-PlotImage drawLinePlot(const LinePlot& plot, int width, int height) {
-    PlotImage image{width, height, {}};
-    Canvas canvas(width, height);
+PlotFrame plotFrame(const LinePlot& plot, int width, int height) {
+    PlotFrame f;
     double xMin = std::numeric_limits<double>::max(), xMax = -xMin, yMin = xMin, yMax = -xMin;
-    for (const PlotSeries& s : plot.series)
-        for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-            if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-            xMin = std::min(xMin, s.x[i]), xMax = std::max(xMax, s.x[i]);
-            yMin = std::min(yMin, s.y[i]), yMax = std::max(yMax, s.y[i]);
+    auto extend = [&](const std::vector<double>& x, const std::vector<double>& y) {
+        for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) {
+            if (!std::isfinite(x[i]) || !std::isfinite(y[i])) continue;
+            xMin = std::min(xMin, x[i]), xMax = std::max(xMax, x[i]);
+            yMin = std::min(yMin, y[i]), yMax = std::max(yMax, y[i]);
         }
+    };
+    for (const PlotSeries& s : plot.series) extend(s.x, s.y);
+    for (const PlotPoints& p : plot.points) extend(p.x, p.y);
     if (xMin > xMax) xMin = 0.0, xMax = 1.0, yMin = 0.0, yMax = 1.0;  // nothing to draw: still axes
     if (xMax - xMin <= 0.0) xMax = xMin + 1.0;
+    // Markers and their labels need room at the ends of the x range too.
+    if (!plot.points.empty()) {
+        const double xSpan = xMax - xMin;
+        xMin -= xSpan * 0.04, xMax += xSpan * 0.10;
+    }
     // Differences of 1e-6 in depth matter here: keep a span of at least a few float steps around the data.
     const double ySpan = std::max(yMax - yMin, std::max(std::abs(yMax), 1.0) * 1e-7);
     yMin -= ySpan * 0.08, yMax += ySpan * 0.08;
-
-    const std::vector<double> yTicks = niceTicks(yMin, yMax, 6), xTicks = niceTicks(xMin, xMax, 8);
-    const double ySpacing = yTicks.size() > 1 ? yTicks[1] - yTicks[0] : ySpan;
-    const double xSpacing = xTicks.size() > 1 ? xTicks[1] - xTicks[0] : 1.0;
+    f.xMin = xMin, f.xMax = xMax, f.yMin = yMin, f.yMax = yMax;
+    f.yTicks = niceTicks(yMin, yMax, 6), f.xTicks = niceTicks(xMin, xMax, 8);
+    f.ySpacing = f.yTicks.size() > 1 ? f.yTicks[1] - f.yTicks[0] : ySpan;
+    f.xSpacing = f.xTicks.size() > 1 ? f.xTicks[1] - f.xTicks[0] : 1.0;
     int labelWidth = 0;
-    for (double v : yTicks) labelWidth = std::max(labelWidth, Canvas::textWidth(tickText(v, ySpacing)));
-    const int left = labelWidth + 22, right = width - 12, top = 26, bottom = height - 34;
-    if (right - left < 20 || bottom - top < 20) {
+    for (double v : f.yTicks) labelWidth = std::max(labelWidth, Canvas::textWidth(tickText(v, f.ySpacing)));
+    f.left = labelWidth + 22, f.right = width - 12, f.top = 26, f.bottom = height - 34;
+    f.drawable = f.right - f.left >= 20 && f.bottom - f.top >= 20;
+    return f;
+}
+
+PlotImage drawLinePlot(const LinePlot& plot, int width, int height) {
+    PlotImage image{width, height, {}};
+    Canvas canvas(width, height);
+    const PlotFrame f = plotFrame(plot, width, height);
+    if (!f.drawable) {
         image.rgba = canvas.take();
         return image;
     }
-    auto px = [&](double x) { return left + (x - xMin) / (xMax - xMin) * (right - left); };
-    auto py = [&](double y) { return bottom - (y - yMin) / (yMax - yMin) * (bottom - top); };
+    const int left = f.left, right = f.right, top = f.top, bottom = f.bottom;
+    auto px = [&](double x) { return f.px(x); };
+    auto py = [&](double y) { return f.py(y); };
+    const std::vector<double>& yTicks = f.yTicks;
+    const std::vector<double>& xTicks = f.xTicks;
+    const double ySpacing = f.ySpacing, xSpacing = f.xSpacing;
     const PlotColor axis{40, 40, 40, 255}, grid{0, 0, 0, 28}, ink{20, 20, 20, 255};
 
     for (const PlotSpan& s : plot.spans)
@@ -155,12 +182,53 @@ PlotImage drawLinePlot(const LinePlot& plot, int width, int height) {
         }
     }
 
+    // Markers, then labels beside them where they cover no other label or marker (else the label is left out).
+    using Box = std::array<int, 4>;  // x0, y0, x1, y1
+    std::vector<Box> taken;
+    for (const PlotPoints& s : plot.points)
+        for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+            if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+            const double cx = px(s.x[i]), cy = py(s.y[i]);
+            canvas.disc(cx, cy, double(s.radius), s.ring, s.color);
+            taken.push_back({int(cx) - s.radius, int(cy) - s.radius, int(cx) + s.radius + 1, int(cy) + s.radius + 1});
+        }
+    for (const PlotPoints& s : plot.points)
+        for (std::size_t i = 0; i < std::min({s.x.size(), s.y.size(), s.labels.size()}); ++i) {
+            if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || s.labels[i].empty()) continue;
+            const double cx = px(s.x[i]), cy = py(s.y[i]);
+            // Clear of every marker drawn on this spot (a ring around the point included).
+            int r = s.radius;
+            for (const PlotPoints& o : plot.points)
+                for (std::size_t j = 0; j < std::min(o.x.size(), o.y.size()); ++j)
+                    if (std::abs(px(o.x[j]) - cx) < 1.0 && std::abs(py(o.y[j]) - cy) < 1.0) r = std::max(r, o.radius);
+            r += 3;
+            const int w = Canvas::textWidth(s.labels[i]);
+            const std::array<std::array<int, 2>, 4> places{{{int(cx) + r, int(cy) - 3},
+                                                            {int(cx) - r - w, int(cy) - 3},
+                                                            {int(cx) - w / 2, int(cy) - r - 8},
+                                                            {int(cx) - w / 2, int(cy) + r + 1}}};
+            for (const auto& place : places) {
+                const Box box{place[0] - 1, place[1] - 1, place[0] + w + 1, place[1] + 8};
+                const bool overlaps = std::any_of(taken.begin(), taken.end(), [&](const Box& t) {
+                    const bool own = t[0] <= int(cx) && int(cx) < t[2] && t[1] <= int(cy) && int(cy) < t[3];
+                    return !own && box[0] < t[2] && t[0] < box[2] && box[1] < t[3] && t[1] < box[3];
+                });
+                if (overlaps || box[0] < left || box[2] > right || box[1] < top || box[3] > bottom) continue;
+                taken.push_back(box);
+                canvas.text(place[0], place[1], s.labels[i], ink);
+                break;
+            }
+        }
+
     canvas.text(left, 8, plot.title, ink);
     canvas.text((left + right) / 2 - Canvas::textWidth(plot.xLabel) / 2, height - 14, plot.xLabel, ink);
     canvas.text(4, 8 + 10, plot.yLabel, ink);
     // Legend: top right, one row per series and per distinct span label.
     std::vector<std::pair<std::string, PlotColor>> entries;
-    for (const PlotSeries& s : plot.series) entries.emplace_back(s.label, s.color);
+    for (const PlotSeries& s : plot.series)
+        if (!s.label.empty()) entries.emplace_back(s.label, s.color);
+    for (const PlotPoints& p : plot.points)
+        if (!p.label.empty()) entries.emplace_back(p.label, p.color);
     for (const PlotSpan& s : plot.spans)
         if (std::none_of(entries.begin(), entries.end(), [&](const auto& e) { return e.first == s.label; }))
             entries.emplace_back(s.label, PlotColor{s.color[0], s.color[1], s.color[2], 160});

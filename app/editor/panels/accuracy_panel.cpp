@@ -245,6 +245,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
     if (ImGui::Button("Cancel")) ctx.actions.cancelAccuracy();
     state.controls.recordLastItem("accuracy.cancel");
     ImGui::EndDisabled();
+    if (ImGui::SmallButton("Cost vs accuracy...")) state.sweep.open = !state.sweep.open;
+    state.controls.recordLastItem("accuracy.costVsAccuracy");
 
     // Progress, or what the newest job did.
     char overlay[160];

@@ -49,5 +49,8 @@ void drawShadowMapViewerPanel(PanelContext&);
 void drawStatsPanel(PanelContext&);
 void drawAccuracyPanel(PanelContext&);
 void drawProbePanel(PanelContext&);
+// Not a column panel: a window over the viewport, opened from the Accuracy panel ("Cost vs accuracy..."). Called
+// every frame (it polls its sweep); it draws only while open.
+void drawSweepWindow(PanelContext&);
 
 }  // namespace shadowlab::editor

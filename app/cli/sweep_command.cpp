@@ -1,0 +1,181 @@
+#include "cli/sweep_command.h"
+
+#include "cli/command_input.h"
+#include "cli/settings_from_cli.h"
+#include "context/headless_context.h"
+#include "image/image_io.h"
+#include "settings/atomic_file.h"
+#include "sweep/sweep_output.h"
+#include "sweep/sweep_runner.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace shadowlab::cli {
+
+namespace {
+
+std::string formatted(const char* format, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, format, value);
+    return text;
+}
+
+// One table row (also the header): columns of fixed width, the label column as wide as the longest label.
+void printRow(std::ostream& out, std::size_t labelWidth, const std::vector<std::string>& cells) {
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        const std::size_t width = i == 0 ? labelWidth + 2 : 11;
+        std::string cell = cells[i];
+        if (cell.size() < width) cell.append(width - cell.size(), ' ');
+        out << cell;
+    }
+    out << "\n";
+}
+
+std::vector<std::string> rowCells(const SweepPointResult& p) {
+    const AccuracyNumbers& n = p.accuracy;
+    return {p.label + (p.onFront ? " *" : ""),
+            std::to_string(p.resolution) + " " + depthFormatName(p.format),
+            formatted("%.1f", double(p.mapBytes) / (1024.0 * 1024.0)),
+            formatted("%.3f", p.shadowMs),
+            formatted("%.3f", p.mainMs),
+            formatted("%.3f", p.costMs),
+            formatted("%.2fx", p.shadowOverBare),
+            formatted("%.3f", n.wrongPercent),
+            formatted("%.4f", n.meanError),
+            formatted("%.3f", n.acnePercent),
+            formatted("%.3f", n.leakPercent),
+            formatted("%.2f", n.edgeErrorP95Texels),
+            formatted("%.3g", n.edgeErrorP95World),
+            formatted("%.1f", n.edgeErrorP95ScreenPixels)};
+}
+
+}  // namespace
+
+int runSweep(const SweepOptions& options) {
+    // Everything the user typed is checked before the scene, the context and the reference.
+    std::optional<Settings> base = settingsFromCli(options.preset, options.overrides, options.scene);
+    if (!base) return 2;
+    const SweepPlan plan = planSweep(*base, options.axes);
+    if (!plan.error.empty()) {
+        std::cerr << "error: " << plan.error << "\n";
+        return 2;
+    }
+    if (options.frames < 1) return fail("--frames must be at least 1");
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
+    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.csv, "--csv"},
+                                       std::pair{options.chart, "--chart"}})
+        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    if (!loaded.scene) return fail(loaded.error);
+    const Scene& scene = *loaded.scene;
+
+    try {
+        HeadlessContext context;
+        std::string axes;
+        for (const SweepAxis& a : plan.axes) axes += (axes.empty() ? "" : " x ") + a.key + " {" +
+                                                    std::to_string(a.values.size()) + "}";
+        std::cerr << "sweep: " << plan.points.size() << " points (" << axes << ") on " << scene.name << " ("
+                  << scene.triangleCount() << " triangles), view " << options.width << "x" << options.height << ", "
+                  << options.frames << " frames per point\n";
+        SweepRunOptions run;
+        run.width = options.width;
+        run.height = options.height;
+        run.frames = options.frames;
+        const SweepResult result = shadowlab::runSweep(
+            scene, *base, plan, run, [](const SweepPointResult& p, std::size_t done, std::size_t total) {
+                std::fprintf(stderr, "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  main %.3f ms  wrong %.3f %%%s\n",
+                             done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.mainMs,
+                             p.accuracy.wrongPercent, p.referenceReused ? "" : "  (reference computed)");
+            });
+        if (!result.ok) return fail(result.error);
+
+        const bool cpu = result.softwareRasterizer();
+        std::cout << "sweep: " << scene.name << " (" << result.triangles << " triangles), view " << result.width
+                  << "x" << result.height << ", median of " << result.frames << " frames per point, shadow pass forced\n"
+                  << "gl: " << result.glRenderer << "\ntimes: " << result.timingSource
+                  << (cpu ? " -- CPU time of a software rasterizer, not GPU time" : "") << "\n";
+        std::size_t labelWidth = 5;
+        for (const SweepPointResult& p : result.points) labelWidth = std::max(labelWidth, p.label.size() + 2);
+        std::string head;
+        for (const SweepAxis& a : result.axes) head += (head.empty() ? "" : " ") + a.key;
+        labelWidth = std::max(labelWidth, head.size());
+        printRow(std::cout, labelWidth,
+                 {head, "map", "map MiB", "shadow ms", "main ms", "cost ms", "x bare", "wrong %", "mean|S-V|",
+                  "acne %", "leak %", "edge tx", "edge world", "edge px"});
+        for (const SweepPointResult& p : result.points) printRow(std::cout, labelWidth, rowCells(p));
+        if (result.preset) printRow(std::cout, labelWidth, rowCells(*result.preset));
+        std::cout << "(* = on the Pareto front; cost = shadow + main; x bare = shadow pass / bare depth draw; wrong = "
+                     "|S-V| >= 0.5, edges included; edge = p95 distance of mismatched pixels to the true edge)\n";
+        if (result.presetPoint < result.points.size())
+            std::cout << "current preset: " << result.points[result.presetPoint].label << "\n";
+
+        std::cout << "raster limit: a bare depth-only draw of the same " << result.triangles
+                  << " triangles (one buffer, one draw, no bias / culling / alpha) into a map of each size:\n";
+        for (const BareDrawTiming& b : result.bareDraws) {
+            double lo = 0.0, hi = 0.0;
+            bool any = false;
+            const SweepPointResult* first = nullptr;
+            std::vector<const SweepPointResult*> all;
+            for (const SweepPointResult& p : result.points) all.push_back(&p);
+            if (result.preset) all.push_back(&*result.preset);
+            for (const SweepPointResult* pp : all)
+                if (const SweepPointResult& p = *pp;
+                    p.resolution == b.resolution && p.format == b.format && p.bareDrawMs == b.ms) {
+                    lo = any ? std::min(lo, p.shadowOverBare) : p.shadowOverBare;
+                    hi = any ? std::max(hi, p.shadowOverBare) : p.shadowOverBare;
+                    if (!any) first = &p;
+                    any = true;
+                }
+            const bool perLight = std::count_if(result.bareDraws.begin(), result.bareDraws.end(), [&](const BareDrawTiming& o) {
+                                      return o.resolution == b.resolution && o.format == b.format;
+                                  }) > 1;
+            std::cout << "  " << b.resolution << "² " << depthFormatName(b.format)
+                      << (perLight && first ? " (the light of " + first->label + ")" : std::string()) << ": bare draw "
+                      << formatted("%.3f", b.ms) << " ms; the shadow pass takes " << formatted("%.2f", lo) << "x"
+                      << (hi > lo ? " to " + formatted("%.2f", hi) + "x" : std::string()) << " of it\n";
+        }
+        std::cout << "Pareto front (not beaten on both cost and wrong pixels), in order of cost:\n";
+        for (std::size_t k = 0; k < result.front.size(); ++k) {
+            const SweepPointResult& p = result.points[result.front[k]];
+            std::cout << "  " << p.label << ": " << formatted("%.3f", p.costMs) << " ms, wrong pixels "
+                      << formatted("%.3f", p.accuracy.wrongPercent) << " %";
+            if (k > 0) std::cout << "   (step up " << frontStepText(result.points[result.front[k - 1]], p) << ")";
+            std::cout << "\n";
+        }
+        std::cout << "reference: computed " << (result.references == 1 ? std::string("once") : std::to_string(result.references) + " times (once per light / camera)")
+                  << " (" << formatted("%.0f", result.referenceMs) << " ms: G-buffer + shadow rays); sweep wall time " << formatted("%.1f", result.wallMs / 1000.0)
+                  << " s\n";
+        for (const SweepPointResult& p : result.points)
+            for (const std::string& w : p.warnings) std::cerr << "warning: " << p.label << ": " << w << "\n";
+
+        if (!options.json.empty()) {
+            nlohmann::json doc = sweepToJson(result);
+            doc["scene"] = options.scene;
+            doc["preset"] = options.preset;
+            const std::string text = doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+            if (std::string error = writeFileAtomically(options.json, text); !error.empty())
+                return fail("--json " + options.json + ": " + error);
+            std::cout << "wrote " << options.json << "\n";
+        }
+        if (!options.csv.empty()) {
+            if (std::string error = writeFileAtomically(options.csv, sweepToCsv(result)); !error.empty())
+                return fail("--csv " + options.csv + ": " + error);
+            std::cout << "wrote " << options.csv << "\n";
+        }
+        if (!options.chart.empty()) {
+            const PlotImage image = drawLinePlot(sweepChart(result), options.chartWidth, options.chartHeight);
+            if (std::string error = writePng(options.chart, image.width, image.height, 4, image.rgba.data(), false);
+                !error.empty())
+                return fail("--chart " + options.chart + ": " + error);
+            std::cout << "wrote " << options.chart << "\n";
+        }
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    return 0;
+}
+
+}  // namespace shadowlab::cli

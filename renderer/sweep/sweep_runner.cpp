@@ -1,0 +1,208 @@
+#include "sweep/sweep_runner.h"
+
+#include "frame/timed_frames.h"
+#include "sweep/pareto_front.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+namespace shadowlab {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+std::string frontStepText(const SweepPointResult& from, const SweepPointResult& to) {
+    char text[200];
+    std::snprintf(text, sizeof text, "+%.3g ms: wrong pixels %.3g %% -> %.3g %%, mean |S-V| %.4f -> %.4f",
+                  to.costMs - from.costMs, from.accuracy.wrongPercent, to.accuracy.wrongPercent,
+                  from.accuracy.meanError, to.accuracy.meanError);
+    return text;
+}
+
+void markParetoFront(SweepResult& result) {
+    std::vector<double> cost, error;
+    for (const SweepPointResult& p : result.points) {
+        cost.push_back(p.costMs);
+        error.push_back(p.accuracy.wrongPercent);
+    }
+    result.front = paretoFront(cost, error);
+    for (SweepPointResult& p : result.points) p.onFront = false;
+    for (std::size_t i : result.front) result.points[i].onFront = true;
+}
+
+SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
+                     const SweepPointCallback& onPoint, AccuracyProgress* progress) {
+    const auto start = Clock::now();
+    SweepResult result;
+    result.axes = plan.axes;
+    result.width = options.width;
+    result.height = options.height;
+    result.frames = options.frames;
+    result.triangles = scene.triangleCount();
+    auto fail = [&](std::string error) {
+        result.ok = false;
+        result.error = std::move(error);
+        return result;
+    };
+    if (!plan.error.empty()) return fail(plan.error);
+    if (plan.points.empty()) return fail("the sweep has no points");
+
+    Renderer renderer;  // times the frames; the meter keeps its own renderer for the shadow factor S
+    RenderTarget target;
+    if (std::string error = target.resize(options.width, options.height); !error.empty()) return fail(error);
+    const GlInfo& info = renderer.glInfo();
+    result.glRenderer = info.renderer;
+    // Before any work: every map size must fit this GPU (the renderer would otherwise keep its previous map).
+    for (const SweepPoint& point : plan.points)
+        for (std::size_t i = 0; i < point.settings.lights.size(); ++i)
+            if (point.settings.lights[i].shadow.resolution > info.maxTextureSize)
+                return fail("--axis lights." + std::to_string(i) + ".shadow.resolution: " +
+                            std::to_string(point.settings.lights[i].shadow.resolution) +
+                            " is above this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(info.maxTextureSize));
+    AccuracyMeter meter;
+    std::unique_ptr<BareDepthDraw> bare;
+    std::vector<std::optional<SweepPointResult>> measured(plan.points.size());  // by plan index
+
+    const bool presetExtra = options.measurePreset && plan.basePoint >= plan.points.size();
+    const std::size_t total = plan.points.size() + (presetExtra ? 1 : 0);
+    result.presetPoint = plan.basePoint;
+    const double aspect = double(options.width) / double(options.height);
+
+    auto runPoint = [&](const SweepPoint& point, std::size_t index, std::size_t done) -> std::optional<std::string> {
+        SweepPointResult r;
+        r.index = index;
+        r.values = point.values;
+        r.label = index < plan.points.size() ? point.label() : "preset (" + point.label() + ")";
+        r.settings = point.settings;
+        if (progress) {
+            progress->base = float(done) / float(total);
+            progress->span = 1.0f / float(total);
+            progress->fraction = progress->base;
+            progress->setStage("timing " + r.label);
+        }
+        const Camera camera = options.camera && point.settings.camera == base.camera
+                                  ? *options.camera
+                                  : cameraFor(point.settings.camera, scene, aspect);
+        const TimedFrames timed = timeFrames(renderer, scene, point.settings, camera, target, options.frames);
+        if (!timed.ok) return "point " + r.label + ": " + timed.error;
+        result.timingSource = timed.timingSource;
+        r.warnings = timed.last.warnings;
+        r.shadowMs = timed.shadowMs;
+        r.mainMs = timed.mainMs;
+        r.costMs = r.shadowMs + r.mainMs;
+        r.shadowMinMs = timed.shadowMinMs;
+        r.mainMinMs = timed.mainMinMs;
+        r.wallMsPerFrame = timed.wallMsPerFrame;
+        r.resolution = timed.last.shadowMapResolution;
+        r.format = timed.last.shadowMapFormat;
+        r.mapBytes = timed.last.shadowMapBytes;
+
+        // The raster limit at this size and format, once per sweep.
+        auto found = std::find_if(result.bareDraws.begin(), result.bareDraws.end(), [&](const BareDrawTiming& b) {
+            return b.resolution == r.resolution && b.format == r.format &&
+                   b.lightViewProjection == timed.last.light.viewProjection();
+        });
+        if (found == result.bareDraws.end()) {
+            if (progress) progress->setStage("bare draw " + std::to_string(r.resolution) + "² " + depthFormatName(r.format));
+            if (!bare)
+                bare = std::make_unique<BareDepthDraw>(scene, timed.last.renderOrigin,
+                                                       info.softwareRasterizer ? TimingSource::CpuAroundFinish
+                                                                               : TimingSource::GpuQueries);
+            BareDrawTiming timing = bare->time(timed.last.light.viewProjection(), r.resolution, r.format,
+                                               info.maxTextureSize, options.frames);
+            if (!timing.ok) return "bare draw " + std::to_string(r.resolution) + ": " + timing.error;
+            result.bareDraws.push_back(timing);
+            found = result.bareDraws.end() - 1;
+        }
+        r.bareDrawMs = found->ms;
+        r.shadowOverBare = found->ms > 0.0 ? r.shadowMs / found->ms : 0.0;
+        if (progress && progress->cancel) return std::nullopt;
+
+        if (progress) progress->setStage("measuring " + r.label);
+        const auto measureStart = Clock::now();
+        const AccuracyReport report =
+            meter.measure(scene, point.settings, camera, options.width, options.height, progress);
+        if (report.cancelled) return std::nullopt;
+        if (!report.ok) return "point " + r.label + ": " + report.error;
+        r.measureMs = msSince(measureStart);
+        if (!report.cost.referenceReused) {
+            result.referenceMs += report.cost.gbufferMs + report.cost.traceMs + report.cost.bvhBuildMs;
+            ++result.references;
+        }
+        r.referenceReused = report.cost.referenceReused;
+        r.accuracy = report;
+        r.kTexels = report.kTexels;
+        r.coarseMap = !report.coarseMapWarning.empty();
+        for (const std::string& w : report.warnings) r.warnings.push_back(w);
+        if (index < plan.points.size())
+            measured[index] = r;
+        else
+            result.preset = r;
+        if (onPoint) onPoint(r, done + 1, total);
+        return "";
+    };
+
+    // Run order: grouped by the values of the axes the reference depends on (light and camera), plan order within.
+    std::vector<std::size_t> order(plan.points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto referenceValues = [&](std::size_t i) {
+        std::vector<std::string> values;
+        for (std::size_t a = 0; a < plan.axes.size(); ++a) {
+            const std::vector<std::string>& keys = plan.axes[a].keys;
+            if (std::any_of(keys.begin(), keys.end(), [](const std::string& key) {
+                    return key.rfind("light.", 0) == 0 || key.rfind("camera.", 0) == 0;
+                }))
+                values.push_back(plan.points[i].values[a]);
+        }
+        return values;
+    };
+    std::vector<std::vector<std::string>> firstSeen;  // reference values in order of first appearance
+    std::vector<std::size_t> group(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const std::vector<std::string> values = referenceValues(i);
+        auto at = std::find(firstSeen.begin(), firstSeen.end(), values);
+        if (at == firstSeen.end()) at = firstSeen.insert(firstSeen.end(), values);
+        group[i] = std::size_t(at - firstSeen.begin());
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return group[a] < group[b]; });
+    for (std::size_t n = 0; n < order.size(); ++n) {
+        const std::size_t i = order[n];
+        const std::optional<std::string> outcome = runPoint(plan.points[i], i, n);
+        if (!outcome || (progress && progress->cancel)) {
+            result.cancelled = true;
+            return fail("cancelled");
+        }
+        if (!outcome->empty()) return fail(*outcome);
+    }
+    if (presetExtra) {
+        SweepPoint preset;
+        preset.values = plan.baseValues;
+        preset.settings = base;
+        const std::optional<std::string> outcome = runPoint(preset, plan.points.size(), plan.points.size());
+        if (!outcome) {
+            result.cancelled = true;
+            return fail("cancelled");
+        }
+        if (!outcome->empty()) return fail(*outcome);
+    }
+
+    for (std::optional<SweepPointResult>& p : measured) result.points.push_back(std::move(*p));
+    markParetoFront(result);
+    result.wallMs = msSince(start);
+    if (progress) {
+        progress->fraction = 1.0f;
+        progress->setStage("done");
+    }
+    result.ok = true;
+    return result;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,91 @@
+#pragma once
+// The cost-vs-accuracy sweep: for every point of a plan, the time of the shadow pass and the main pass (median of N
+// frames, shadow pass forced: the timing loop of `bench`), the map's memory, the error numbers of metrics version 2
+// against one exact reference (AccuracyMeter caches it: it depends only on scene, light, camera and view size), and
+// the shadow pass as a multiple of a bare depth-only draw of the same triangles into a map of the same size and
+// format. Then the Pareto front of cost (shadow + main ms) against wrong pixels. Knows no window, UI or CLI; needs a
+// current GL 4.5 context on the calling thread.
+#include "accuracy/accuracy_meter.h"
+#include "sweep/bare_depth_draw.h"
+#include "sweep/sweep_plan.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct SweepPointResult {
+    std::size_t index = 0;            // in the plan's points; the preset's own extra point has plan.points.size()
+    std::vector<std::string> values;  // one per axis
+    std::string label;
+    Settings settings;
+    std::vector<std::string> warnings;
+
+    double shadowMs = 0.0;            // median shadow pass
+    double mainMs = 0.0;              // median main pass
+    double costMs = 0.0;              // shadow + main: the cost the front uses
+    double shadowMinMs = 0.0;         // the fastest timed frame of each pass (robust to a loaded CPU)
+    double mainMinMs = 0.0;
+    double wallMsPerFrame = 0.0;
+    int resolution = 0;
+    DepthFormat format = DepthFormat::D32F;
+    std::size_t mapBytes = 0;
+    double bareDrawMs = 0.0;          // the bare draw at this map size and format
+    double shadowOverBare = 0.0;      // shadowMs / bareDrawMs
+
+    AccuracyNumbers accuracy;         // metrics version 2 (wrongPercent is the error the front uses)
+    double kTexels = 0.0;
+    bool coarseMap = false;           // acne and leak cannot judge this map (read wrong pixels and mean error)
+    bool referenceReused = false;     // the reference came from the sweep's cache
+    double measureMs = 0.0;
+    bool onFront = false;
+};
+
+struct SweepResult {
+    bool ok = false;
+    bool cancelled = false;
+    std::string error;
+    std::vector<SweepAxis> axes;
+    std::vector<SweepPointResult> points;         // in plan order (run grouped by light and camera; see runSweep)
+    std::optional<SweepPointResult> preset;       // the base settings when they are not one of the points
+    std::size_t presetPoint = 0;                  // index into points of the preset, or points.size() (see .preset)
+    std::vector<BareDrawTiming> bareDraws;        // one per map size, format (and light), in the order met
+    std::vector<std::size_t> front;               // indices into points, in order of cost
+    std::string timingSource;
+    std::string glRenderer;
+    std::size_t triangles = 0;
+    int width = 0, height = 0, frames = 0;
+    double referenceMs = 0.0;  // the reference's work (G-buffer, BVH, shadow rays), summed over its computations
+    int references = 0;        // how often it was computed: once, unless an axis moves the light or the camera
+    double wallMs = 0.0;       // the whole sweep
+    bool softwareRasterizer() const { return timingSource.rfind("CPU", 0) == 0; }
+};
+
+struct SweepRunOptions {
+    int width = 1280;
+    int height = 720;
+    int frames = 10;
+    bool measurePreset = true;  // also time and measure the base settings when they are not a point (the marker)
+    // The view to time and measure (the editor's orbit camera); unset: each point's camera settings (auto-framed
+    // unless they say otherwise). A point whose camera.* keys differ from the base's always uses its own.
+    std::optional<Camera> camera;
+};
+
+// Called after each point (and the preset) with the point and how many of the total are done.
+using SweepPointCallback = std::function<void(const SweepPointResult& point, std::size_t done, std::size_t total)>;
+
+// Runs the plan (which must have no error). Points that share the reference (the same light.* and camera.* values)
+// run one after another, so an axis over the light recomputes the reference once per light, not once per point. Every point's map size is checked against GL_MAX_TEXTURE_SIZE before any
+// work. `progress` (optional) gets the fraction and stage and carries a cancel request.
+SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
+                     const SweepPointCallback& onPoint = {}, AccuracyProgress* progress = nullptr);
+
+// Sets result.front and each point's onFront from the points so far (a partial sweep's chart draws it live).
+void markParetoFront(SweepResult& result);
+
+// What the cost of going from one front point to the next buys: "+0.8 ms: wrong pixels 2.1 % -> 0.9 %".
+std::string frontStepText(const SweepPointResult& from, const SweepPointResult& to);
+
+}  // namespace shadowlab

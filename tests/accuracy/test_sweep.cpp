@@ -1,0 +1,222 @@
+// The cost-vs-accuracy sweep (issue 11): axes are preset keys checked by the key table before any work; a two-axis
+// sweep of a built-in scene shows what a user expects — error falls as the map grows, cost rises with the kernel —
+// against one reference computed once; a bare draw stands beside every map size; the front holds exactly the points
+// nothing beats; the chart is drawn and a point is found under its own marker.
+#include "gl_fixture.h"
+#include "settings/settings_fields.h"
+#include "sweep/pareto_front.h"
+#include "sweep/sweep_output.h"
+#include "sweep/sweep_runner.h"
+
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace shadowlab::test {
+namespace {
+
+class SweepTest : public GlTest {};
+
+bool dominates(const SweepPointResult& a, const SweepPointResult& b) {
+    return a.costMs <= b.costMs && a.accuracy.wrongPercent <= b.accuracy.wrongPercent &&
+           (a.costMs < b.costMs || a.accuracy.wrongPercent < b.accuracy.wrongPercent);
+}
+
+TEST(SweepPlan, IsTheCartesianProductOfValuesTheKeyTableAccepts) {
+    const Settings base = loadShippedPreset("default");
+    const SweepPlan plan =
+        planSweep(base, {"shadow.resolution=512, 1024,2048", "filter.kind=point,pcf", "light.direction=[0,-1,0.2],[1,-1,0]"});
+    ASSERT_EQ(plan.error, "");
+    ASSERT_EQ(plan.points.size(), 12u);
+    EXPECT_EQ(plan.axes[2].values.size(), 2u) << "commas inside [...] belong to the vector";
+    EXPECT_EQ(plan.points[0].label(), "512 point [0.0,-1.0,0.2]");
+    EXPECT_EQ(plan.points[11].settings.lights[0].shadow.resolution, 2048);
+    EXPECT_EQ(plan.points[11].settings.filter.kind, FilterKind::Pcf);
+    EXPECT_EQ(plan.points[1].values[2], "[1.0,-1.0,0.0]") << "the last axis runs fastest, values as the key table writes them";
+    // The default preset is 2048 pcf: where it sits on axes that include its own values.
+    const SweepPlan own = planSweep(base, {"shadow.resolution=1024,2048", "filter.kind=point,pcf"});
+    ASSERT_EQ(own.error, "");
+    EXPECT_EQ(own.points[own.basePoint].label(), "2048 pcf");
+}
+
+TEST(SweepPlan, AJointAxisMovesSeveralKeysTogether) {
+    const Settings base = loadShippedPreset("default");
+    const SweepPlan plan =
+        planSweep(base, {"filter.kind,filter.kernel=point:1,hardware2x2:1,pcf:3,pcf:5,pcf:9,poisson:1", "shadow.depthFormat=d16,d32f"});
+    ASSERT_EQ(plan.error, "");
+    ASSERT_EQ(plan.points.size(), 12u);
+    EXPECT_EQ(plan.axes[0].keys, (std::vector<std::string>{"filter.kind", "filter.kernel"}));
+    EXPECT_EQ(plan.points[4].label(), "pcf:3 d16");
+    EXPECT_EQ(plan.points[4].settings.filter.kind, FilterKind::Pcf);
+    EXPECT_EQ(plan.points[4].settings.filter.kernel, 3);
+    EXPECT_EQ(plan.points[8].settings.filter.kernel, 9);
+    EXPECT_EQ(plan.baseValues[0], "pcf:3") << "the default preset's place on the joint axis";
+    EXPECT_NE(planSweep(base, {"filter.kind,filter.kernel=pcf"}).error.find("needs 2 parts"), std::string::npos);
+    EXPECT_NE(planSweep(base, {"filter.kind,filter.kernel=pcf:4"}).error.find("filter.kernel"), std::string::npos);
+    EXPECT_NE(planSweep(base, {"filter.kind,filter.kernel=pcf:3", "filter.kernel=1"}).error.find("already an axis"),
+              std::string::npos);
+}
+
+TEST(SweepPlan, RefusesABadKeyOrValueNamingTheKey) {
+    const Settings base = loadShippedPreset("default");
+    const SweepPlan typo = planSweep(base, {"shadow.resolutoin=512,1024"});
+    EXPECT_NE(typo.error.find("shadow.resolutoin"), std::string::npos) << typo.error;
+    EXPECT_NE(typo.error.find("did you mean shadow.resolution"), std::string::npos) << typo.error;
+    EXPECT_TRUE(typo.points.empty());
+    const SweepPlan small = planSweep(base, {"shadow.resolution=512,8"});
+    EXPECT_NE(small.error.find("shadow.resolution"), std::string::npos) << small.error;
+    EXPECT_NE(small.error.find("8"), std::string::npos) << small.error;
+    const SweepPlan kind = planSweep(base, {"filter.kind=point,gaussian"});
+    EXPECT_NE(kind.error.find("filter.kind"), std::string::npos) << kind.error;
+    EXPECT_NE(kind.error.find("gaussian"), std::string::npos) << kind.error;
+    EXPECT_NE(planSweep(base, {"filter.kernel=2"}).error.find("filter.kernel"), std::string::npos);
+    EXPECT_NE(planSweep(base, {"filter.kind=pcf", "filter.kind=point"}).error.find("already an axis"),
+              std::string::npos);
+    EXPECT_NE(planSweep(base, {"shadow.resolution=512,,1024"}).error.find("empty value"), std::string::npos);
+    EXPECT_NE(planSweep(base, {"shadow.resolution"}).error.find("KEY=V1,V2"), std::string::npos);
+    EXPECT_NE(planSweep(base, {}).error, "");
+}
+
+TEST(ParetoFront, KeepsOnlyPointsNothingBeatsOnBothInOrderOfCost) {
+    //                 0    1    2    3    4    5
+    const std::vector<double> cost{5.0, 1.0, 3.0, 4.0, 2.0, 3.0};
+    const std::vector<double> error{1.0, 9.0, 4.0, 4.0, 5.0, 4.0};
+    // 3 is beaten by 2 (cheaper, as good); 2 and 5 are equal, both kept.
+    EXPECT_EQ(paretoFront(cost, error), (std::vector<std::size_t>{1, 4, 2, 5, 0}));
+    EXPECT_TRUE(paretoFront({}, {}).empty());
+}
+
+TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings base = loadShippedPreset("default");
+    ASSERT_EQ(applySettingOverride(base, "filter.kind=pcf"), "");
+    const SweepPlan plan = planSweep(base, {"shadow.resolution=32,128,1024", "filter.kernel=1,9"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 320;
+    options.height = 180;
+    options.frames = 7;
+    std::size_t calls = 0;
+    const SweepResult r = runSweep(scene, base, plan, options,
+                                   [&](const SweepPointResult&, std::size_t done, std::size_t total) {
+                                       ++calls;
+                                       EXPECT_EQ(done, calls);
+                                       EXPECT_EQ(total, 7u) << "six points and the preset (2048, kernel 3)";
+                                   });
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.points.size(), 6u);
+    ASSERT_TRUE(r.preset.has_value());
+    EXPECT_EQ(r.preset->resolution, 2048);
+    auto at = [&](int resolution, int kernel) -> const SweepPointResult& {
+        for (const SweepPointResult& p : r.points)
+            if (p.settings.lights[0].shadow.resolution == resolution && p.settings.filter.kernel == kernel) return p;
+        ADD_FAILURE() << "no point " << resolution << " " << kernel;
+        return r.points[0];
+    };
+    for (int kernel : {1, 9}) {
+        // A 32² map loses the small shadows; 1024² keeps nearly all of them.
+        EXPECT_GT(at(32, kernel).accuracy.wrongPercent, at(128, kernel).accuracy.wrongPercent) << "kernel " << kernel;
+        EXPECT_GT(at(128, kernel).accuracy.wrongPercent, at(1024, kernel).accuracy.wrongPercent) << "kernel " << kernel;
+        EXPECT_GT(at(32, kernel).accuracy.wrongPercent, 3.0 * at(1024, kernel).accuracy.wrongPercent);
+    }
+    // 81 taps against 1. On llvmpipe these are CPU times, and other processes on the machine only ever add time:
+    // the fastest of 7 frames is the least disturbed one (the median is what the report shows).
+    for (int resolution : {32, 128, 1024}) {
+        EXPECT_GT(at(resolution, 9).mainMinMs, 1.5 * at(resolution, 1).mainMinMs) << resolution;
+        EXPECT_LE(at(resolution, 1).mainMinMs, at(resolution, 1).mainMs);
+    }
+    // The reference is computed once: only the first point traces rays.
+    EXPECT_FALSE(r.points[0].referenceReused);
+    for (std::size_t i = 1; i < r.points.size(); ++i) EXPECT_TRUE(r.points[i].referenceReused) << r.points[i].label;
+    // A bare draw per map size and format, timed, and each point set against its own size's.
+    std::set<int> sizes;
+    for (const BareDrawTiming& b : r.bareDraws) {
+        EXPECT_TRUE(b.ok);
+        EXPECT_GT(b.ms, 0.0);
+        EXPECT_TRUE(sizes.insert(b.resolution).second) << "one bare draw per size";
+    }
+    EXPECT_EQ(sizes, (std::set<int>{32, 128, 1024, 2048}));
+    for (const SweepPointResult& p : r.points) {
+        const auto bare = std::find_if(r.bareDraws.begin(), r.bareDraws.end(),
+                                       [&](const BareDrawTiming& b) { return b.resolution == p.resolution; });
+        ASSERT_NE(bare, r.bareDraws.end());
+        EXPECT_EQ(p.bareDrawMs, bare->ms);
+        EXPECT_NEAR(p.shadowOverBare, p.shadowMs / bare->ms, 1e-9);
+        EXPECT_EQ(p.mapBytes, std::size_t(p.resolution) * std::size_t(p.resolution) * 4u);
+    }
+    // The front: exactly the points nothing beats, in order of cost.
+    ASSERT_FALSE(r.front.empty());
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+        bool beaten = false;
+        for (const SweepPointResult& other : r.points) beaten = beaten || dominates(other, r.points[i]);
+        EXPECT_EQ(r.points[i].onFront, !beaten) << r.points[i].label;
+    }
+    for (std::size_t k = 1; k < r.front.size(); ++k)
+        EXPECT_LE(r.points[r.front[k - 1]].costMs, r.points[r.front[k]].costMs);
+
+    // The files: every point in the JSON and CSV, the chart drawn, a point found under its marker.
+    const nlohmann::json json = sweepToJson(r);
+    ASSERT_EQ(json["points"].size(), 6u);
+    std::size_t flagged = 0;
+    for (const nlohmann::json& p : json["points"]) flagged += p["paretoFront"].get<bool>() ? 1 : 0;
+    EXPECT_EQ(flagged, r.front.size());
+    EXPECT_EQ(json["points"][0]["settings"]["shadow"]["resolution"], 32);
+    EXPECT_TRUE(json.contains("preset"));
+    std::istringstream csv(sweepToCsv(r));
+    std::string line;
+    std::size_t lines = 0;
+    while (std::getline(csv, line)) ++lines;
+    EXPECT_EQ(lines, 1u + 6u + 1u) << "header, points, preset";
+    const LinePlot chart = sweepChart(r);
+    const PlotImage image = drawLinePlot(chart, 900, 500);
+    const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_TEST_OUTPUT) / "accuracy";
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(writePng((dir / "sweep-chart.png").string(), image.width, image.height, 4, image.rgba.data(), false), "");
+    const PlotFrame frame = plotFrame(chart, 900, 500);
+    const SweepPointResult& last = r.points.back();
+    EXPECT_EQ(sweepPointAt(r, 900, 500, frame.px(last.costMs) + 1.0, frame.py(last.accuracy.wrongPercent), 6.0),
+              r.points.size() - 1);
+    EXPECT_EQ(sweepPointAt(r, 900, 500, 1.0, 1.0, 6.0), r.points.size()) << "nothing in the corner";
+}
+
+TEST_F(SweepTest, ALightAxisComputesTheReferenceOncePerLightAndDrawsTheBareDrawFromEachLight) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    // The light axis runs fastest in the plan; the sweep still computes each light's reference only once.
+    const SweepPlan plan = planSweep(base, {"filter.kind=point,pcf,poisson", "light.type=directional,spot"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 96;
+    options.height = 54;
+    options.frames = 1;
+    const SweepResult r = runSweep(scene, base, plan, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.references, 2);
+    ASSERT_EQ(r.points.size(), 6u);
+    for (std::size_t i = 0; i < r.points.size(); ++i)
+        EXPECT_EQ(r.points[i].label, plan.points[i].label()) << "results come back in plan order";
+    EXPECT_EQ(r.bareDraws.size(), 2u) << "one 2048² D32F draw per light";
+    EXPECT_NE(r.bareDraws[0].lightViewProjection, r.bareDraws[1].lightViewProjection);
+}
+
+TEST_F(SweepTest, AMapAboveTheGpuLimitIsRefusedBeforeAnyWork) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    const SweepPlan plan = planSweep(base, {"shadow.resolution=256,32768"});
+    if (!plan.error.empty()) GTEST_SKIP() << "the key table already refuses 32768: " << plan.error;
+    std::size_t calls = 0;
+    SweepRunOptions options;
+    options.width = 64;
+    options.height = 36;
+    options.frames = 1;
+    const SweepResult r = runSweep(scene, base, plan, options, [&](const SweepPointResult&, std::size_t, std::size_t) {
+        ++calls;
+    });
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("shadow.resolution"), std::string::npos) << r.error;
+    EXPECT_NE(r.error.find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << r.error;
+    EXPECT_EQ(calls, 0u) << "no point was run";
+}
+
+}  // namespace
+}  // namespace shadowlab::test
