@@ -1,5 +1,6 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
+#include "cli/bench_lights.h"
 #include "cli/export_command.h"
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
@@ -32,6 +33,9 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--out", render.out, "the camera view as PNG")->capture_default_str();
     renderCmd->add_option("--shadow-map", render.shadowMapExr, "the raw shadow map as a 1-channel float EXR");
     renderCmd->add_option("--shadow-map-png", render.shadowMapPng, "a viewable PNG of the shadow map");
+    renderCmd->add_option("--light", render.light,
+                          "whose map --shadow-map / --shadow-map-png write (a point light: its six faces as a cross)")
+        ->capture_default_str();
     renderCmd->add_option("--view", render.view, "lit | shadow | light-depth")
         ->check(CLI::IsMember({"lit", "shadow", "light-depth"}));
 
@@ -47,6 +51,9 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
     benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
+    benchCmd->add_flag("--lights", bench.lights,
+                       "many lights: each view's time, views a static frame and a moved light render, the main pass "
+                       "with 1, 2, 4, 8 ... lights shadowed and not");
 
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
@@ -71,6 +78,9 @@ int main(int argc, char** argv) {
                            "measure only light N (default: every shadow-casting light, then the whole picture; the "
                            "overlays show the union, each pixel coloured by its worst light)")
         ->check(CLI::NonNegativeNumber);
+    measureCmd->add_option("--remeasure-bench", measure.remeasureBench,
+                           "then time N live re-measures after a bias change (GPU count) against the CPU path")
+        ->check(CLI::Range(1, 10000));
 
     cli::TuneOptions tune;
     CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");
@@ -148,7 +158,7 @@ int main(int argc, char** argv) {
     }
 
     if (*renderCmd) return cli::runRender(render);
-    if (*benchCmd) return cli::runBench(bench);
+    if (*benchCmd) return bench.lights ? cli::runBenchLights(bench) : cli::runBench(bench);
     if (*editCmd) return editor_window::runEdit(edit);
     if (*measureCmd) return cli::runMeasure(measure);
     if (*tuneCmd) return cli::runTune(tune);

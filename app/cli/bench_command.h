@@ -16,6 +16,7 @@ struct BenchOptions {
     std::vector<int> resolutions = {1024, 2048, 4096, 8192};
     std::vector<std::string> filters = {"point", "hardware2x2", "pcf3", "pcf5", "pcf9", "poisson"};
     std::string json;  // optional: the table as JSON
+    bool lights = false;  // many lights instead: per-view times, what the planner skips, main pass per light count
 };
 
 int runBench(const BenchOptions& options);

@@ -5,6 +5,7 @@
 #include "accuracy/light_isolation.h"
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
+#include "cli/remeasure_bench.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
@@ -71,6 +72,10 @@ int runMeasure(const MeasureOptions& options) {
                 return fail(error);
             std::cout << "wrote " << path << " (" << which << ": " << legendText(kind) << "; the rest dimmed)\n";
         }
+        if (options.remeasureBench > 0 &&
+            !runRemeasureBench(std::cout, meter, scene, *settings, camera, options.width, options.height,
+                               options.remeasureBench))
+            return 1;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

@@ -18,6 +18,7 @@ struct MeasureOptions {
     std::string overlay;       // optional PNG: red acne, blue leak, yellow true boundary
     std::string causeOverlay;  // optional PNG: every mismatched pixel in its cause's colour
     int light = -1;            // --light N: only light N (index into the effective lights); -1 = every casting one
+    int remeasureBench = 0;    // > 0: time that many live re-measures after a bias change (remeasure_bench.h)
 };
 
 // Exit code 0 unless it failed (bad input, no GL, a file that cannot be written).

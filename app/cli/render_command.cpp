@@ -12,6 +12,7 @@
 #include "settings/settings_fields.h"
 #include "shadow/shadow_map_files.h"
 
+#include <array>
 #include <iostream>
 
 namespace shadowlab::cli {
@@ -21,6 +22,11 @@ int runRender(const RenderOptions& options) {
     if (!options.view.empty()) overrides.push_back("view=" + options.view);
     std::optional<Settings> settings = settingsFromCli(options.preset, overrides, options.scene);
     if (!settings) return 2;
+    // Checked against the settings' lights before any work; with useSceneLights the scene decides (after loading).
+    if (options.light < 0 || (!settings->useSceneLights && std::size_t(options.light) >= settings->lights.size()))
+        return fail("--light " + std::to_string(options.light) + ": there is no light " +
+                    std::to_string(options.light) + " (the settings have " + std::to_string(settings->lights.size()) +
+                    " light" + (settings->lights.size() == 1 ? "" : "s") + ")");
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.shadowMapExr, "--shadow-map"},
                                        std::pair{options.shadowMapPng, "--shadow-map-png"}})
@@ -60,11 +66,26 @@ int runRender(const RenderOptions& options) {
         std::cout << "wrote " << options.out << " (" << target.width() << "x" << target.height() << ")\n";
 
         if (!options.shadowMapExr.empty() || !options.shadowMapPng.empty()) {
-            const ShadowMap& map = renderer.shadowMap();
-            const ShadowMapFilesResult files = writeShadowMapFiles(map, options.shadowMapExr, options.shadowMapPng);
+            // The selected light's map; a point light's six faces as an unfolded cross.
+            const std::size_t light = std::size_t(options.light);
+            const ShadowMap* map = renderer.viewMap(light, -1);
+            std::array<const ShadowMap*, 6> faces{};
+            for (int f = 0; f < 6; ++f) faces[std::size_t(f)] = renderer.viewMap(light, f);
+            const bool cube = faces[0] != nullptr;
+            if (!map && !cube)
+                return fail("--light " + std::to_string(options.light) + ": light " + std::to_string(options.light) +
+                            " has no shadow map (it is off or casts no shadow)");
+            const ShadowMapFilesResult files =
+                cube ? writeCubeShadowMapFiles(faces, options.shadowMapExr, options.shadowMapPng)
+                     : writeShadowMapFiles(*map, options.shadowMapExr, options.shadowMapPng);
             if (!files.ok()) return fail(files.error);
+            const int size = cube ? faces[0]->resolution() : map->resolution();
+            const std::string shape = cube ? "a cross of six " + std::to_string(size) + "² faces (+Y above; -X +Z +X -Z; "
+                                             "-Y below)"
+                                           : std::to_string(size) + "²";
             if (!options.shadowMapExr.empty())
-                std::cout << "wrote " << options.shadowMapExr << " (" << map.resolution() << "² float depth)\n";
+                std::cout << "wrote " << options.shadowMapExr << " (light " << light << ", " << shape
+                          << ", float depth)\n";
             if (!options.shadowMapPng.empty())
                 std::cout << "wrote " << options.shadowMapPng << " (depth " << files.pngRange.min << " .. "
                           << files.pngRange.max << " stretched to black .. light grey; white = no caster)\n";

@@ -14,6 +14,7 @@ struct RenderOptions {
     std::string out = "view.png";
     std::string shadowMapExr;
     std::string shadowMapPng;
+    int light = 0;  // whose map --shadow-map / --shadow-map-png write
     std::string view;                    // lit | shadow | light-depth; empty = the preset's
 };
 

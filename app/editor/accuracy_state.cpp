@@ -18,6 +18,10 @@ Settings withoutView(Settings s) {
 
 }  // namespace
 
+bool sameReferenceView(const AccuracyViewKey& a, const AccuracyViewKey& b) {
+    return a.scene == b.scene && a.width == b.width && a.height == b.height && sameCamera(a.camera, b.camera);
+}
+
 bool AccuracyViewKey::operator==(const AccuracyViewKey& other) const {
     return scene == other.scene && width == other.width && height == other.height &&
            sameCamera(camera, other.camera) && withoutView(settings) == withoutView(other.settings);

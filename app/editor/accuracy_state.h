@@ -26,11 +26,17 @@ struct AccuracyViewKey {
     bool operator==(const AccuracyViewKey& other) const;
 };
 
+// The reference of `a` (scene, camera, view size) serves `b`: a live count can re-measure b without new rays, unless
+// the light moved (the meter says so).
+bool sameReferenceView(const AccuracyViewKey& a, const AccuracyViewKey& b);
+
 // "" when `measured` still describes `now`; otherwise what changed, e.g. "shadow.depthBias, filter.kind changed".
 std::string staleReason(const AccuracyViewKey& measured, const AccuracyViewKey& now);
 
 struct AccuracyState {
-    bool autoMeasure = false;   // measure after edits, once the view has been still for kAutoDelaySeconds
+    // Auto: after every edit a live count on the GPU (while a slider moves, every frame the previous count has
+    // finished), and a full measure (causes, overlay) once the view has been still for kAutoDelaySeconds.
+    bool autoMeasure = false;
     bool showOverlay = false;   // the viewport shows the overlay (an editor view mode, never saved in presets)
     OverlayKind overlayKind = OverlayKind::Error;  // coloured by error (acne / leak) or by cause
     static constexpr double kAutoDelaySeconds = 0.5;
@@ -49,6 +55,12 @@ struct AccuracyState {
     std::string stale;           // "" while the report matches the current view and settings
     std::string error;           // why the newest job failed ("cancelled", invalid settings, ...)
     long measurements = 0;       // finished jobs that produced a report (measures and searches)
+    std::optional<AccuracyViewKey> fullKey;  // what the newest full measure or search described
+
+    // Live accuracy (report->live while its numbers are the newest): counted on the GPU against the cached reference.
+    bool liveRunning = false;
+    long liveMeasurements = 0;   // live counts adopted
+    bool liveBlocked = false;    // no reference for this light: no live counts until the next full measure
 
     // Suggest bias.
     std::vector<TuneStep> steps;  // the search's path, live while it runs

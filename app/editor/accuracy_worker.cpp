@@ -126,7 +126,9 @@ AccuracyJobResult AccuracyWorker::run(const AccuracyJob& job, std::uint64_t id) 
     }
 
     try {
-        if (job.kind == AccuracyJobKind::Measure) {
+        if (job.kind == AccuracyJobKind::Live) {
+            result.report = gl_->meter.remeasure(*job.scene, job.settings, job.camera, job.width, job.height);
+        } else if (job.kind == AccuracyJobKind::Measure) {
             progress_.setStage("measuring");
             result.report = gl_->meter.measure(*job.scene, job.settings, job.camera, job.width, job.height, &progress_);
         } else {

@@ -21,7 +21,9 @@
 
 namespace shadowlab::editor {
 
-enum class AccuracyJobKind { Measure, SuggestBias };
+// Live: the numbers alone, counted on the GPU against the reference an earlier Measure cached (AccuracyMeter::
+// remeasure): one tool frame, for Auto while a slider moves.
+enum class AccuracyJobKind { Measure, SuggestBias, Live };
 
 struct AccuracyJob {
     AccuracyJobKind kind = AccuracyJobKind::Measure;

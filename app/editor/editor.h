@@ -103,6 +103,8 @@ private:
     void startAccuracyJob(AccuracyJobKind kind);
     void pollAccuracy();
     void adoptAccuracyResult(AccuracyJobResult result);
+    void startLiveJob(const AccuracyViewKey& key);      // Auto's live count on the worker
+    void adoptLiveResult(AccuracyJobResult result);
     void uploadAccuracyOverlay();
     void probeViewportInput(ImVec2 imagePos);  // a click (no drag) or P held over the view asks for a probe
     void drawProbeMarker(ImVec2 imagePos);     // a ring around the probed pixel
@@ -174,6 +176,8 @@ private:
     double lastAccuracyChange_ = 0.0;                     // when the view or settings last changed
     std::optional<AccuracyViewKey> autoMeasured_;         // the view Auto last measured (never twice)
     bool autoDue_ = false;                                // Auto will measure this view once it is still
+    std::optional<AccuracyViewKey> liveJobKey_;           // what the running live count measures
+    std::optional<AccuracyJobKind> queuedJob_;            // asked for while a live count held the worker
 };
 
 // Reads the bound framebuffer (width x height, GL rows) and writes it as PNG; "" or why it failed.

@@ -1,6 +1,7 @@
 // The editor's side of accuracy measuring: starting jobs on the worker, taking their results (a bias search's
 // result goes into the settings through the key table), knowing when the numbers are stale, measuring automatically
-// once the view has been still, and uploading the overlay picture once per report.
+// (live counts on the GPU after every edit, a full measure once the view has been still), and uploading the overlay
+// picture once per full report.
 #include "editor/editor.h"
 #include "gl/gl.h"
 
@@ -32,6 +33,10 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
         state_.say("accuracy: nothing to measure yet (no scene or no viewport)", true);
         return;
     }
+    if (a.liveRunning) {
+        queuedJob_ = kind;  // the worker is busy for a frame or so: start right after
+        return;
+    }
     AccuracyJob job;
     job.kind = kind;
     job.scene = state_.scene;  // shared: a scene switch meanwhile cannot free what the worker reads
@@ -56,6 +61,38 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
     }
 }
 
+void Editor::startLiveJob(const AccuracyViewKey& key) {
+    AccuracyJob job;
+    job.kind = AccuracyJobKind::Live;
+    job.scene = state_.scene;
+    job.settings = key.settings;
+    job.camera = key.camera;
+    job.width = key.width;
+    job.height = key.height;
+    if (accuracyWorker_->start(std::move(job)) == 0) return;
+    liveJobKey_ = key;
+    state_.accuracy.liveRunning = true;
+}
+
+void Editor::adoptLiveResult(AccuracyJobResult result) {
+    AccuracyState& a = state_.accuracy;
+    a.liveRunning = false;
+    std::optional<AccuracyViewKey> key = std::move(liveJobKey_);
+    liveJobKey_.reset();
+    if (!result.report.ok) {
+        // No reference for this light (or another refusal): wait for the full measure once the view is still.
+        a.liveBlocked = true;
+        if (!result.report.needsReference) state_.say("accuracy (live): " + result.report.error, true);
+        return;
+    }
+    result.report.cost.totalMs = result.seconds * 1e3;  // as the panel's cost tab shows it: the job's wall time
+    a.report = std::move(result.report);
+    a.reportKey = std::move(key);
+    a.reportSeconds = result.seconds;
+    a.reportFromSearch = false;
+    ++a.liveMeasurements;
+}
+
 void Editor::pollAccuracy() {
     AccuracyState& a = state_.accuracy;
     if (a.running) {
@@ -63,6 +100,13 @@ void Editor::pollAccuracy() {
         if (a.stage != "cancelling...") a.stage = accuracyWorker_->stage();
         if (a.runningTune) a.steps = accuracyWorker_->steps();
         if (std::optional<AccuracyJobResult> done = accuracyWorker_->poll()) adoptAccuracyResult(std::move(*done));
+    } else if (a.liveRunning) {
+        if (std::optional<AccuracyJobResult> done = accuracyWorker_->poll()) adoptLiveResult(std::move(*done));
+        if (!a.liveRunning && queuedJob_) {
+            const AccuracyJobKind kind = *queuedJob_;
+            queuedJob_.reset();
+            startAccuracyJob(kind);
+        }
     }
 
     const std::optional<AccuracyViewKey> now = accuracyKey();
@@ -73,11 +117,19 @@ void Editor::pollAccuracy() {
     }
     a.stale = a.reportKey ? staleReason(*a.reportKey, *now) : std::string();
 
-    // Auto: once the view has been still for a moment, measure it, unless this exact view was already measured
-    // (or attempted) — never twice for the same view and settings.
-    const bool measuredAlready = (a.reportKey && *a.reportKey == *now) || (autoMeasured_ && *autoMeasured_ == *now);
+    // Auto, live: after an edit, while the reference of the newest full measure serves this view, count on the GPU
+    // (every frame the previous count has finished, so while a slider moves too).
+    if (a.autoMeasure && !a.running && !a.liveRunning && !queuedJob_ && !a.liveBlocked && a.fullKey &&
+        sameReferenceView(*a.fullKey, *now) && !(a.reportKey && *a.reportKey == *now))
+        startLiveJob(*now);
+
+    // Auto, full: once the view has been still for a moment, measure it (causes, overlay), unless this exact view
+    // was already measured in full (or attempted) — never twice for the same view and settings.
+    const bool measuredAlready = (a.fullKey && *a.fullKey == *now) || (autoMeasured_ && *autoMeasured_ == *now);
     autoDue_ = a.autoMeasure && !measuredAlready;
-    if (autoDue_ && !a.running && state_.time - lastAccuracyChange_ >= AccuracyState::kAutoDelaySeconds) {
+    // A slider held still is still being dragged: the full measure waits for the release.
+    if (autoDue_ && !a.running && !a.liveRunning && !ImGui::IsAnyMouseDown() &&
+        state_.time - lastAccuracyChange_ >= AccuracyState::kAutoDelaySeconds) {
         autoMeasured_ = now;
         startAccuracyJob(AccuracyJobKind::Measure);
     }
@@ -142,7 +194,9 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
         state_.say(text);
     }
     a.report = std::move(result.report);
-    a.reportKey = std::move(key);
+    a.reportKey = key;
+    a.fullKey = std::move(key);
+    a.liveBlocked = false;  // a new reference: live counts may follow edits again
     a.reportSeconds = result.seconds;
     a.reportFromSearch = result.kind == AccuracyJobKind::SuggestBias;
     ++a.measurements;
@@ -172,7 +226,7 @@ void Editor::uploadAccuracyOverlay() {
 
 double Editor::idleWaitSeconds() const {
     // 20 redraws a second: progress shows, and the worker keeps the cores (flat out on llvmpipe starves it).
-    if (state_.accuracy.running || autoDue_) return 0.05;
+    if (state_.accuracy.running || state_.accuracy.liveRunning || autoDue_) return 0.05;
     // A sweep times passes: 4 redraws a second show its progress without disturbing its timings (on llvmpipe a
     // faster UI also starves the sweep's own GL context).
     if (state_.sweep.running) return 0.25;

@@ -89,7 +89,8 @@ void Editor::runProbe() {
     p.request.reset();
     if (!probe_) probe_ = std::make_unique<PixelProbe>();
     const AccuracyState& a = state_.accuracy;
-    const bool measuredHere = a.report && a.reportKey && *a.reportKey == *key;
+    // A live count carries no per-pixel data: only a full measure of this view can explain the pixel.
+    const bool measuredHere = a.report && !a.report->live && a.reportKey && *a.reportKey == *key;
     PixelProbeReport report;
     if (std::string error = probe_->capture(*renderer_, *key->scene, key->settings, key->camera, key->width,
                                             key->height);

@@ -247,6 +247,8 @@ void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
                          : "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
     else if (!a.stale.empty())
         note = "Stale: " + a.stale;
+    else if (a.report && a.report->live)
+        note = "live numbers in the Accuracy panel; this overlay is the last full measure (again once the view is still)";
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const float pad = 6.0f;
     if (!note.empty()) {

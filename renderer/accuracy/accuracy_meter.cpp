@@ -3,6 +3,7 @@
 #include "accuracy/accuracy_metrics.h"
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/gbuffer_pass.h"
+#include "accuracy/gpu_accuracy_counter.h"
 #include "accuracy/light_isolation.h"
 #include "accuracy/shadow_boundary.h"
 #include "frame/renderer.h"
@@ -58,6 +59,31 @@ std::string coarseMapWarning(const AccuracyReport& r) {
     return text;
 }
 
+// Per-pixel unit conversions for the edge error: a shadow-map texel's world size at p, and a main-view pixel's
+// world size at p's depth (both the CPU metrics and the GPU counter's upload use these).
+struct EdgeUnits {
+    const SurfaceSamples& samples;
+    const ShadowBoundary& boundary;  // knows the texel of every light kind (a point light's: its cube face's)
+    glm::dvec3 eye, forward;
+    double pixelPerDepth;
+
+    EdgeUnits(const SurfaceSamples& s, const ShadowBoundary& b, const Camera& camera, const glm::dvec3& origin,
+              int height)
+        : samples(s),
+          boundary(b),
+          eye(camera.position - origin),
+          forward(glm::normalize(camera.target - camera.position)),
+          pixelPerDepth(2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) / double(height)) {}
+    double worldPerTexel(std::size_t i) const { return boundary.texelWorldSizeAt(samples.point[i]); }
+    double worldPerPixel(std::size_t i) const { return glm::dot(samples.point[i] - eye, forward) * pixelPerDepth; }
+};
+
+std::string invalidSettings(const Settings& settings) {
+    std::string text;
+    for (const std::string& p : settings.validate()) text += (text.empty() ? "" : "; ") + p;
+    return text.empty() ? "" : "invalid settings: " + text;
+}
+
 }  // namespace
 
 double AccuracyReport::causePercentOfWrong(MismatchCause cause) const {
@@ -106,6 +132,10 @@ struct AccuracyMeter::Impl {
     std::optional<ShadowBoundary> boundary;
     double boundaryMs = 0.0;
 
+    // Live accuracy: the reference on the GPU, uploaded for the boundary it was built from.
+    std::unique_ptr<GpuAccuracyCounter> counter;
+    bool counterCurrent = false;
+
     void dropScene() {
         scene = nullptr;
         gpuScene.reset();
@@ -113,6 +143,37 @@ struct AccuracyMeter::Impl {
         surfaceKey.reset();
         visibilityLight.reset();
         boundaryKey.reset();
+        counterCurrent = false;
+    }
+
+    // The tool's own frame into toolTarget: the shadow factor S of every pixel, exactly as the main pass computes it.
+    FrameStats renderToolFrame(const Scene& drawn, const Settings& settings, const Camera& camera, int width,
+                               int height) {
+        Settings toolSettings = settings;
+        toolSettings.view = ViewMode::Shadow;
+        if (std::string error = toolTarget.resize(width, height, GL_RGBA32F); !error.empty()) {
+            FrameStats failed;
+            failed.ok = false;
+            failed.error = error;
+            return failed;
+        }
+        return renderer.render(drawn, toolSettings, camera, toolTarget);
+    }
+
+    // The true boundary in this light space's texels (rebuilt when the map's size or projection changed).
+    void ensureBoundary(const Scene& drawn, const FrameStats& stats, const ReferenceLight& light,
+                        AccuracyReport& report) {
+        const std::pair<glm::dmat4, int> key{stats.light.viewProjection(), stats.light.resolution};
+        if (boundaryKey && *boundaryKey == key) return;
+        const auto t = Clock::now();
+        BoundaryProbe probe;
+        probe.bvh = bvh.get();
+        probe.light = light;
+        probe.sceneRadius = drawn.bounds.empty ? 1.0 : double(drawn.bounds.radius());
+        boundary.emplace(samples, visibility.classes, stats.light, probe);
+        boundaryKey = key;
+        counterCurrent = false;
+        report.cost.boundaryMs = msSince(t);
     }
 };
 
@@ -139,11 +200,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         return fail("cancelled");
     };
     if (width < 1 || height < 1) return fail("view size must be at least 1x1");
-    if (std::vector<std::string> problems = given.validate(); !problems.empty()) {
-        std::string text;
-        for (const std::string& p : problems) text += (text.empty() ? "" : "; ") + p;
-        return fail("invalid settings: " + text);
-    }
+    if (std::string error = invalidSettings(given); !error.empty()) return fail(error);
     std::string isolationError;
     const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
     if (!isolated) return fail(isolationError);
@@ -152,10 +209,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
     setStage(progress, 0.0f, "rendering the tool's frame");
     auto t = Clock::now();
-    Settings toolSettings = settings;
-    toolSettings.view = ViewMode::Shadow;
-    if (std::string error = m.toolTarget.resize(width, height, GL_RGBA32F); !error.empty()) return fail(error);
-    FrameStats stats = m.renderer.render(scene, toolSettings, camera, m.toolTarget);
+    FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height);
     if (!stats.ok) return fail(stats.error);
     report.warnings = stats.warnings;
     const std::size_t count = std::size_t(width) * std::size_t(height);
@@ -233,18 +287,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     }
 
     // The true boundary in this light space's texels.
-    const std::pair<glm::dmat4, int> boundaryKey{stats.light.viewProjection(), stats.light.resolution};
-    if (!m.boundaryKey || *m.boundaryKey != boundaryKey) {
-        setStage(progress, 0.85f, "finding the true shadow boundary");
-        t = Clock::now();
-        BoundaryProbe probe;
-        probe.bvh = m.bvh.get();
-        probe.light = light;
-        probe.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
-        m.boundary.emplace(m.samples, m.visibility.classes, stats.light, probe);
-        m.boundaryKey = boundaryKey;
-        report.cost.boundaryMs = msSince(t);
-    }
+    setStage(progress, 0.85f, "finding the true shadow boundary");
+    m.ensureBoundary(scene, stats, light, report);
     report.cost.referenceReused = surfaceReused && visibilityReused;
     if (cancelled(progress)) return stop();
 
@@ -290,10 +334,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         }
     });
 
-    // Per-pixel unit conversions for the edge error: texel size at p, and a main-view pixel's size at p's depth.
-    const glm::dvec3 eye = camera.position - m.origin;
-    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
-    const double pixelPerDepth = 2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) / double(height);
+    const EdgeUnits units(m.samples, boundary, camera, m.origin, height);
     MetricsInput input;
     input.classes = &m.visibility.classes;
     input.shadowFactor = &shadowFactor;
@@ -301,8 +342,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     input.k = k;
     input.distance = distance;
     input.cause = [&](std::size_t i, double) { return causes[i]; };
-    input.worldPerTexel = [&](std::size_t i) { return boundary.texelWorldSizeAt(m.samples.point[i]); };
-    input.worldPerPixel = [&](std::size_t i) { return glm::dot(m.samples.point[i] - eye, forward) * pixelPerDepth; };
+    input.worldPerTexel = [&](std::size_t i) { return units.worldPerTexel(i); };
+    input.worldPerPixel = [&](std::size_t i) { return units.worldPerPixel(i); };
     const MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
     report.pixelOnBoundary.assign(count, 0);
@@ -328,6 +369,90 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");
+    report.ok = true;
+    return report;
+}
+
+AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& given, const Camera& camera,
+                                        int width, int height) {
+    Impl& m = *impl_;
+    const auto start = Clock::now();
+    AccuracyReport report;
+    report.live = true;
+    auto fail = [&](std::string error, bool needsReference = false) {
+        report.ok = false;
+        report.needsReference = needsReference;
+        report.error = std::move(error);
+        return report;
+    };
+    if (width < 1 || height < 1) return fail("view size must be at least 1x1");
+    if (std::string error = invalidSettings(given); !error.empty()) return fail(error);
+    std::string isolationError;
+    const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
+    if (!isolated) return fail(isolationError);
+    const Settings& settings = *isolated;
+    // The reference must describe this view: scene, camera and size here, the light after the frame says where.
+    const SurfaceKey surfaceKey{camera.position, camera.target, camera.fovYDeg, camera.nearPlane, camera.farPlane,
+                                width, height};
+    if (m.scene != &scene || !m.bvh || m.fingerprint != sceneFingerprint(scene) || !m.surfaceKey ||
+        !(*m.surfaceKey == surfaceKey))
+        return fail("no reference for this view (scene, camera or size changed): measure it first", true);
+
+    auto t = Clock::now();
+    const FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height);
+    if (!stats.ok) return fail(stats.error);
+    report.warnings = stats.warnings;
+    report.cost.toolFrameMs = msSince(t);
+    const ReferenceLight light = referenceLight(settings.lights[0], m.origin);
+    if (!m.visibilityLight || !(*m.visibilityLight == light))
+        return fail("no reference for this light (it moved): measure it first", true);
+    report.cost.bvhReused = report.cost.referenceReused = true;
+    report.cost.triangles = m.bvh->triangles();
+    report.cost.rays = m.visibility.rays;
+    m.ensureBoundary(scene, stats, light, report);
+
+    const double k = acceptanceRadiusTexels(settings.filter);
+    report.kTexels = k;
+    report.texelWorldSize = stats.light.texelWorldSize;
+    ShadowBoundary& boundary = *m.boundary;
+    if (!m.counter) m.counter = std::make_unique<GpuAccuracyCounter>();
+    if (!m.counterCurrent) {
+        t = Clock::now();
+        const EdgeUnits units(m.samples, boundary, camera, m.origin, height);
+        const std::size_t count = std::size_t(width) * std::size_t(height);
+        std::vector<float> worldPerTexel(count, 0.0f), screenPerTexel(count, 0.0f);
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!isScored(m.visibility.classes[i])) continue;
+            const double perTexel = units.worldPerTexel(i), perPixel = units.worldPerPixel(i);
+            worldPerTexel[i] = float(perTexel);
+            screenPerTexel[i] = perPixel > 0.0 ? float(perTexel / perPixel) : 0.0f;  // as computeMetrics
+        }
+        m.counter->upload(width, height, m.visibility.classes, boundary, k, worldPerTexel, screenPerTexel);
+        m.counterCurrent = true;
+        report.cost.uploadMs = msSince(t);
+    }
+
+    // Pixels mismatched for the first time at a distance the boundary has not probed yet: probe them on the CPU (as
+    // measure() would) and count again.
+    const double cap = double(stats.light.resolution);
+    t = Clock::now();
+    GpuAccuracyCounter::Result counted = m.counter->count(m.toolTarget.colorTexture(), k, cap, boundary.probes());
+    for (int round = 0; !counted.unresolved.empty() && round < 3; ++round) {
+        const auto probeStart = Clock::now();
+        const std::size_t probedBefore = boundary.probedPixels();
+        boundary.prepare(std::vector<std::size_t>(counted.unresolved.begin(), counted.unresolved.end()), k);
+        m.counter->update(counted.unresolved, boundary, k);
+        report.cost.probedPixels += boundary.probedPixels() - probedBefore;
+        report.cost.probeMs += msSince(probeStart);
+        counted = m.counter->count(m.toolTarget.colorTexture(), k, cap, boundary.probes());
+    }
+    if (!counted.unresolved.empty()) return fail("live accuracy: the boundary left pixels undecided");
+    static_cast<AccuracyNumbers&>(report) = counted.numbers;
+    report.cost.metricsMs = msSince(t) - report.cost.probeMs;
+    report.coarseMapWarning = coarseMapWarning(report);
+    report.width = width;
+    report.height = height;
+    report.cost.totalMs = msSince(start);
     report.ok = true;
     return report;
 }

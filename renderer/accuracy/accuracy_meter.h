@@ -88,7 +88,8 @@ struct AccuracyCost {
     double probeMs = 0.0;          // extra rays probing boundaries the camera cannot see
     std::size_t probedPixels = 0;
     double toolFrameMs = 0.0;      // the tool's own frame (shadow pass + shadow-factor pass + read-back)
-    double metricsMs = 0.0;        // metrics + overlay
+    double metricsMs = 0.0;        // metrics + overlay (live: the GPU count)
+    double uploadMs = 0.0;         // live: the reference uploaded to the GPU counter (once per reference and light space)
     double totalMs = 0.0;
 };
 
@@ -108,6 +109,10 @@ struct AccuracyNumbers {
 struct AccuracyReport : AccuracyNumbers {
     bool ok = false;
     bool cancelled = false;
+    // Counted on the GPU from the cached reference (AccuracyMeter::remeasure): numbers and counts only; no causes,
+    // overlays or per-pixel data (those come with measure()).
+    bool live = false;
+    bool needsReference = false;  // remeasure refused: no reference cached for this view (call measure first)
     std::string error;  // when !ok: why (invalid settings name the key; "cancelled")
     std::vector<std::string> warnings;  // the tool's frame was drawn, but something was refused (e.g. map size)
 
@@ -154,6 +159,12 @@ public:
     // throws for user input. The scene must stay alive and unchanged while cached (call sceneChanged() after edits).
     AccuracyReport measure(const Scene& scene, const Settings& settings, const Camera& camera, int width, int height,
                            AccuracyProgress* progress = nullptr);
+
+    // Live accuracy: the same numbers for a view whose reference measure() cached (same scene, light, camera and
+    // size; bias, filter, map size and format may differ), counted on the GPU (gpu_accuracy_counter.h) after one
+    // tool frame that is never read back. ok = false with needsReference when nothing is cached for this view.
+    AccuracyReport remeasure(const Scene& scene, const Settings& settings, const Camera& camera, int width,
+                             int height);
 
     // Drops every cache (BVH, reference) — call after editing the scene in place.
     void sceneChanged();

@@ -9,10 +9,14 @@ namespace shadowlab {
 
 double filterRadiusTexels(const FilterSettings& filter) { return filterTechnique(filter.kind).radiusTexels(filter); }
 
-double percentile(std::vector<double>& values, double p) {
+std::size_t nearestRankIndex(std::size_t n, int percent) {
+    const std::size_t rank = (std::size_t(std::clamp(percent, 0, 100)) * n + 99) / 100;
+    return rank > 0 ? rank - 1 : 0;
+}
+
+double percentile(std::vector<double>& values, int percent) {
     if (values.empty()) return 0.0;
-    const double rank = std::ceil(p / 100.0 * double(values.size()));
-    const std::size_t index = std::size_t(std::clamp(rank, 1.0, double(values.size()))) - 1;
+    const std::size_t index = nearestRankIndex(values.size(), percent);
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(index), values.end());
     return values[index];
 }
@@ -54,7 +58,7 @@ MetricsResult computeMetrics(const MetricsInput& in) {
         ++(lit ? c.lit : c.shadowed);
         const double error = std::abs(double(s) - (lit ? 1.0 : 0.0));
         errorSum += error;
-        const bool wrong = error >= 0.5;
+        const bool wrong = error >= kWrongError;
         c.wrong += wrong;
         if (!visiblyWrong(lit, s)) continue;
         ++c.mismatched;
@@ -83,15 +87,20 @@ MetricsResult computeMetrics(const MetricsInput& in) {
         ++c.causePixels[std::size_t(cause)];
         if (wrong) ++c.causeWrong[std::size_t(cause)];
     }
+    setRatios(r, errorSum, severitySum);
+    r.edgeErrorP95Texels = percentile(texels, kEdgeErrorPercentile);
+    r.edgeErrorP95World = percentile(world, kEdgeErrorPercentile);
+    r.edgeErrorP95ScreenPixels = percentile(screen, kEdgeErrorPercentile);
+    return r;
+}
+
+void setRatios(AccuracyNumbers& r, double errorSum, double severitySum) {
+    const AccuracyCounts& c = r.counts;
     r.acnePercent = c.lit ? 100.0 * double(c.acne) / double(c.lit) : 0.0;
     r.acneSeverity = c.acne ? severitySum / double(c.acne) : 0.0;
     r.leakPercent = c.shadowed ? 100.0 * double(c.leak) / double(c.shadowed) : 0.0;
     r.wrongPercent = c.measured ? 100.0 * double(c.wrong) / double(c.measured) : 0.0;
     r.meanError = c.measured ? errorSum / double(c.measured) : 0.0;
-    r.edgeErrorP95Texels = percentile(texels, 95.0);
-    r.edgeErrorP95World = percentile(world, 95.0);
-    r.edgeErrorP95ScreenPixels = percentile(screen, 95.0);
-    return r;
 }
 
 }  // namespace shadowlab

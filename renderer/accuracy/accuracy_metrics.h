@@ -15,7 +15,12 @@
 
 namespace shadowlab {
 
-inline constexpr float kVisibleStep = 1.0f / 255.0f;  // e: one 8-bit step
+// The thresholds of the definitions, shared by the CPU metrics and the GPU counter (gpu_accuracy_counter.h hands them
+// to its shader as uniforms, so both compare against the very same float values).
+inline constexpr float kVisibleStep = 1.0f / 255.0f;         // e: one 8-bit step
+inline constexpr float kLitBelow = 1.0f - kVisibleStep;      // a truly lit pixel with S below this is visibly darker
+inline constexpr double kWrongError = 0.5;                   // |S-V| from which a pixel counts as wrong
+inline constexpr int kEdgeErrorPercentile = 95;              // edge error = this percentile of dist
 
 // How far a filter reads from the lookup position, in texels: point 0, hardware 2x2 1 (bilinear neighbours),
 // N x N PCF (N-1)/2, Poisson its radius + 1 (its taps are bilinear).
@@ -23,7 +28,7 @@ double filterRadiusTexels(const FilterSettings& filter);
 inline double acceptanceRadiusTexels(const FilterSettings& filter) { return filterRadiusTexels(filter) + 1.0; }
 
 // Is the tool's S visibly different from the reference (one 8-bit step or more toward the wrong side)?
-inline bool visiblyWrong(bool lit, float s) { return lit ? s < 1.0f - kVisibleStep : s > kVisibleStep; }
+inline bool visiblyWrong(bool lit, float s) { return lit ? s < kLitBelow : s > kVisibleStep; }
 
 struct MetricsInput {
     const std::vector<PixelClass>* classes = nullptr;  // the reference's verdict per pixel
@@ -49,7 +54,15 @@ struct MetricsResult : AccuracyNumbers {
 // counts.boundaryPixels and counts.shadowedNearEdge are left for the caller.
 MetricsResult computeMetrics(const MetricsInput& input);
 
+// The 0-based index of the p-th percentile (0..100) of n sorted values by nearest rank, ceil(p n / 100) - 1 (at
+// least 0), in integers so the GPU counter picks the very same element.
+std::size_t nearestRankIndex(std::size_t n, int percent);
+
 // The p-th percentile (0..100) by nearest rank; 0 for an empty list. Reorders values.
-double percentile(std::vector<double>& values, double p);
+double percentile(std::vector<double>& values, int percent);
+
+// The percentages and means of AccuracyNumbers from its counts and the sums of |S-V| (measured pixels) and of 1-S
+// (acne pixels): the one place both the CPU metrics and the GPU counter turn counts into numbers.
+void setRatios(AccuracyNumbers& numbers, double errorSum, double severitySum);
 
 }  // namespace shadowlab

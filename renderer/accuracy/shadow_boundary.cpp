@@ -137,6 +137,14 @@ double ShadowBoundary::texelWorldSizeAt(const glm::dvec3& p) const {
                               : light_.texelWorldSize;
 }
 
+glm::dvec3 ShadowBoundary::alongLight(const glm::dvec3& p) const {
+    return probe_.light.positional() ? glm::normalize(p - probe_.light.position) : light_.direction;
+}
+
+bool ShadowBoundary::alongTheRays(std::size_t i) const {
+    return std::abs(glm::dot(samples_->normal[i], alongLight(samples_->point[i]))) < 1e-9;
+}
+
 double ShadowBoundary::probe(std::size_t i, double k) {
     if (flipAt_[i] <= k) return flipAt_[i];
     if (!probe_.bvh || probedTo_[i] >= k) return kInfinity;
@@ -144,9 +152,9 @@ double ShadowBoundary::probe(std::size_t i, double k) {
     const glm::dvec3& n = samples_->normal[i];
     const bool lit = isLit((*classes_)[i]);
     // Moving along the light's rays keeps the texel: lift each ring point back onto the tangent plane that way.
-    const glm::dvec3 along = probe_.light.positional() ? glm::normalize(p - probe_.light.position) : light_.direction;
+    if (alongTheRays(i)) return kInfinity;
+    const glm::dvec3 along = alongLight(p);
     const double nDotAlong = glm::dot(n, along);
-    if (std::abs(nDotAlong) < 1e-9) return kInfinity;
     const double texelWorld = texelWorldSizeAt(p);
     // The ring lies on the light's image plane: a point light's is the plane of the pixel's cube face.
     glm::dvec3 right = right_, up = up_;
@@ -194,6 +202,26 @@ double ShadowBoundary::distance(std::size_t i, double k) {
     const double visible = visibleDistance(i);
     if (visible <= k) return visible;
     return std::min(visible, probe(i, k));
+}
+
+void ShadowBoundary::prepareVisible() {
+    const std::size_t count = classes_ ? classes_->size() : 0;
+    const int rows = int((count + 255) / 256);
+    parallelRows(rows, [&](int row) {
+        const std::size_t end = std::min(count, std::size_t(row + 1) * 256);
+        for (std::size_t i = std::size_t(row) * 256; i < end; ++i)
+            if (hasVisibility((*classes_)[i])) visibleDistance(i);
+    });
+}
+
+DistanceState ShadowBoundary::state(std::size_t i, double k) const {
+    DistanceState s{visibleDistance_[i], flipAt_[i], probedTo_[i]};
+    if (s.visible < 0.0f) s.visible = float(kInfinity);  // not computed: no surface here
+    // distance(i, k) answers "farther than k" without probing when the tangent plane runs along the light's rays.
+    if (s.visible > k && s.flipAt > k && s.probedTo < k && probes()) {
+        if (alongTheRays(i)) s.probedTo = float(k);
+    }
+    return s;
 }
 
 void ShadowBoundary::prepare(const std::vector<std::size_t>& pixels, double k) {

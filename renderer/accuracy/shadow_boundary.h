@@ -34,6 +34,14 @@ struct BoundaryProbe {
     double sceneRadius = 1.0;
 };
 
+// What the boundary knows of one pixel's distance so far (texels); the GPU counter decides "> k" from it by the rule
+// of ShadowBoundary::distance (gpu_accuracy_counter.h).
+struct DistanceState {
+    float visible = 0.0f;   // to the visible boundary (+infinity when none)
+    float flipAt = 0.0f;    // smallest probed radius where visibility flips (+infinity when none found)
+    float probedTo = 0.0f;  // no flip closer than this (probing enabled): distance(i, k) for k <= probedTo is known
+};
+
 class ShadowBoundary {
 public:
     ShadowBoundary() = default;
@@ -49,6 +57,13 @@ public:
     // Computes the distances of many pixels on all cores (then distance() answers from the cache).
     void prepare(const std::vector<std::size_t>& pixels, double k);
 
+    // Computes the visible distance of every pixel with a surface, on all cores.
+    void prepareVisible();
+    // What distance(i, k) would answer from, for pixel i (visible distance computed). probedTo is raised to k when
+    // distance(i, k) already said "farther than k" without probing (a tangent plane along the light's rays).
+    DistanceState state(std::size_t i, double k) const;
+    bool probes() const { return probe_.bvh != nullptr; }
+
     std::size_t pointCount() const;
     // World size of one shadow-map texel at p (directional: constant; spot: at p's depth along the axis; point: at
     // p's depth in its cube face).
@@ -59,6 +74,8 @@ public:
 
 private:
     double probe(std::size_t i, double k);
+    glm::dvec3 alongLight(const glm::dvec3& p) const;  // the light's ray direction at p
+    bool alongTheRays(std::size_t i) const;            // pixel i's tangent plane contains the light's rays: no probing
 
     const SurfaceSamples* samples_ = nullptr;
     const std::vector<PixelClass>* classes_ = nullptr;

@@ -293,12 +293,12 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
     f.push_back(tagged(intField(keyOf("shadow.resolution"),
                                 "Shadow map size, texels per side (the GPU's GL_MAX_TEXTURE_SIZE may lower the limit)",
                                 16, 32768, {}, at([](auto& l) -> auto& { return l.shadow.resolution; })),
-                       kView));
+                       kView | kVariant));  // lights of one size and format share a map array: the array count
     f.push_back(tagged(enumField<DepthFormat>(
                            keyOf("shadow.depthFormat"), "Depth texture format of the shadow map",
                            {{DepthFormat::D16, "d16"}, {DepthFormat::D24, "d24"}, {DepthFormat::D32F, "d32f"}},
                            at([](auto& l) -> auto& { return l.shadow.format; })),
-                       kView));
+                       kView | kVariant));
     f.push_back(tagged(floatField(keyOf("shadow.depthBias"),
                                   "DepthBias (GL polygon offset units): constant bias in steps of the depth format",
                                   -1e6, 1e6, at([](auto& l) -> auto& { return l.shadow.depthBias; })),

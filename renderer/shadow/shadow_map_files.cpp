@@ -4,6 +4,26 @@
 
 namespace shadowlab {
 
+namespace {
+
+// Depth in GL order (row 0 at the bottom) as the files; files start with the top row.
+ShadowMapFilesResult writeDepthFiles(int width, int height, const std::vector<float>& depth, const std::string& exrPath,
+                                     const std::string& pngPath) {
+    ShadowMapFilesResult result;
+    if (!exrPath.empty()) {
+        result.error = writeExrDepth(exrPath, width, height, depth.data(), /*flipVertically=*/true);
+        if (!result.ok()) return result;
+    }
+    if (!pngPath.empty()) {
+        result.pngRange = writtenDepthRange(depth);
+        const std::vector<std::uint8_t> gray = depthToGray(depth, result.pngRange);
+        result.error = writePng(pngPath, width, height, 1, gray.data(), /*flipVertically=*/true);
+    }
+    return result;
+}
+
+}  // namespace
+
 ShadowMapFilesResult writeShadowMapFiles(const ShadowMap& map, const std::string& exrPath, const std::string& pngPath) {
     ShadowMapFilesResult result;
     if (exrPath.empty() && pngPath.empty()) return result;
@@ -11,19 +31,37 @@ ShadowMapFilesResult writeShadowMapFiles(const ShadowMap& map, const std::string
         result.error = "there is no shadow map yet (no frame was rendered)";
         return result;
     }
-    const int size = map.resolution();
-    const std::vector<float> depth = map.readDepth();
-    // GL stores row 0 at the bottom; files start with the top row.
-    if (!exrPath.empty()) {
-        result.error = writeExrDepth(exrPath, size, size, depth.data(), /*flipVertically=*/true);
-        if (!result.ok()) return result;
+    return writeDepthFiles(map.resolution(), map.resolution(), map.readDepth(), exrPath, pngPath);
+}
+
+const std::array<CrossCell, 6>& cubeCrossCells() {
+    // Faces in GL order +X, -X, +Y, -Y, +Z, -Z; (column, row) with row 0 at the top of the picture.
+    static const std::array<CrossCell, 6> cells = {{{2, 1}, {0, 1}, {1, 0}, {1, 2}, {1, 1}, {3, 1}}};
+    return cells;
+}
+
+ShadowMapFilesResult writeCubeShadowMapFiles(const std::array<const ShadowMap*, 6>& faces, const std::string& exrPath,
+                                             const std::string& pngPath) {
+    ShadowMapFilesResult result;
+    if (exrPath.empty() && pngPath.empty()) return result;
+    for (const ShadowMap* face : faces)
+        if (!face || !face->valid() || face->resolution() != faces[0]->resolution()) {
+            result.error = "the point light has no complete cube map yet (no frame was rendered)";
+            return result;
+        }
+    const int n = faces[0]->resolution();
+    const int width = 4 * n, height = 3 * n;
+    std::vector<float> cross(std::size_t(width) * std::size_t(height), 1.0f);  // empty cells read as "no caster"
+    for (std::size_t f = 0; f < 6; ++f) {
+        const std::vector<float> depth = faces[f]->readDepth();
+        const CrossCell cell = cubeCrossCells()[f];
+        const int x0 = cell.column * n, y0 = (2 - cell.row) * n;  // GL order: row 0 at the bottom
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x)
+                cross[std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)] =
+                    depth[std::size_t(y) * std::size_t(n) + std::size_t(x)];
     }
-    if (!pngPath.empty()) {
-        result.pngRange = writtenDepthRange(depth);
-        const std::vector<std::uint8_t> gray = depthToGray(depth, result.pngRange);
-        result.error = writePng(pngPath, size, size, 1, gray.data(), /*flipVertically=*/true);
-    }
-    return result;
+    return writeDepthFiles(width, height, cross, exrPath, pngPath);
 }
 
 }  // namespace shadowlab

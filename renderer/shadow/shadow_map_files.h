@@ -5,6 +5,7 @@
 #include "image/depth_visualization.h"
 #include "shadow/shadow_map.h"
 
+#include <array>
 #include <string>
 
 namespace shadowlab {
@@ -17,5 +18,14 @@ struct ShadowMapFilesResult {
 
 // Reads the map back once and writes the files whose path is not empty. Never creates folders.
 ShadowMapFilesResult writeShadowMapFiles(const ShadowMap& map, const std::string& exrPath, const std::string& pngPath);
+
+// A point light's six faces as one unfolded cross, 4 x 3 faces: +Y above +Z; -X, +Z, +X, -Z in the middle row;
+// -Y below +Z. Each face as stored (GL's cube-map orientation); empty cells hold 1 (no caster, white).
+struct CrossCell {
+    int column, row;  // row 0 = top of the picture
+};
+const std::array<CrossCell, 6>& cubeCrossCells();  // per face, GL order +X, -X, +Y, -Y, +Z, -Z
+ShadowMapFilesResult writeCubeShadowMapFiles(const std::array<const ShadowMap*, 6>& faces, const std::string& exrPath,
+                                             const std::string& pngPath);
 
 }  // namespace shadowlab

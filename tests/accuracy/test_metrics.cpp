@@ -120,11 +120,16 @@ TEST(AccuracyMetrics, AcceptanceRadiusIsFilterRadiusPlusOneTexel) {
 
 TEST(AccuracyMetrics, PercentileByNearestRank) {
     std::vector<double> v = {5, 1, 3, 2, 4};
-    EXPECT_EQ(percentile(v, 95.0), 5.0);
-    EXPECT_EQ(percentile(v, 50.0), 3.0);
-    EXPECT_EQ(percentile(v, 0.0), 1.0);
+    EXPECT_EQ(percentile(v, 95), 5.0);
+    EXPECT_EQ(percentile(v, 50), 3.0);
+    EXPECT_EQ(percentile(v, 0), 1.0);
     std::vector<double> none;
-    EXPECT_EQ(percentile(none, 95.0), 0.0);
+    EXPECT_EQ(percentile(none, 95), 0.0);
+    // ceil(0.95 n) in integers: 20 values give the 19th, 100 give the 95th (no rounding of 0.95 n upward).
+    EXPECT_EQ(nearestRankIndex(20, 95), 18u);
+    EXPECT_EQ(nearestRankIndex(100, 95), 94u);
+    EXPECT_EQ(nearestRankIndex(1, 95), 0u);
+    EXPECT_EQ(nearestRankIndex(21, 95), 19u);
 }
 
 TEST(PointTree, NearestDistanceMatchesBruteForce) {

@@ -160,7 +160,7 @@ TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
     std::size_t flagged = 0;
     for (const nlohmann::json& p : json["points"]) flagged += p["paretoFront"].get<bool>() ? 1 : 0;
     EXPECT_EQ(flagged, r.front.size());
-    EXPECT_EQ(json["points"][0]["settings"]["shadow"]["resolution"], 32);
+    EXPECT_EQ(json["points"][0]["settings"]["lights"][0]["shadow"]["resolution"], 32);
     EXPECT_TRUE(json.contains("preset"));
     std::istringstream csv(sweepToCsv(r));
     std::string line;

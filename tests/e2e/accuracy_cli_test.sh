@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end: `shadowlab measure` and `shadowlab tune`, headless. Checks exit codes, the printed numbers (metrics
 # version 2, causes, the coarse-map warning), the JSON, both overlay PNGs, that a tuned preset loads back and measures
-# within the acne limit, that tune writes nothing when no setting reaches the limit, and that bad input is refused.
+# within the acne limit, that tune writes nothing when no setting reaches the limit, that --remeasure-bench's GPU and
+# CPU paths agree, and that bad input is refused.
 # Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
 set -uo pipefail
 : "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
@@ -140,6 +141,16 @@ import json; a = json.load(open('two-lights.json')); b = json.load(open('two-tun
 assert b['lights'][0]['shadow'] == a['lights'][0]['shadow'], 'light 0 must stay'
 assert b['lights'][1]['shadow'] != a['lights'][1]['shadow'], 'light 1 must be tuned'" \
   && pass "tune --light 1 writes light 1's bias and keeps light 0's" || fail "tune --light 1: $(grep '^result' tune-light1.out)"
+
+# Live accuracy: --remeasure-bench times re-measures after a bias change on the GPU path and the CPU path, and both
+# count the same frame alike.
+expect_ok remeasure "$SHADOWLAB" measure --scene builtin:textbook --preset acne --width 320 --height 180 \
+  --remeasure-bench 4
+grep -q "^REMEASURE 320x180: [0-9.]* ms GPU (live) vs [0-9.]* ms CPU" remeasure.out && pass "remeasure-bench prints the figure" \
+  || fail "remeasure-bench: $(tail -3 remeasure.out)"
+grep -q "counts: GPU == CPU" remeasure.out && pass "GPU and CPU paths count alike" \
+  || fail "remeasure counts: $(grep counts: remeasure.out)"
+expect_error bad-remeasure "remeasure-bench" "$SHADOWLAB" measure --width 32 --height 32 --remeasure-bench 0
 
 expect_error bad-key "no.such" "$SHADOWLAB" measure --set no.such=1
 expect_error bad-scene "nope.gltf" "$SHADOWLAB" measure --scene /nonexistent/nope.gltf

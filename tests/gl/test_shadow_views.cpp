@@ -173,5 +173,45 @@ TEST_F(ShadowViews, ShipsAsManyMapsAsViewsInArraysPerSizeAndFormat) {
     EXPECT_LT(*std::min_element(depth.begin(), depth.end()), 1.0f);
 }
 
+// A valid value other than the current one, for any field.
+nlohmann::json otherValue(const SettingsField& f, const Settings& s) {
+    const nlohmann::json current = f.get(s);
+    switch (f.kind) {
+        case SettingsFieldKind::Bool: return !current.get<bool>();
+        case SettingsFieldKind::Int:
+            return f.intChoices.empty() ? nlohmann::json(std::min(int(f.max) - 1, 512)) : nlohmann::json(f.intChoices.front());
+        case SettingsFieldKind::Float: return double(float(f.min + (f.max - f.min) * 0.0318309886));
+        case SettingsFieldKind::Enum:
+            return current == f.choices.back() ? nlohmann::json(f.choices.front()) : nlohmann::json(f.choices.back());
+        case SettingsFieldKind::Vec3: return nlohmann::json::array({0.25, f.key.ends_with("color") ? 0.5 : -2.25, 0.125});
+    }
+    return {};
+}
+
+TEST_F(ShadowViews, KeysNotTaggedForAViewOrVariantNeverChangeThem) {
+    // The key table's tags drive the planner: a key without the shadow-view tag must never re-render a view, and
+    // one without the variant tag never change the main pass's program (else the picture would go stale).
+    const Scene scene = loadBuiltin("textbook");
+    Settings base = loadShippedPreset("default");
+    set(base, "lights.1.type=spot");
+    set(base, "lights.1.position=-3,8,2");
+    set(base, "lights.1.direction=0.3,-1,-0.2");
+    int checked = 0;
+    for (const SettingsField* field : settingsFieldsOf(base)) {
+        if (field->invalidates & kInvalidatesCamera) continue;  // the camera decides which views are seen
+        Settings changed = base;
+        if (!field->set(changed, otherValue(*field, base)).empty() || !changed.validate().empty()) continue;
+        Renderer renderer;
+        const View before = renderView(renderer, scene, base, 64, 48);
+        const View after = renderView(renderer, scene, changed, 64, 48);
+        if (!(field->invalidates & kInvalidatesShadowView))
+            EXPECT_EQ(viewsThatRan(after.stats), 0) << field->key << " re-rendered a view: " << after.stats.shadowPass.reason;
+        if (!(field->invalidates & kInvalidatesVariant))
+            EXPECT_EQ(after.stats.mainVariants, before.stats.mainVariants) << field->key << " changed the variant";
+        ++checked;
+    }
+    EXPECT_GT(checked, 40);
+}
+
 }  // namespace
 }  // namespace shadowlab::test

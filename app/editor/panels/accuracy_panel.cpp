@@ -1,8 +1,9 @@
 // Accuracy: how wrong the shadows are against the exact reference (metrics version 2: acne with its severity, leak,
 // wrong pixels, mean error, edge error in texels / world units / screen pixels, k, the coarse-map warning, the
 // causes of the wrong pixels with a remedy each, the counts behind them and what the reference cost), measured on
-// demand or automatically once the view is still; a stale line when the numbers no longer describe the view; and
-// Suggest bias: the search's path, its result applied to the settings, and Save as preset.
+// demand or automatically (Auto: live GPU counts while you edit, a full measure once the view is still); a stale
+// line when the numbers no longer describe the view; and Suggest bias: the search's path, its result applied to the
+// settings, and Save as preset.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
@@ -72,6 +73,12 @@ void numbersTab(EditorState& state, const AccuracyReport& r) {
 // ones, with the remedy.
 void causesTab(EditorState& state, const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
+    if (r.live) {
+        ImGui::TextWrapped("Live numbers: the causes need shadow rays and come with the full measure, once the view "
+                           "is still (Auto) or on Measure.");
+        state.controls.recordLastItem("accuracy.causes");
+        return;
+    }
     if (c.mismatched == 0) {
         ImGui::TextDisabled("no mismatched pixels: nothing to explain");
         return;
@@ -126,7 +133,17 @@ void countsTab(const AccuracyReport& r) {
 
 void costTab(const AccuracyState& a, const AccuracyReport& r) {
     const AccuracyCost& k = r.cost;
-    if (ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
+    if (r.live && ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
+        row("live count", format("%.1f ms", k.totalMs), "the job's wall time: tool frame + GPU count + probes");
+        row("tool frame", format("%.1f ms", k.toolFrameMs), "shadow pass + shadow-factor pass, not read back");
+        row("GPU count", format("%.1f ms", k.metricsMs), "compute passes over S and the cached reference");
+        row("probes", format("%.1f ms", k.probeMs) + " (" + grouped(k.probedPixels) + " px)",
+            "pixels mismatched far from any visible edge for the first time: probed once on the CPU");
+        if (k.uploadMs > 0.0) row("upload", format("%.1f ms", k.uploadMs), "the reference to the GPU, once per light space");
+        ImGui::EndTable();
+        return;
+    }
+    if (!r.live && ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
         row("total", format("%.1f ms", k.totalMs) + format(" (job %.2f s)", a.reportSeconds));
         row("BVH", k.bvhReused ? "reused" : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
         row("rays", k.referenceReused ? "reused (" + grouped(k.rays) + ")"
@@ -255,6 +272,9 @@ void drawAccuracyPanel(PanelContext& ctx) {
                       a.stage.c_str(), double(a.progress) * 100.0);
     else if (!a.error.empty())
         std::snprintf(overlay, sizeof overlay, "%s", a.stage.c_str());
+    else if (a.report && a.report->live)
+        std::snprintf(overlay, sizeof overlay, "live count %dx%d in %.0f ms", a.report->width, a.report->height,
+                      a.reportSeconds * 1e3);
     else if (a.report)
         std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? "bias search at" : "measured",
                       a.report->width, a.report->height, a.reportSeconds);
@@ -267,8 +287,19 @@ void drawAccuracyPanel(PanelContext& ctx) {
     ImGui::ProgressBar(a.running ? a.progress : (a.report ? 1.0f : 0.0f), ImVec2(-1, 0), overlay);
     ImGui::PopStyleColor();
     state.controls.recordLastItem("accuracy.progress");
-    ImGui::Checkbox("Auto (after edits, once the view is still)", &a.autoMeasure);
+    ImGui::Checkbox("Auto (live while editing, in full once still)", &a.autoMeasure);
     state.controls.recordLastItem("accuracy.auto");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("After a Measure, every edit of bias, filter or map is re-counted on the GPU against the "
+                          "cached reference (live, also while a slider moves); once the view has been still for "
+                          "%.1f s it is measured in full (causes, overlay). A camera or light move needs new rays: "
+                          "then only the full measure runs.",
+                          AccuracyState::kAutoDelaySeconds);
+    if (a.report && a.report->live && a.stale.empty()) {
+        ImGui::TextDisabled("live: counted on the GPU in %.1f ms (%ld counts); causes and overlay once still",
+                            a.report->cost.totalMs, a.liveMeasurements);
+        state.controls.recordLastItem("accuracy.live");
+    }
 
     if (!a.error.empty() && !a.running) {
         errorText(a.error);

@@ -1,0 +1,147 @@
+#include "cli/bench_lights.h"
+
+#include "cli/command_input.h"
+#include "cli/settings_from_cli.h"
+#include "context/headless_context.h"
+#include "frame/timed_frames.h"
+#include "light/scene_lights.h"
+#include "scene/scene_source.h"
+#include "settings/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <iomanip>
+#include <iostream>
+#include <map>
+
+namespace shadowlab::cli {
+
+namespace {
+
+const char* kindName(LightType type) {
+    return type == LightType::Directional ? "directional" : type == LightType::Spot ? "spot" : "point";
+}
+
+int viewsThatRan(const FrameStats& stats) {
+    return int(std::count_if(stats.views.begin(), stats.views.end(), [](const ShadowViewStats& v) { return v.ran; }));
+}
+
+}  // namespace
+
+int runBenchLights(const BenchOptions& options) {
+    std::optional<Settings> requested = settingsFromCli(options.preset, options.overrides, options.scene);
+    if (!requested) return 2;
+    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    if (!loaded.scene) return fail(loaded.error);
+    const Scene& scene = *loaded.scene;
+    const Settings base = withEffectiveLights(*requested, scene);
+    if (base.lights.empty()) return fail("--lights: the settings have no light");
+    try {
+        HeadlessContext context;
+        Renderer renderer;
+        RenderTarget target;
+        if (std::string e = target.resize(options.width, options.height); !e.empty()) return fail(e);
+        const Camera camera = cameraFor(base.camera, scene, double(options.width) / options.height);
+        std::cout << "bench --lights: " << scene.name << " (" << scene.triangleCount() << " triangles), view "
+                  << options.width << "x" << options.height << ", " << base.lights.size() << " lights, "
+                  << options.frames << " frames per row\ngl: " << renderer.glInfo().renderer << "\n";
+        nlohmann::json doc = {{"scene", scene.name}, {"width", options.width}, {"height", options.height},
+                              {"frames", options.frames}, {"glRenderer", renderer.glInfo().renderer}};
+
+        // 1. Every view forced each frame: the median time of each view.
+        std::map<std::string, std::vector<double>> perView;
+        std::vector<double> mainAll;
+        FrameStats last;
+        for (int f = 0; f < kWarmUpFrames + options.frames; ++f) {
+            renderer.invalidateShadowMap();
+            last = renderer.render(scene, base, camera, target);
+            if (!last.ok) return fail(last.error);
+            renderer.waitForTimings(last);
+            if (f < kWarmUpFrames) continue;
+            for (const ShadowViewStats& v : last.views)
+                if (v.ran && v.milliseconds) perView[v.name].push_back(*v.milliseconds);
+            if (last.mainPass.milliseconds) mainAll.push_back(*last.mainPass.milliseconds);
+        }
+        std::cout << "timing: " << last.timingSource << "\n\nevery view rendered (median ms):\n";
+        nlohmann::json views = nlohmann::json::array();
+        double allViews = 0.0;
+        for (const ShadowViewStats& v : last.views) {
+            const LightSettings& light = base.lights[v.light];
+            if (!v.hasView) {
+                std::cout << "  " << std::left << std::setw(14) << v.name << kindName(light.type) << ": " << v.reason
+                          << "\n";
+                continue;
+            }
+            const double ms = medianOf(perView[v.name]);
+            allViews += ms;
+            std::cout << "  " << std::left << std::setw(14) << v.name << std::setw(12) << kindName(light.type)
+                      << std::setw(8) << v.resolution << std::fixed << std::setprecision(3) << ms << " ms  "
+                      << v.castersDrawn << " casters\n";
+            views.push_back({{"view", v.name}, {"kind", kindName(light.type)}, {"resolution", v.resolution},
+                             {"ms", ms}, {"castersDrawn", v.castersDrawn}});
+        }
+        std::cout << "  all views " << std::setprecision(3) << allViews << " ms; main pass " << medianOf(mainAll)
+                  << " ms\n";
+        doc["views"] = views;
+        doc["allViewsMs"] = allViews;
+
+        // 2. A static frame, then a frame that moves one light (a spot if there is one).
+        renderer.render(scene, base, camera, target);
+        FrameStats still = renderer.render(scene, base, camera, target);
+        Settings moved = base;
+        std::size_t mover = 0;
+        for (std::size_t i = 0; i < moved.lights.size(); ++i)
+            if (moved.lights[i].type == LightType::Spot && moved.lights[i].castsShadows) {
+                mover = i;
+                break;
+            }
+        moved.lights[mover].position.x += 0.01f * std::max(1.0f, scene.bounds.radius());
+        moved.lights[mover].direction.x += 0.01f;
+        FrameStats afterMove = renderer.render(scene, moved, camera, target);
+        renderer.waitForTimings(afterMove);
+        std::cout << "\nstatic frame: " << viewsThatRan(still) << " views rendered\n"
+                  << "moving light " << mover << " (" << kindName(base.lights[mover].type)
+                  << "): " << viewsThatRan(afterMove) << " views rendered, "
+                  << afterMove.shadowPass.milliseconds.value_or(0.0) << " ms; the others: unchanged\n";
+        doc["staticFrameViews"] = viewsThatRan(still);
+        doc["movedLight"] = mover;
+        doc["movedLightViews"] = viewsThatRan(afterMove);
+        doc["movedLightShadowMs"] = afterMove.shadowPass.milliseconds.value_or(0.0);
+
+        // 3. The main pass with the first k lights, shadowed and not: the difference is what the taps cost.
+        std::cout << "\nmain pass by shadowed lights (filter " << nlohmann::json(base.filter.kind == FilterKind::Pcf
+                                                                                     ? "pcf" + std::to_string(base.filter.kernel)
+                                                                                     : "see preset")
+                                                                        .get<std::string>()
+                  << "; median ms):\n  lights  shadowed  unshadowed  taps cost  per light\n";
+        nlohmann::json scaling = nlohmann::json::array();
+        for (std::size_t k = 1; k <= base.lights.size(); k *= 2) {
+            Settings some = base;
+            some.lights.resize(k);
+            Settings bare = some;
+            for (LightSettings& l : bare.lights) l.castsShadows = false;
+            const TimedFrames shadowed = timeFrames(renderer, scene, some, camera, target, options.frames);
+            const TimedFrames unshadowed = timeFrames(renderer, scene, bare, camera, target, options.frames);
+            if (!shadowed.ok || !unshadowed.ok) return fail(shadowed.ok ? unshadowed.error : shadowed.error);
+            const double taps = shadowed.mainMs - unshadowed.mainMs;
+            std::cout << "  " << std::setw(8) << k << std::setw(10) << shadowed.mainMs << std::setw(12)
+                      << unshadowed.mainMs << std::setw(11) << taps << taps / double(k) << "\n";
+            scaling.push_back({{"lights", k}, {"shadowedMainMs", shadowed.mainMs},
+                               {"unshadowedMainMs", unshadowed.mainMs}, {"shadowTapsMs", taps}});
+        }
+        doc["mainPassByShadowedLights"] = scaling;
+        if (!options.json.empty()) {
+            if (std::string error = writeFileAtomically(options.json, doc.dump(2) + "\n"); !error.empty())
+                return fail("--json " + options.json + ": " + error);
+            std::cout << "wrote " << options.json << "\n";
+        }
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+    return 0;
+}
+
+}  // namespace shadowlab::cli
