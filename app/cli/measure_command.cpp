@@ -72,6 +72,10 @@ int runMeasure(const MeasureOptions& options) {
                 return fail(error);
             std::cout << "wrote " << path << " (" << which << ": " << legendText(kind) << "; the rest dimmed)\n";
         }
+        // The live path re-measures light 0 from the meter's cached reference: make it light 0's again.
+        if (options.remeasureBench > 0 && many.lights.back().index != 0 &&
+            !meter.measure(scene, *settings, camera, options.width, options.height).ok)
+            return fail("--remeasure-bench: light 0 cannot be measured");
         if (options.remeasureBench > 0 &&
             !runRemeasureBench(std::cout, meter, scene, *settings, camera, options.width, options.height,
                                options.remeasureBench))
