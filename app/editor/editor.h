@@ -164,6 +164,7 @@ private:
     std::optional<std::string> windowScreenshotPath_;
     bool mapPictureStale_ = true;
     ShadowMapViewOptions lastMapOptions_;
+    std::pair<std::size_t, int> lastMapView_{0, -2};  // (light, face) of the viewer's newest picture
     int lastMapWidth_ = 0, lastMapHeight_ = 0;
     double lastRenderTime_ = 0.0;
 

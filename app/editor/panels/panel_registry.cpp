@@ -6,10 +6,11 @@ namespace shadowlab::editor {
 
 const std::vector<Panel>& panels() {
     static const std::vector<Panel> all = {
-        {"Scene", PanelColumn::Left, 0.17f, drawScenePanel},
-        {"Presets", PanelColumn::Left, 0.25f, drawPresetsPanel},
-        {"Light", PanelColumn::Left, 0.34f, drawLightPanel},
-        {"Projection", PanelColumn::Left, 0.24f, drawProjectionPanel},
+        {"Scene", PanelColumn::Left, 0.15f, drawScenePanel},
+        {"Presets", PanelColumn::Left, 0.19f, drawPresetsPanel},
+        {"Lights", PanelColumn::Left, 0.18f, drawLightsPanel},
+        {"Light", PanelColumn::Left, 0.29f, drawLightPanel},
+        {"Projection", PanelColumn::Left, 0.19f, drawProjectionPanel},
         {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel},
         {"Sampling", PanelColumn::Right, 0.17f, drawSamplingPanel},
         {"Shadow map viewer", PanelColumn::Right, 0.48f, drawShadowMapViewerPanel},

@@ -41,6 +41,7 @@ float bottomStripHeight(ImVec2 display);
 // One function per panel, each in its own file.
 void drawScenePanel(PanelContext&);
 void drawPresetsPanel(PanelContext&);
+void drawLightsPanel(PanelContext&);
 void drawLightPanel(PanelContext&);
 void drawProjectionPanel(PanelContext&);
 void drawShadowMapPanel(PanelContext&);
