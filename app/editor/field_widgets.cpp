@@ -105,8 +105,6 @@ bool lightHeader(EditorState& state) {
         ImGui::TextDisabled("no lights: the scene is lit by ambient only (Lights panel: add one)");
         return false;
     }
-    ImGui::TextDisabled("light %zu: %s (select in the Lights panel)", state.selectedLight,
-                        lightTypeText(state.settings, state.selectedLight).c_str());
     return true;
 }
 

@@ -25,7 +25,7 @@ std::string controlName(const char* key);
 // "directional", "spot" or "point", as presets spell it.
 std::string lightTypeText(const Settings& settings, std::size_t light);
 
-// Top line of the panels that edit the selected light ("light 1: spot"); false, with a note, when there are none.
+// For the panels that edit the selected light (their title names it): false, with a note, when there are none.
 bool lightHeader(EditorState& state);
 
 // Tooltip with the key, its meaning and allowed values; and the key's last refusal, in red, under the control.

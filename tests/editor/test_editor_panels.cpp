@@ -34,7 +34,7 @@ TEST_P(EditorLayout, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheS
     const std::string name = "layout-" + std::to_string(width) + "x" + std::to_string(height);
     EditorHarness h(testOptions(testFolder(name)), width, height);
     h.settle();
-    const std::vector<std::string> expected = {"Scene", "Presets", "Light", "Projection", "Shadow map",
+    const std::vector<std::string> expected = {"Scene", "Presets", "Lights", "Light", "Projection", "Shadow map",
                                                "Sampling", "Shadow map viewer", "Stats", "Accuracy", "Probe"};
     ASSERT_EQ(panels().size(), expected.size());
     std::vector<ControlRect> rects;

@@ -1,5 +1,5 @@
 // Light: the selected light's type, direction as azimuth + elevation, spot / point position, cone and range, colour
-// and intensity; the global ambient term and the animation preview.
+// and intensity; the animation preview.
 #include "editor/field_widgets.h"
 #include "editor/light_angles.h"
 #include "editor/panels/panel_registry.h"
@@ -22,15 +22,8 @@ void vec3Control(EditorState& state, const std::string& key, bool changed, const
 
 void drawLightPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
+    if (!lightHeader(state)) return;
     ImGui::PushItemWidth(-110.0f);
-    checkboxField(state, "useSceneLights", "use the scene's lights");
-    if (state.haveStats) ImGui::TextDisabled("using %s", state.stats.lightSource.c_str());
-    sliderFloatField(state, "ambient", "ambient", 0.0f, 1.0f, "%.2f");
-    ImGui::Separator();
-    if (!lightHeader(state)) {
-        ImGui::PopItemWidth();
-        return;
-    }
     auto key = [&](const char* within) { return state.lightKey(within); };
     const LightSettings light = *state.selected();  // a copy: edits below may reallocate the list
 

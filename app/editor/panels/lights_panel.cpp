@@ -1,5 +1,5 @@
 // Lights: the list of lights (type, colour, shadow, enabled), add / remove / duplicate, and which one the Light,
-// Shadow map and Projection panels edit. Adding sets "lights.<count>.type" (the key table appends a light);
+// Shadow map and Projection panels edit; the ambient term and the scene's own lights. Adding sets "lights.<count>.type" (the key table appends a light);
 // every change is an edit like any other, so validation, refusals and the preset's "changed" mark behave the same.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
@@ -61,6 +61,15 @@ void lightRow(EditorState& state, std::size_t i) {
     ImGui::PopID();
 }
 
+// What lights every light's scene: the ambient term, and the scene file's own lights instead of the list.
+void globalLighting(EditorState& state) {
+    ImGui::PushItemWidth(-110.0f);
+    sliderFloatField(state, "ambient", "ambient", 0.0f, 1.0f, "%.2f");
+    checkboxField(state, "useSceneLights", "use the scene's lights instead");
+    if (state.haveStats) ImGui::TextDisabled("using %s", state.stats.lightSource.c_str());
+    ImGui::PopItemWidth();
+}
+
 }  // namespace
 
 void drawLightsPanel(PanelContext& ctx) {
@@ -70,6 +79,7 @@ void drawLightsPanel(PanelContext& ctx) {
     const std::size_t count = state.settings.lights.size();
     if (count == 0) {
         ImGui::TextDisabled("no lights: the scene is lit by ambient only");
+        globalLighting(state);
         return;
     }
     ImGui::SameLine();
@@ -83,11 +93,8 @@ void drawLightsPanel(PanelContext& ctx) {
                    "light " + std::to_string(state.selectedLight) + " removed" +
                        (count == 1 ? ": no lights left, ambient only" : ""));
     state.controls.recordLastItem("lights.remove");
-    if (state.settings.useSceneLights)
-        ImGui::TextDisabled("the scene's own lights are used instead (Light > use the scene's lights)");
 
-    if (ImGui::BeginTable("lights", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg |
-                                           ImGuiTableFlags_ScrollY)) {
+    if (ImGui::BeginTable("lights", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("light", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("colour");
         ImGui::TableSetupColumn("enabled");
@@ -95,6 +102,7 @@ void drawLightsPanel(PanelContext& ctx) {
         for (std::size_t i = 0; i < state.settings.lights.size(); ++i) lightRow(state, i);
         ImGui::EndTable();
     }
+    globalLighting(state);
 }
 
 }  // namespace shadowlab::editor

@@ -6,12 +6,12 @@ namespace shadowlab::editor {
 
 const std::vector<Panel>& panels() {
     static const std::vector<Panel> all = {
-        {"Scene", PanelColumn::Left, 0.15f, drawScenePanel},
-        {"Presets", PanelColumn::Left, 0.19f, drawPresetsPanel},
-        {"Lights", PanelColumn::Left, 0.18f, drawLightsPanel},
-        {"Light", PanelColumn::Left, 0.29f, drawLightPanel},
-        {"Projection", PanelColumn::Left, 0.19f, drawProjectionPanel},
-        {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel},
+        {"Scene", PanelColumn::Left, 0.17f, drawScenePanel},
+        {"Presets", PanelColumn::Left, 0.25f, drawPresetsPanel},
+        {"Lights", PanelColumn::Left, 0.19f, drawLightsPanel},
+        {"Light", PanelColumn::Left, 0.21f, drawLightPanel, true},
+        {"Projection", PanelColumn::Left, 0.18f, drawProjectionPanel, true},
+        {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel, true},
         {"Sampling", PanelColumn::Right, 0.17f, drawSamplingPanel},
         {"Shadow map viewer", PanelColumn::Right, 0.48f, drawShadowMapViewerPanel},
         // Bottom shares keep the outer panels' centres inside the middle 40 % of the window at 1280..1920 wide

@@ -23,6 +23,7 @@ struct Panel {
     float share;            // its part of the column's height (Left / Right) or of the bottom strip's width (Bottom);
                             // a column's shares add up to 1
     void (*draw)(PanelContext&);  // the window's contents (Begin/End are done by the editor)
+    bool editsSelectedLight = false;  // its title names the light it edits ("Light: 1 spot")
 };
 
 const std::vector<Panel>& panels();
