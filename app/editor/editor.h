@@ -60,6 +60,8 @@ public:
     EditorState& state() { return state_; }
     const Renderer& renderer() const { return *renderer_; }
     const RenderTarget& viewportTarget() const { return target_; }
+    // The Shadow map viewer's newest picture (RGBA, row 0 = bottom), for tests.
+    std::vector<std::uint8_t> mapViewPixels() const { return mapView_->readPixels(); }
     const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
     ImVec4 viewportRect() const { return viewportRect_; }  // x, y, w, h in window pixels
 
