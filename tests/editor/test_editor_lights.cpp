@@ -126,4 +126,30 @@ TEST_F(EditorLights, RemovingLightsKeepsTheOthersAndZeroLightsRenderAmbientOnly)
     EXPECT_EQ(h.state().settings.lights[0].type, LightType::Point);
 }
 
+TEST_F(EditorLights, APointLightsCubeFacesArePickedOneByOneInTheViewer) {
+    EditorHarness& h = *harness;
+    h.click("lights.add.point");
+    ASSERT_EQ(h.state().settings.lights.size(), 2u);
+    h.frame(2);
+    ASSERT_TRUE(h.state().stats.ok) << h.state().stats.error;
+    int faces = 0;
+    for (const ShadowViewStats& v : h.state().stats.views) faces += v.light == 1 && v.face >= 0 ? 1 : 0;
+    EXPECT_EQ(faces, 6) << "a point light has six cube-face views";
+    // -Y looks down at the textbook's floor from above: it holds the casters.
+    const ShadowViewStats* down = nullptr;
+    for (const ShadowViewStats& v : h.state().stats.views)
+        if (v.light == 1 && v.face == 3) down = &v;
+    ASSERT_NE(down, nullptr);
+    ASSERT_TRUE(down->hasView);
+    h.click("viewer.view");
+    h.click("viewer.view=" + down->name);
+    h.frame(2);
+    ASSERT_NE(h.state().shownView(), nullptr);
+    EXPECT_EQ(h.state().shownView()->light, 1u);
+    EXPECT_EQ(h.state().shownView()->face, 3);
+    EXPECT_TRUE(h.state().shownView()->space.perspective);
+    EXPECT_TRUE(h.state().viewer.error.empty()) << h.state().viewer.error;
+    h.saveWindow("viewer-point-face");
+}
+
 }  // namespace shadowlab::editor::test
