@@ -181,7 +181,7 @@ void Editor::renderViewport() {
         lastRendered_.reset();
     }
     RenderKey key{effectiveSettings(), orbit_->eye(), orbit_->target(), state_.scene.get(), w, h,
-                  state_.showLightFrustum};
+                  state_.showLightFrustum, state_.showLightFrustum ? state_.selectedLight : 0};
     // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
     // it is stale); a settings or scene change still renders, so the shadow map, its viewer and Stats follow the edit.
     const bool overlayHidesView = state_.accuracy.showOverlay && bool(state_.accuracy.overlayTexture);
@@ -434,7 +434,7 @@ bool Editor::busy() const {
     if (!lastRendered_) return true;
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
-                        state_.showLightFrustum};
+                        state_.showLightFrustum,   state_.showLightFrustum ? state_.selectedLight : 0};
     return !(key == *lastRendered_) || mapPictureStale_;
 }
 

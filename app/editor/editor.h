@@ -91,6 +91,7 @@ private:
         const Scene* scene = nullptr;
         int width = 0, height = 0;
         bool frustum = false;
+        std::size_t frustumLight = 0;  // whose volume the overlay draws (the selected light)
         bool operator==(const RenderKey&) const = default;
     };
 

@@ -150,6 +150,13 @@ TEST_F(EditorLights, APointLightsCubeFacesArePickedOneByOneInTheViewer) {
     EXPECT_TRUE(h.state().shownView()->space.perspective);
     EXPECT_TRUE(h.state().viewer.error.empty()) << h.state().viewer.error;
     h.saveWindow("viewer-point-face");
+
+    // The viewport's volume is the selected light's: selecting light 0 redraws it as light 0's box.
+    ASSERT_TRUE(h.state().showLightFrustum);
+    const std::vector<std::uint8_t> pointVolume = h.editor().viewportTarget().readColor();
+    h.click("lights.select.0");
+    h.frame(2);
+    EXPECT_NE(h.editor().viewportTarget().readColor(), pointVolume) << "the overlay still shows light 1's volume";
 }
 
 }  // namespace shadowlab::editor::test
