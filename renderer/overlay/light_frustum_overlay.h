@@ -34,6 +34,10 @@ public:
     // Draws over `target`, which must hold the frame `stats` describes (its colour and depth). Returns "" or why
     // nothing was drawn (the frame failed, or its matrices are not finite). Leaves depth writes on and blending off.
     std::string draw(const FrameStats& stats, RenderTarget& target, const FrustumOverlayStyle& style = {});
+    // The same for the given light spaces (render-origin relative, as the frame's views): one light's view, or a
+    // point light's six cube faces, whose frusta together outline the cube around its range. None: nothing drawn.
+    std::string draw(const FrameStats& stats, const std::vector<LightSpace>& volumes, RenderTarget& target,
+                     const FrustumOverlayStyle& style = {});
 
 private:
     gl::Program program_;
