@@ -82,6 +82,10 @@ int main(int argc, char** argv) {
     measureCmd->add_option("--overlay", measure.overlay, "write the error overlay as PNG");
     measureCmd->add_option("--cause-overlay", measure.causeOverlay,
                            "write the overlay coloured by cause (why each mismatched pixel is wrong) as PNG");
+    measureCmd->add_option("--light", measure.light,
+                           "measure only light N (default: every shadow-casting light, then the whole picture; the "
+                           "overlays show the union, each pixel coloured by its worst light)")
+        ->check(CLI::NonNegativeNumber);
     measureCmd->add_option("--remeasure-bench", measure.remeasureBench,
                            "then time N live re-measures after a bias change (GPU count) against the CPU path")
         ->check(CLI::Range(1, 10000));
@@ -96,6 +100,9 @@ int main(int argc, char** argv) {
     tuneCmd->add_option("--out", tune.out, "the tuned preset")->capture_default_str();
     tuneCmd->add_option("--max-acne", tune.maxAcnePercent, "acne limit in percent")->capture_default_str();
     tuneCmd->add_option("--json", tune.json, "write the search path and result as JSON");
+    tuneCmd->add_option("--light", tune.light,
+                        "tune only light N's bias (default: every shadow-casting light in turn, each measured alone)")
+        ->check(CLI::NonNegativeNumber);
 
     cli::ExportOptions exportOptions;
     CLI::App* exportCmd = app.add_subcommand("export", "The shadow state as a D3D12 / D3D11 / Vulkan / OpenGL snippet or JSON");

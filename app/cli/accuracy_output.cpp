@@ -1,5 +1,7 @@
 #include "cli/accuracy_output.h"
 
+#include "settings/settings_fields.h"
+
 #include <cstdio>
 #include <iomanip>
 
@@ -36,7 +38,8 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
             << std::setprecision(3);
     }
     out << "  pixels " << c.pixels << ": measured " << c.measured << ", background " << c.background
-        << ", facing away " << c.facingAway << ", outside the cone " << c.outsideCone << ", non-finite "
+        << ", facing away " << c.facingAway << ", outside the cone " << c.outsideCone << ", beyond the range "
+        << c.outOfRange << ", non-finite "
         << c.nonFinite << ", coverage mismatch " << c.coverageMismatch << ", true boundary " << c.boundaryPixels
         << "\n";
     out.unsetf(std::ios::floatfield);
@@ -64,7 +67,11 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
     if (c.referenceReused) {
         out << "  reference      reused (same scene, light, camera and size)\n";
     } else {
-        out << "  G-buffer       " << c.gbufferMs << " ms (pass + read-back + double-precision surface rebuild)\n";
+        // 0 ms: the surface samples came from the cache (same camera and size; another light was traced).
+        if (c.gbufferMs > 0.0)
+            out << "  G-buffer       " << c.gbufferMs << " ms (pass + read-back + double-precision surface rebuild)\n";
+        else
+            out << "  G-buffer       reused (same camera and size)\n";
         out << "  shadow rays    " << c.traceMs << " ms for " << c.rays << " rays on " << c.threads << " threads = "
             << std::setprecision(2) << c.raysPerSecond / 1e6 << " Mrays/s\n"
             << std::setprecision(1);
@@ -105,7 +112,7 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
         {"texelWorldSize", r.texelWorldSize},
         {"counts",
          {{"pixels", c.pixels}, {"background", c.background}, {"facingAway", c.facingAway},
-          {"outsideCone", c.outsideCone}, {"nonFinite", c.nonFinite}, {"measured", c.measured}, {"lit", c.lit},
+          {"outsideCone", c.outsideCone}, {"outOfRange", c.outOfRange}, {"nonFinite", c.nonFinite}, {"measured", c.measured}, {"lit", c.lit},
           {"shadowed", c.shadowed}, {"acne", c.acne}, {"leak", c.leak}, {"wrong", c.wrong},
           {"wrongBeyondK", c.wrongBeyondK}, {"mismatched", c.mismatched}, {"mismatchedWithinK", c.mismatchedWithinK},
           {"shadowedNearEdge", c.shadowedNearEdge},
@@ -116,6 +123,101 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"raysPerSecond", k.raysPerSecond}, {"threads", k.threads}, {"boundaryMs", k.boundaryMs},
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
           {"toolFrameMs", k.toolFrameMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
+    };
+}
+
+namespace {
+
+// The preset spelling of a light type ("directional", "spot", "point"), from the key table.
+std::string lightTypeName(LightType type) {
+    Settings s;
+    s.lights[0].type = type;
+    return findSettingsField("lights.0.type")->get(s).get<std::string>();
+}
+
+}  // namespace
+
+std::string lightLabel(std::size_t index, LightType type) {
+    return "lights." + std::to_string(index) + " (" + lightTypeName(type) + ")";
+}
+
+namespace {
+
+void printWhole(std::ostream& out, const ManyLightsReport& m) {
+    const AccuracyNumbers& w = m.whole;
+    const AccuracyCounts& c = w.counts;
+    out << std::fixed << std::setprecision(3);
+    out << "whole picture (" << m.lights.size() << " light" << (m.lights.size() == 1 ? "" : "s")
+        << " measured; a pixel counts once, wrong when wrong for any light that reaches it):\n";
+    out << "  acne         " << std::setw(8) << w.acnePercent << " %   (" << c.acne << " of " << c.lit
+        << " pixels truly lit by some light show acne for at least one; severity " << w.acneSeverity << ")\n";
+    out << "  leak         " << std::setw(8) << w.leakPercent << " %   (" << c.leak << " of " << c.shadowed
+        << " pixels truly shadowed from some light leak for at least one)\n";
+    out << "  wrong pixels " << std::setw(8) << w.wrongPercent << " %   (" << c.wrong << " of " << c.measured
+        << " measured pixels wrong for at least one light; " << c.wrongBeyondK << " beyond k)\n";
+    out << "  mean error   " << std::setw(8) << std::setprecision(4) << w.meanError
+        << "     (mean over measured pixels of the largest |S-V| among the lights reaching them)\n"
+        << std::setprecision(3);
+    out << "  edge error   " << std::setw(8) << w.edgeErrorP95Texels << " texels = " << w.edgeErrorP95World
+        << " world units = " << std::setprecision(1) << w.edgeErrorP95ScreenPixels << " screen pixels"
+        << std::setprecision(3) << " (the largest light's)\n";
+    out << "  causes of the " << c.mismatched << " mismatched pixels (each under its worst light's cause):\n";
+    for (MismatchCause cause : allCauses()) {
+        const std::size_t n = c.causePixels[std::size_t(cause)];
+        if (n == 0) continue;
+        out << "    " << std::left << std::setw(42) << causeInfo(cause).name << std::right << std::setw(8) << n
+            << " pixels, " << std::setw(8) << c.causeWrong[std::size_t(cause)] << " wrong\n";
+    }
+    out << "  pixels " << c.pixels << ": measured " << c.measured << ", reached by no measured light "
+        << m.unreached << "\n";
+    out.unsetf(std::ios::floatfield);
+}
+
+}  // namespace
+
+void printManyLights(std::ostream& out, const ManyLightsReport& many) {
+    for (const LightAccuracy& light : many.lights) {
+        out << lightLabel(light.index, light.type) << ", measured alone (its shadow factor is the one it has in the "
+            << "full frame):\n";
+        printAccuracy(out, light.report);
+        printAccuracyCost(out, light.report);
+    }
+    for (const NotMeasuredLight& n : many.notMeasured) out << "not measured: " << n.reason << "\n";
+    printWhole(out, many);
+}
+
+nlohmann::json manyLightsToJson(const ManyLightsReport& many) {
+    nlohmann::json lights = nlohmann::json::array();
+    for (const LightAccuracy& light : many.lights) {
+        nlohmann::json j = accuracyToJson(light.report);
+        j["index"] = light.index;
+        j["type"] = lightTypeName(light.type);
+        lights.push_back(std::move(j));
+    }
+    nlohmann::json notMeasured = nlohmann::json::array();
+    for (const NotMeasuredLight& n : many.notMeasured) notMeasured.push_back({{"index", n.index}, {"reason", n.reason}});
+    const AccuracyNumbers& w = many.whole;
+    const AccuracyCounts& c = w.counts;
+    nlohmann::json causes = nlohmann::json::object();
+    for (MismatchCause cause : allCauses())
+        causes[causeInfo(cause).key] = {{"pixels", c.causePixels[std::size_t(cause)]},
+                                        {"wrong", c.causeWrong[std::size_t(cause)]}};
+    return {
+        {"metricsVersion", kMetricsVersion},
+        {"width", many.width},
+        {"height", many.height},
+        {"lights", lights},
+        {"notMeasured", notMeasured},
+        {"whole",
+         {{"lightsMeasured", many.lights.size()}, {"acnePercent", w.acnePercent}, {"acneSeverity", w.acneSeverity},
+          {"leakPercent", w.leakPercent}, {"wrongPixelsPercent", w.wrongPercent}, {"meanError", w.meanError},
+          {"edgeErrorP95Texels", w.edgeErrorP95Texels}, {"edgeErrorP95World", w.edgeErrorP95World},
+          {"edgeErrorP95ScreenPixels", w.edgeErrorP95ScreenPixels}, {"causes", causes},
+          {"counts",
+           {{"pixels", c.pixels}, {"measured", c.measured}, {"unreached", many.unreached}, {"lit", c.lit},
+            {"shadowed", c.shadowed}, {"acne", c.acne}, {"leak", c.leak}, {"wrong", c.wrong},
+            {"wrongBeyondK", c.wrongBeyondK}, {"mismatched", c.mismatched},
+            {"mismatchedWithinK", c.mismatchedWithinK}}}}},
     };
 }
 

@@ -3,6 +3,7 @@
 // reference cost, and the same as JSON.
 #include "accuracy/accuracy_meter.h"
 #include "accuracy/accuracy_overlay.h"
+#include "accuracy/light_accuracy.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,5 +17,12 @@ void printAccuracy(std::ostream& out, const AccuracyReport& report);
 std::string legendText(OverlayKind kind);
 void printAccuracyCost(std::ostream& out, const AccuracyReport& report);
 nlohmann::json accuracyToJson(const AccuracyReport& report);
+
+// "lights.1 (spot)": how reports name a light.
+std::string lightLabel(std::size_t index, LightType type);
+// Every measured light (its numbers and cost), the lights not measured and why, then the whole picture.
+void printManyLights(std::ostream& out, const ManyLightsReport& many);
+// {"lights": [{index, type, ...accuracyToJson}], "notMeasured": [...], "whole": {...}, metricsVersion, width, height}
+nlohmann::json manyLightsToJson(const ManyLightsReport& many);
 
 }  // namespace shadowlab::cli

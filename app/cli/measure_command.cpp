@@ -1,12 +1,15 @@
 #include "cli/measure_command.h"
 
 #include "accuracy/accuracy_meter.h"
+#include "accuracy/light_accuracy.h"
+#include "accuracy/light_isolation.h"
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
 #include "cli/remeasure_bench.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
+#include "light/scene_lights.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
 
@@ -25,19 +28,28 @@ int runMeasure(const MeasureOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
+    std::optional<std::size_t> only;
+    if (options.light >= 0) {
+        if (std::string why = unmeasurableReason(*settings, scene, std::size_t(options.light)); !why.empty())
+            return fail("--light " + std::to_string(options.light) + ": " + why);
+        only = std::size_t(options.light);
+    }
 
     try {
         HeadlessContext context;
         AccuracyMeter meter;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
-        const AccuracyReport report = meter.measure(scene, *settings, camera, options.width, options.height);
-        if (!report.ok) return fail(report.error);
-        for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
-        std::cout << "scene " << scene.name << " (" << scene.triangleCount() << " triangles)\n";
-        printAccuracy(std::cout, report);
-        printAccuracyCost(std::cout, report);
+        const ManyLightsReport many =
+            measureLights(meter, scene, *settings, camera, options.width, options.height, only);
+        if (!many.ok) return fail(many.error);
+        for (const LightAccuracy& light : many.lights)
+            for (const std::string& w : light.report.warnings)
+                std::cerr << "warning: " << lightLabel(light.index, light.type) << ": " << w << "\n";
+        std::cout << "scene " << scene.name << " (" << scene.triangleCount() << " triangles), "
+                  << describeLightSource(*settings, scene) << "\n";
+        printManyLights(std::cout, many);
         if (!options.json.empty()) {
-            nlohmann::json json = accuracyToJson(report);
+            nlohmann::json json = manyLightsToJson(many);
             json["scene"] = options.scene;
             json["preset"] = options.preset;
             // replace: a scene path that is not UTF-8 is written with U+FFFD rather than throwing.
@@ -46,15 +58,24 @@ int runMeasure(const MeasureOptions& options) {
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }
+        // One light: its overlay; several: their union, each pixel coloured by its worst light.
+        const std::string which = only ? lightLabel(*only, many.lights.front().type)
+                                       : many.lights.size() == 1 ? lightLabel(many.lights.front().index,
+                                                                             many.lights.front().type)
+                                                                 : "all lights, coloured by each pixel's worst";
         for (const auto& [path, kind] : {std::pair{options.overlay, OverlayKind::Error},
                                          std::pair{options.causeOverlay, OverlayKind::Cause}}) {
             if (path.empty()) continue;
             const std::vector<std::uint8_t>& rgba =
-                kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba;
-            if (std::string error = writePng(path, report.width, report.height, 4, rgba.data(), false); !error.empty())
+                kind == OverlayKind::Error ? many.overlayRgba : many.causeOverlayRgba;
+            if (std::string error = writePng(path, many.width, many.height, 4, rgba.data(), false); !error.empty())
                 return fail(error);
-            std::cout << "wrote " << path << " (" << legendText(kind) << "; the rest dimmed)\n";
+            std::cout << "wrote " << path << " (" << which << ": " << legendText(kind) << "; the rest dimmed)\n";
         }
+        // The live path re-measures light 0 from the meter's cached reference: make it light 0's again.
+        if (options.remeasureBench > 0 && many.lights.back().index != 0 &&
+            !meter.measure(scene, *settings, camera, options.width, options.height).ok)
+            return fail("--remeasure-bench: light 0 cannot be measured");
         if (options.remeasureBench > 0 &&
             !runRemeasureBench(std::cout, meter, scene, *settings, camera, options.width, options.height,
                                options.remeasureBench))

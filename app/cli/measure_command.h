@@ -1,7 +1,8 @@
 #pragma once
 // `shadowlab measure`: how wrong one view's shadows are against the exact reference (acne %, leak %, edge error,
 // the counts behind them, the cause of every mismatched pixel, what the reference cost), optionally as JSON and as
-// overlay PNGs (by error, by cause).
+// overlay PNGs (by error, by cause). Every shadow-casting light is measured alone, then the whole picture
+// (renderer/accuracy/light_accuracy.h); --light N measures only light N.
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct MeasureOptions {
     std::string json;     // optional
     std::string overlay;       // optional PNG: red acne, blue leak, yellow true boundary
     std::string causeOverlay;  // optional PNG: every mismatched pixel in its cause's colour
+    int light = -1;            // --light N: only light N (index into the effective lights); -1 = every casting one
     int remeasureBench = 0;    // > 0: time that many live re-measures after a bias change (remeasure_bench.h)
 };
 

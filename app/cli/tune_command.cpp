@@ -1,6 +1,7 @@
 #include "cli/tune_command.h"
 
 #include "accuracy/bias_tuner.h"
+#include "accuracy/light_isolation.h"
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
@@ -40,58 +41,67 @@ int runTune(const TuneOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
+    std::vector<std::size_t> indices;
+    if (options.light >= 0) {
+        if (std::string why = unmeasurableReason(*settings, scene, std::size_t(options.light)); !why.empty())
+            return fail("--light " + std::to_string(options.light) + ": " + why);
+        indices.push_back(std::size_t(options.light));
+    } else {
+        indices = castingLights(*settings, scene);
+        if (indices.empty()) return fail("no light casts a shadow (every light is off or has castsShadows=false): "
+                                         "nothing to tune");
+    }
 
     try {
         HeadlessContext context;
         AccuracyMeter meter;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
-        std::cout << "tuning bias for " << scene.name << " at " << options.width << "x" << options.height
-                  << ": acne <= " << options.maxAcnePercent
-                  << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
-        std::cout << "  #  phase                                 DepthBias   slope  normal cull    acne %   leak %"
-                     "  wrong %  wrong>k edge tx\n";
-        const TuneResult result =
-            tuneBias(meter, scene, *settings, camera, options.width, options.height, options.maxAcnePercent, nullptr,
-                     [&](const TuneStep& step) { std::cout << stepLine(step) << std::endl; });
-        if (!result.ok) return fail(result.error);
+        Settings tuned = *settings;  // every other setting as given; each tuned light's shadow goes into lights[N]
+        bool allReached = true;
+        std::string summary;
+        nlohmann::json lightsJson = nlohmann::json::array();
+        for (std::size_t index : indices) {
+            std::string error;
+            const std::optional<Settings> one = isolateLight(*settings, scene, index, error);
+            if (!one) return fail(error);
+            const std::string label = lightLabel(index, one->lights[0].type);
+            std::cout << "tuning bias of " << label << " for " << scene.name << " at " << options.width << "x"
+                      << options.height << ", measured alone: acne <= " << options.maxAcnePercent
+                      << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
+            std::cout << "  #  phase                                 DepthBias   slope  normal cull    acne %   leak %"
+                         "  wrong %  wrong>k edge tx\n";
+            const TuneResult result =
+                tuneBias(meter, scene, *one, camera, options.width, options.height, options.maxAcnePercent, nullptr,
+                         [&](const TuneStep& step) { std::cout << stepLine(step) << std::endl; });
+            if (!result.ok) return fail(label + ": " + result.error);
 
-        const ShadowMapSettings& best = result.closest.lights[0].shadow;
-        const std::string cull = cullModeName(best.cullMode);
-        if (result.reachedLimit) {
-            std::cout << "\nresult: DepthBias " << best.depthBias << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias
-                      << ", normal offset " << best.normalOffset << " texels, cullMode " << cull << " ("
-                      << result.path.size() << " candidates in " << result.seconds << " s)\n";
-        } else {
-            const CauseInfo& blocking = causeInfo(result.blockingCause);
-            std::cout << "\nNO setting reached acne <= " << options.maxAcnePercent << " %: stopped by "
-                      << blocking.name << " (" << blocking.remedy << "). Least acne: "
-                      << result.report.acnePercent << " % at DepthBias " << best.depthBias << ", SlopeScaledDepthBias "
-                      << best.slopeScaledDepthBias << ", normal offset " << best.normalOffset << " texels, cullMode "
-                      << cull << " (" << result.path.size() << " candidates in " << result.seconds
-                      << " s). No preset written.\n";
-        }
-        printAccuracy(std::cout, result.report);
-        AccuracyReport first;
-        first.cost = result.referenceCost;
-        std::cout << "the first candidate built the reference; later ones cost one tool frame each.\n";
-        printAccuracyCost(std::cout, first);
+            const ShadowMapSettings& best = result.closest.lights[0].shadow;
+            const std::string cull = cullModeName(best.cullMode);
+            if (result.reachedLimit) {
+                std::cout << "\nresult: " << label << ": DepthBias " << best.depthBias << ", SlopeScaledDepthBias "
+                          << best.slopeScaledDepthBias << ", normal offset " << best.normalOffset
+                          << " texels, cullMode " << cull << " (" << result.path.size() << " candidates in "
+                          << result.seconds << " s)\n";
+                setLightShadow(tuned, index, result.best.lights[0].shadow);
+                summary += " " + label + ": acne " + std::to_string(result.report.acnePercent) + " %, leak " +
+                           std::to_string(result.report.leakPercent) + " %, wrong pixels " +
+                           std::to_string(result.report.wrongPercent) + " %.";
+            } else {
+                allReached = false;
+                const CauseInfo& blocking = causeInfo(result.blockingCause);
+                std::cout << "\n" << label << ": NO setting reached acne <= " << options.maxAcnePercent
+                          << " %: stopped by " << blocking.name << " (" << blocking.remedy << "). Least acne: "
+                          << result.report.acnePercent << " % at DepthBias " << best.depthBias
+                          << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias << ", normal offset "
+                          << best.normalOffset << " texels, cullMode " << cull << " (" << result.path.size()
+                          << " candidates in " << result.seconds << " s). No preset written.\n";
+            }
+            printAccuracy(std::cout, result.report);
+            AccuracyReport first;
+            first.cost = result.referenceCost;
+            std::cout << "the first candidate built the reference; later ones cost one tool frame each.\n";
+            printAccuracyCost(std::cout, first);
 
-        if (result.reachedLimit) {
-            const std::string description =
-                "Suggested by `shadowlab tune` for " + options.scene + " at " + std::to_string(options.width) + "x" +
-                std::to_string(options.height) + ": acne " + std::to_string(result.report.acnePercent) +
-                " %, leak " + std::to_string(result.report.leakPercent) + " %, wrong pixels " +
-                std::to_string(result.report.wrongPercent) + " % (metrics version 2).";
-            // The preset records the scene and the camera the bias was tuned from, so that view comes back.
-            Settings tuned = result.best;
-            tuned.camera = recordedCamera(camera, settings->camera.autoFrame);
-            if (std::string error = savePresetFile(options.out, tuned, "tuned", description, options.scene);
-                !error.empty())
-                return fail(error);
-            std::cout << "wrote " << options.out << "\n";
-        }
-
-        if (!options.json.empty()) {
             nlohmann::json path = nlohmann::json::array();
             for (const TuneStep& s : result.path)
                 path.push_back({{"index", s.index}, {"phase", s.phase}, {"depthBias", s.depthBias},
@@ -101,21 +111,41 @@ int runTune(const TuneOptions& options) {
                                 {"wrongPixelsPercent", s.wrongPercent}, {"wrongBeyondK", s.wrongBeyondK},
                                 {"meanError", s.meanError}, {"edgeErrorP95Texels", s.edgeErrorTexels},
                                 {"withinLimit", s.withinLimit}, {"bestSoFar", s.bestSoFar}});
+            lightsJson.push_back({{"index", index},
+                                  {"reachedLimit", result.reachedLimit},
+                                  {"blockingCause", causeInfo(result.blockingCause).key},
+                                  {"seconds", result.seconds},
+                                  {"closest",
+                                   {{"depthBias", best.depthBias}, {"slopeScaledDepthBias", best.slopeScaledDepthBias},
+                                    {"normalOffset", best.normalOffset}, {"cullMode", cull}}},
+                                  {"report", accuracyToJson(result.report)},
+                                  {"path", path}});
+        }
+
+        if (allReached) {
+            const std::string description = "Suggested by `shadowlab tune` for " + options.scene + " at " +
+                                            std::to_string(options.width) + "x" + std::to_string(options.height) +
+                                            " (metrics version 2):" + summary;
+            // The preset records the scene and the camera the bias was tuned from, so that view comes back.
+            tuned.camera = recordedCamera(camera, settings->camera.autoFrame);
+            if (std::string error = savePresetFile(options.out, tuned, "tuned", description, options.scene);
+                !error.empty())
+                return fail(error);
+            std::cout << "wrote " << options.out << "\n";
+        }
+
+        if (!options.json.empty()) {
             const nlohmann::json json = {{"scene", options.scene},
-                                         {"reachedLimit", result.reachedLimit},
-                                         {"blockingCause", causeInfo(result.blockingCause).key},
-                                         {"seconds", result.seconds},
-                                         {"best", result.reachedLimit ? presetToJson(result.best) : nullptr},
-                                         {"closest", presetToJson(result.closest)},
-                                         {"report", accuracyToJson(result.report)},
-                                         {"path", path}};
+                                         {"reachedLimit", allReached},
+                                         {"best", allReached ? presetToJson(tuned) : nullptr},
+                                         {"lights", lightsJson}};
             // replace: a scene path that is not UTF-8 is written with U+FFFD rather than throwing.
             const std::string text = json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
             if (std::string error = writeFileAtomically(options.json, text); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }
-        if (!result.reachedLimit) return kNoSettingReachedLimit;
+        if (!allReached) return kNoSettingReachedLimit;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

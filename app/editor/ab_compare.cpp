@@ -110,7 +110,8 @@ std::vector<std::string> abLabel(const EditorState& state, bool sideA, const std
 
 AbRenderer::Key AbRenderer::keyFor(const EditorState& state, const Settings& settingsA, const Camera& camera, int width,
                                    int height, bool frustum) {
-    return Key{settingsA, camera.position, camera.target, camera.fovYDeg, state.scene.get(), width, height, frustum};
+    return Key{settingsA, camera.position, camera.target, camera.fovYDeg, state.scene.get(), width, height, frustum,
+               frustum ? state.selectedLight : 0};
 }
 
 bool AbRenderer::due(const EditorState& state, const Settings& settingsA, const Camera& camera, int width, int height,
@@ -146,7 +147,7 @@ bool AbRenderer::render(EditorState& state, const Settings& settingsA, const Cam
         return true;
     }
     if (frustum) {
-        if (std::string error = frustum->draw(stats, target_); !error.empty())
+        if (std::string error = frustum->draw(stats, lightVolumes(stats, state.selectedLight), target_); !error.empty())
             state.say("A/B: light frustum: " + error, true);
     }
     if (state.ab.haveStatsA) stats = withShadowTime(std::move(stats), state.ab.statsA);

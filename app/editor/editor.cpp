@@ -11,6 +11,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -153,15 +154,16 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
 }
 
 Settings Editor::previewed(Settings s) const {
-    if (state_.animateLight && state_.animatedAzimuthDeg != 0.0) {
+    if (state_.animateLight && state_.animatedAzimuthDeg != 0.0 && state_.selectedLight < s.lights.size()) {
+        LightSettings& light = s.lights[state_.selectedLight];
         // The preview turns the light around the vertical axis through the scene's centre.
         const glm::dmat4 turn =
             glm::rotate(glm::dmat4(1.0), glm::radians(state_.animatedAzimuthDeg), glm::dvec3(0.0, 1.0, 0.0));
-        s.lights[0].direction = glm::vec3(turn * glm::dvec4(glm::dvec3(s.lights[0].direction), 0.0));
+        light.direction = glm::vec3(turn * glm::dvec4(glm::dvec3(light.direction), 0.0));
         const glm::dvec3 center = state_.scene && !state_.scene->bounds.empty
                                       ? glm::dvec3(state_.scene->bounds.center())
                                       : glm::dvec3(0.0);
-        s.lights[0].position = glm::vec3(center + glm::dvec3(turn * glm::dvec4(glm::dvec3(s.lights[0].position) - center, 0.0)));
+        light.position = glm::vec3(center + glm::dvec3(turn * glm::dvec4(glm::dvec3(light.position) - center, 0.0)));
     }
     return s;
 }
@@ -180,7 +182,7 @@ void Editor::renderViewport() {
         lastRendered_.reset();
     }
     RenderKey key{effectiveSettings(), orbit_->eye(), orbit_->target(), state_.scene.get(), w, h,
-                  state_.showLightFrustum};
+                  state_.showLightFrustum, state_.showLightFrustum ? state_.selectedLight : 0};
     // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
     // it is stale); a settings or scene change still renders, so the shadow map, its viewer and Stats follow the edit.
     const bool overlayHidesView = state_.accuracy.showOverlay && bool(state_.accuracy.overlayTexture);
@@ -203,17 +205,24 @@ void Editor::renderViewport() {
     for (const std::string& warning : stats.warnings)
         if (!state_.lastMessage() || state_.lastMessage()->text != warning) state_.say(warning, true);
     // A map the GPU refused (too big, out of memory): the settings go back to the map still in use.
-    if (stats.shadowMapResolution != state_.settings.lights[0].shadow.resolution ||
-        stats.shadowMapFormat != state_.settings.lights[0].shadow.format) {
-        state_.fieldErrors["shadow.resolution"] =
+    // The frame reports its first view's map: the GPU may have refused that light's size or format.
+    const auto first = std::find_if(stats.views.begin(), stats.views.end(), [](const auto& v) { return v.hasView; });
+    if (first != stats.views.end() && !state_.settings.useSceneLights && first->light < state_.settings.lights.size() &&
+        (stats.shadowMapResolution != state_.settings.lights[first->light].shadow.resolution ||
+         stats.shadowMapFormat != state_.settings.lights[first->light].shadow.format)) {
+        const std::size_t light = first->light;
+        state_.fieldErrors["lights." + std::to_string(light) + ".shadow.resolution"] =
             stats.warnings.empty() ? "the GPU refused this shadow map; the previous one is kept" : stats.warnings.front();
-        state_.settings.lights[0].shadow.resolution = stats.shadowMapResolution;
-        state_.settings.lights[0].shadow.format = stats.shadowMapFormat;
-        key.settings.lights[0].shadow.resolution = stats.shadowMapResolution;
-        key.settings.lights[0].shadow.format = stats.shadowMapFormat;
+        for (Settings* s : {&state_.settings, &key.settings}) {
+            s->lights[light].shadow.resolution = stats.shadowMapResolution;
+            s->lights[light].shadow.format = stats.shadowMapFormat;
+        }
     }
+    state_.clampSelectedLight();
     if (state_.showLightFrustum) {
-        if (std::string error = frustum_->draw(stats, target_); !error.empty())
+        // The selected light's volume: its one view, or a point light's six cube faces.
+        if (std::string error = frustum_->draw(stats, lightVolumes(stats, state_.selectedLight), target_);
+            !error.empty())
             state_.say("light frustum: " + error, true);
     }
     state_.lastFrameMs = (secondsNow() - start) * 1000.0;
@@ -232,11 +241,14 @@ void Editor::renderViewport() {
 void Editor::renderMapPicture(bool mapRedrawn) {
     MapViewerState& v = state_.viewer;
     mapPictureStale_ = mapPictureStale_ || mapRedrawn;
-    if (v.width < 8 || v.height < 8 || !state_.haveStats || !renderer_->shadowMap().valid()) return;
+    const ShadowViewStats* view = state_.shownView();
+    const ShadowMap* map = view ? renderer_->viewMap(view->light, view->face) : nullptr;
+    if (v.width < 8 || v.height < 8 || !map || !map->valid()) return;
+    const std::pair<std::size_t, int> shown{view->light, view->face};
     const bool changed = mapPictureStale_ || v.width != lastMapWidth_ || v.height != lastMapHeight_ ||
-                         !sameOptions(v.options, lastMapOptions_) || v.texture == 0;
+                         !sameOptions(v.options, lastMapOptions_) || v.texture == 0 || shown != lastMapView_;
     if (changed) {
-        v.error = mapView_->render(renderer_->shadowMap(), state_.stats.light, mapPictureStale_, v.options, v.width,
+        v.error = mapView_->render(*map, view->space, mapPictureStale_ || shown != lastMapView_, v.options, v.width,
                                    v.height);
         if (v.error.empty()) {
             v.texture = mapView_->texture();
@@ -248,10 +260,11 @@ void Editor::renderMapPicture(bool mapRedrawn) {
         lastMapOptions_ = v.options;
         lastMapWidth_ = v.width;
         lastMapHeight_ = v.height;
+        lastMapView_ = shown;
         mapPictureStale_ = false;
     }
     v.hoverDepth.reset();
-    if (v.hoverTexel) v.hoverDepth = mapView_->depthAt(renderer_->shadowMap(), v.hoverTexel->x, v.hoverTexel->y);
+    if (v.hoverTexel) v.hoverDepth = mapView_->depthAt(*map, v.hoverTexel->x, v.hoverTexel->y);
 }
 
 void Editor::takeScreenshot() {
@@ -319,6 +332,7 @@ void Editor::performSwitch(const PendingSwitch& pending) {
                 break;
             }
             state_.fieldErrors.clear();
+            state_.selectedLight = 0;  // another preset's lights: start at its first
             state_.say("preset " + state_.preset.name() + " loaded from " + pending.target);
             if (state_.scene) resetCameraFromSettings(/*announce=*/true);
             break;
@@ -355,6 +369,7 @@ void Editor::openSaveAs() {
 void Editor::revertPreset() {
     state_.preset.revert(state_.settings);
     state_.fieldErrors.clear();
+    state_.clampSelectedLight();  // the saved preset may have fewer lights
     state_.say("reverted to preset " + state_.preset.name());
 }
 
@@ -442,7 +457,7 @@ bool Editor::busy() const {
     if (!lastRendered_) return true;
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
-                        state_.showLightFrustum};
+                        state_.showLightFrustum,   state_.showLightFrustum ? state_.selectedLight : 0};
     return !(key == *lastRendered_) || mapPictureStale_ || abViewDue();
 }
 

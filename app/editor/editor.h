@@ -60,6 +60,8 @@ public:
     EditorState& state() { return state_; }
     const Renderer& renderer() const { return *renderer_; }
     const RenderTarget& viewportTarget() const { return target_; }
+    // The Shadow map viewer's newest picture (RGBA, row 0 = bottom), for tests.
+    std::vector<std::uint8_t> mapViewPixels() const { return mapView_->readPixels(); }
     const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
     ImVec4 viewportRect() const { return viewportRect_; }  // x, y, w, h in window pixels
 
@@ -91,6 +93,7 @@ private:
         const Scene* scene = nullptr;
         int width = 0, height = 0;
         bool frustum = false;
+        std::size_t frustumLight = 0;  // whose volume the overlay draws (the selected light)
         bool operator==(const RenderKey&) const = default;
     };
 
@@ -175,6 +178,7 @@ private:
     std::optional<std::string> windowScreenshotPath_;
     bool mapPictureStale_ = true;
     ShadowMapViewOptions lastMapOptions_;
+    std::pair<std::size_t, int> lastMapView_{0, -2};  // (light, face) of the viewer's newest picture
     int lastMapWidth_ = 0, lastMapHeight_ = 0;
     double lastRenderTime_ = 0.0;
 

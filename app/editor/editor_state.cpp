@@ -2,6 +2,7 @@
 
 #include "editor/message_log.h"
 #include "light/depth_format_change.h"
+#include "settings/settings_fields.h"
 
 #include <iostream>
 
@@ -19,15 +20,21 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
     const std::string error = applyEdit(settings, key, value, limits);
     if (error.empty()) {
         fieldErrors.erase(std::string(key));
-        if (key == "shadow.depthBias" || key == "shadow.depthFormat") undo.reset();  // its numbers are gone
-        if (key == "shadow.depthFormat" && settings.lights[0].shadow.format != before.lights[0].shadow.format) {
+        // The key within its light and the light it names: aliases ("shadow.depthBias") and "lights.N." alike.
+        const SettingsField* field = findSettingsField(key);
+        const std::string_view within = field ? field->lightKey() : std::string_view{};
+        const std::size_t light = field && field->light >= 0 ? std::size_t(field->light) : 0;
+        if (within == "shadow.depthBias" || within == "shadow.depthFormat") undo.reset();  // its numbers are gone
+        if (within == "shadow.depthFormat" && light < before.lights.size() &&
+            settings.lights[light].shadow.format != before.lights[light].shadow.format) {
             // The receivers' depth decides D32F's step; the newest frame knows it.
             const std::optional<double> receiverDepth =
                 haveStats && stats.bias.valid ? std::optional(stats.bias.receiverDepthMedian) : std::nullopt;
-            const DepthFormatChange change = changeDepthFormat(before.lights[0].shadow, settings.lights[0].shadow.format, receiverDepth);
+            const DepthFormatChange change =
+                changeDepthFormat(before.lights[light].shadow, settings.lights[light].shadow.format, receiverDepth);
             if (!change.note.empty()) {
-                settings.lights[0].shadow = change.shadow;
-                undo = UndoStep{before, change.note};
+                settings.lights[light].shadow = change.shadow;
+                undo = UndoStep{before, change.note, light};
                 say(change.note);
             }
         }
@@ -40,12 +47,48 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
 
 void EditorState::undoLastStep() {
     if (!undo) return;
-    // Only what the step changed: edits made since (slope, filter, ...) stay.
-    settings.lights[0].shadow.format = undo->before.lights[0].shadow.format;
-    settings.lights[0].shadow.depthBias = undo->before.lights[0].shadow.depthBias;
+    const std::size_t light = undo->light;
+    if (light < settings.lights.size() && light < undo->before.lights.size()) {
+        // Only what the step changed: edits made since (slope, filter, ...) stay.
+        settings.lights[light].shadow.format = undo->before.lights[light].shadow.format;
+        settings.lights[light].shadow.depthBias = undo->before.lights[light].shadow.depthBias;
+    }
     const std::string note = undo->note;
     undo.reset();
     say("Undone: " + note);
+}
+
+std::string EditorState::lightKey(std::string_view key) const {
+    return "lights." + std::to_string(selectedLight) + "." + std::string(key);
+}
+
+const LightSettings* EditorState::selected() const {
+    return selectedLight < settings.lights.size() ? &settings.lights[selectedLight] : nullptr;
+}
+
+void EditorState::clampSelectedLight() {
+    if (selectedLight >= settings.lights.size()) selectedLight = settings.lights.empty() ? 0 : settings.lights.size() - 1;
+}
+
+const ShadowViewStats* EditorState::shownView() const {
+    if (!haveStats) return nullptr;
+    const ShadowViewStats* firstOfSelected = nullptr;
+    const ShadowViewStats* first = nullptr;
+    for (const ShadowViewStats& v : stats.views) {
+        if (!v.hasView) continue;
+        if (v.light == viewer.light && v.face == viewer.face) return &v;
+        if (!firstOfSelected && v.light == selectedLight) firstOfSelected = &v;
+        if (!first) first = &v;
+    }
+    return firstOfSelected ? firstOfSelected : first;
+}
+
+std::vector<const ShadowViewStats*> EditorState::selectedLightViews() const {
+    std::vector<const ShadowViewStats*> views;
+    if (!haveStats) return views;
+    for (const ShadowViewStats& v : stats.views)
+        if (v.hasView && v.light == selectedLight) views.push_back(&v);
+    return views;
 }
 
 void EditorState::say(std::string text, bool error) {

@@ -40,6 +40,7 @@ struct Message {
 struct UndoStep {
     Settings before;   // the settings before the user's edit
     std::string note;  // what was changed and why, the status message it goes with
+    std::size_t light = 0;  // the light whose format and DepthBias the step changed
 };
 
 struct FrameHistory {
@@ -60,11 +61,18 @@ struct MapViewerState {
     int textureWidth = 0, textureHeight = 0;
     ShownDepthRange shown;
     bool gridShown = false;
+    // The view the viewer shows (a light and, for a point light, a cube face); when the frame has no such view the
+    // viewer shows the selected light's first view, else the frame's first one (see EditorState::shownView).
+    std::size_t light = 0;
+    int face = -1;
     std::string error;                      // why the newest picture could not be made
 };
 
 struct EditorState {
     Settings settings;                              // what the next frame renders
+    // The light the Light, Shadow map and Projection panels edit (an index into settings.lights; kept in range by
+    // clampSelectedLight, which every removal and preset load calls). With no lights there is nothing to edit.
+    std::size_t selectedLight = 0;
     std::map<std::string, std::string> fieldErrors;  // key -> why its last edit was refused (cleared on success)
     EditLimits limits;
 
@@ -111,6 +119,17 @@ struct EditorState {
     std::optional<UndoStep> undo;   // offered by the status line while its note is the newest message
     ControlRects controls;
     double time = 0.0;
+
+    // "lights.<selectedLight>.<key>" for a key within a light ("shadow.depthBias", "type"): the panels' one way
+    // to name the selected light's fields.
+    std::string lightKey(std::string_view key) const;
+    // The selected light, or nullptr when there are no lights.
+    const LightSettings* selected() const;
+    void clampSelectedLight();
+    // The frame's view the viewer shows (see MapViewerState::light/face), nullptr when no light casts.
+    const ShadowViewStats* shownView() const;
+    // The selected light's views that have a light space (a point light's six faces), for its volume overlay.
+    std::vector<const ShadowViewStats*> selectedLightViews() const;
 
     // Applies an edit through the key table; on refusal records it under the key and as an error message.
     // A new shadow.depthFormat re-expresses DepthBias so it keeps its world size (see depth_format_change.h) and

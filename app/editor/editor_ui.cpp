@@ -334,6 +334,9 @@ void Editor::drawPanels() {
         // The title may carry the unsaved marker; "###" keeps the window's identity (and imgui.ini entry) stable.
         std::string title = panel.title;
         if (std::string(panel.title) == "Presets" && state_.preset.dirty(state_.settings)) title += " *";
+        if (panel.editsSelectedLight && state_.selected())
+            title += ": " + std::to_string(state_.selectedLight) + " " +
+                     lightTypeText(state_.settings, state_.selectedLight);
         title += std::string("###") + panel.title;
         const bool open = ImGui::Begin(title.c_str());
         const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();

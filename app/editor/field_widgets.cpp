@@ -14,14 +14,27 @@ const SettingsField& fieldOf(const char* key) {
     return *field;
 }
 
+}  // namespace
+
+std::string controlName(const char* key) {
+    const SettingsField& field = fieldOf(key);
+    if (field.light < 0) return field.key;
+    // The panels show one light at a time, so a light's control keeps its schema-1 name whichever light it edits.
+    if (field.group().empty()) return "light." + std::string(field.lightKey());
+    return std::string(field.lightKey());
+}
+
+namespace {
+
 // Shared tail of every bound control. The recorded rectangle is the control's frame, without its label, so a
 // click at a fraction of its width means that fraction of a slider's range.
 void finishControl(EditorState& state, const char* key) {
-    state.controls.recordLastItem(key);
-    if (const ControlRect* r = state.controls.find(key); r && r->w > ImGui::CalcItemWidth()) {
+    const std::string name = controlName(key);
+    state.controls.recordLastItem(name);
+    if (const ControlRect* r = state.controls.find(name); r && r->w > ImGui::CalcItemWidth()) {
         ControlRect frame = *r;
         frame.w = ImGui::CalcItemWidth();
-        state.controls.record(key, frame);
+        state.controls.record(name, frame);
     }
     fieldHelp(state, key);
     showFieldError(state, key);
@@ -71,13 +84,28 @@ bool comboField(EditorState& state, const char* key, const char* label) {
             const bool selected = options[i] == current;
             if (ImGui::Selectable(text(options[i]).c_str(), selected) && !selected)
                 changed = state.edit(key, options[i]);
-            state.controls.recordLastItem(std::string(key) + "=" + text(options[i]));
+            state.controls.recordLastItem(controlName(key) + "=" + text(options[i]));
             if (selected) ImGui::SetItemDefaultFocus();
         }
         ImGui::EndCombo();
     }
     finishControl(state, key);
     return changed;
+}
+
+std::string lightTypeText(const Settings& settings, std::size_t light) {
+    // The key table's name for the type, so the editor spells it as presets do.
+    const nlohmann::json type = fieldOf(("lights." + std::to_string(light) + ".type").c_str()).get(settings);
+    return type.is_string() ? type.get<std::string>() : "none";
+}
+
+bool lightHeader(EditorState& state) {
+    const LightSettings* light = state.selected();
+    if (!light) {
+        ImGui::TextDisabled("no lights: the scene is lit by ambient only (Lights panel: add one)");
+        return false;
+    }
+    return true;
 }
 
 void fieldHelp(const EditorState&, const char* key) {

@@ -18,6 +18,16 @@ bool checkboxField(EditorState& state, const char* key, const char* label);
 // A combo over the key's enum names (or its allowed integers).
 bool comboField(EditorState& state, const char* key, const char* label);
 
+// The name a bound control is recorded under (ControlRects): the key itself for a global field, and for a light's
+// field its schema-1 name ("shadow.depthBias", "light.type") whichever light it edits.
+std::string controlName(const char* key);
+
+// "directional", "spot" or "point", as presets spell it.
+std::string lightTypeText(const Settings& settings, std::size_t light);
+
+// For the panels that edit the selected light (their title names it): false, with a note, when there are none.
+bool lightHeader(EditorState& state);
+
 // Tooltip with the key, its meaning and allowed values; and the key's last refusal, in red, under the control.
 void fieldHelp(const EditorState& state, const char* key);
 void showFieldError(const EditorState& state, const char* key);

@@ -17,4 +17,10 @@ struct EditLimits {
 // Applies `value` to `key` in `settings`. Returns "" when applied, else the refusal (settings untouched).
 std::string applyEdit(Settings& settings, std::string_view key, const nlohmann::json& value, const EditLimits& limits);
 
+// The Lights panel's list changes that are not one key: removing light `index` (the later ones move up) and
+// appending a copy of it. Each validates the result; "" when done, else why (settings untouched). Zero lights are
+// allowed: the scene is then lit by the ambient term only.
+std::string removeLight(Settings& settings, std::size_t index);
+std::string duplicateLight(Settings& settings, std::size_t index);
+
 }  // namespace shadowlab::editor

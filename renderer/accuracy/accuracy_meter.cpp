@@ -4,6 +4,7 @@
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/gbuffer_pass.h"
 #include "accuracy/gpu_accuracy_counter.h"
+#include "accuracy/light_isolation.h"
 #include "accuracy/shadow_boundary.h"
 #include "frame/renderer.h"
 #include "reference/embree_scene.h"
@@ -36,11 +37,6 @@ struct SurfaceKey {
     bool operator==(const SurfaceKey&) const = default;
 };
 
-bool sameLight(const ReferenceLight& a, const ReferenceLight& b) {
-    return a.spot == b.spot && a.direction == b.direction && (!a.spot || (a.position == b.position &&
-                                                                          a.cosHalfCone == b.cosHalfCone));
-}
-
 void setStage(AccuracyProgress* progress, float fraction, const char* stage) {
     if (!progress) return;
     progress->fraction = progress->base + progress->span * fraction;
@@ -63,33 +59,22 @@ std::string coarseMapWarning(const AccuracyReport& r) {
     return text;
 }
 
-ReferenceLight referenceLight(const FrameStats& stats) {
-    ReferenceLight light;
-    light.spot = stats.light.perspective;
-    light.direction = stats.light.direction;
-    light.position = stats.light.position;
-    light.cosHalfCone = std::cos(std::atan(stats.light.tanHalfFov));
-    return light;
-}
-
 // Per-pixel unit conversions for the edge error: a shadow-map texel's world size at p, and a main-view pixel's
 // world size at p's depth (both the CPU metrics and the GPU counter's upload use these).
 struct EdgeUnits {
     const SurfaceSamples& samples;
-    const LightSpace& light;
+    const ShadowBoundary& boundary;  // knows the texel of every light kind (a point light's: its cube face's)
     glm::dvec3 eye, forward;
     double pixelPerDepth;
 
-    EdgeUnits(const SurfaceSamples& s, const LightSpace& l, const Camera& camera, const glm::dvec3& origin, int height)
+    EdgeUnits(const SurfaceSamples& s, const ShadowBoundary& b, const Camera& camera, const glm::dvec3& origin,
+              int height)
         : samples(s),
-          light(l),
+          boundary(b),
           eye(camera.position - origin),
           forward(glm::normalize(camera.target - camera.position)),
           pixelPerDepth(2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) / double(height)) {}
-    double worldPerTexel(std::size_t i) const {
-        return light.perspective ? light.texelSizeAt(glm::dot(samples.point[i] - light.position, light.direction))
-                                 : light.texelWorldSize;
-    }
+    double worldPerTexel(std::size_t i) const { return boundary.texelWorldSizeAt(samples.point[i]); }
     double worldPerPixel(std::size_t i) const { return glm::dot(samples.point[i] - eye, forward) * pixelPerDepth; }
 };
 
@@ -200,7 +185,7 @@ void AccuracyMeter::sceneChanged() {
     impl_->renderer.sceneChanged();
 }
 
-AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settings, const Camera& camera, int width,
+AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given, const Camera& camera, int width,
                                       int height, AccuracyProgress* progress) {
     Impl& m = *impl_;
     const auto start = Clock::now();
@@ -215,7 +200,11 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
         return fail("cancelled");
     };
     if (width < 1 || height < 1) return fail("view size must be at least 1x1");
-    if (std::string error = invalidSettings(settings); !error.empty()) return fail(error);
+    if (std::string error = invalidSettings(given); !error.empty()) return fail(error);
+    std::string isolationError;
+    const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
+    if (!isolated) return fail(isolationError);
+    const Settings& settings = *isolated;
 
     // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
     setStage(progress, 0.0f, "rendering the tool's frame");
@@ -280,8 +269,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     if (cancelled(progress)) return stop();
 
     // Exact visibility, once per light.
-    const ReferenceLight light = referenceLight(stats);
-    const bool visibilityReused = m.visibilityLight && sameLight(*m.visibilityLight, light);
+    const ReferenceLight light = referenceLight(settings.lights[0], m.origin);
+    const bool visibilityReused = m.visibilityLight && *m.visibilityLight == light;
     if (!visibilityReused) {
         setStage(progress, 0.45f, "tracing shadow rays");
         m.visibilityLight.reset();
@@ -345,7 +334,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
         }
     });
 
-    const EdgeUnits units(m.samples, stats.light, camera, m.origin, height);
+    const EdgeUnits units(m.samples, boundary, camera, m.origin, height);
     MetricsInput input;
     input.classes = &m.visibility.classes;
     input.shadowFactor = &shadowFactor;
@@ -357,8 +346,10 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     input.worldPerPixel = [&](std::size_t i) { return units.worldPerPixel(i); };
     const MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
+    report.pixelOnBoundary.assign(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
-        report.counts.boundaryPixels += boundary.onBoundary(i) ? 1 : 0;
+        report.pixelOnBoundary[i] = boundary.onBoundary(i) ? 1 : 0;
+        report.counts.boundaryPixels += report.pixelOnBoundary[i];
         const PixelClass c = m.visibility.classes[i];
         if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
             ++report.counts.shadowedNearEdge;
@@ -373,6 +364,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     report.pixelClass = m.visibility.classes;
     report.pixelShadow = shadowFactor;
     report.pixelCause = metrics.causes;
+    report.pixelMark = metrics.marks;
+    report.pixelMeasured = metrics.measured;
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");
@@ -380,7 +373,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& settin
     return report;
 }
 
-AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& settings, const Camera& camera,
+AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& given, const Camera& camera,
                                         int width, int height) {
     Impl& m = *impl_;
     const auto start = Clock::now();
@@ -393,7 +386,11 @@ AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& sett
         return report;
     };
     if (width < 1 || height < 1) return fail("view size must be at least 1x1");
-    if (std::string error = invalidSettings(settings); !error.empty()) return fail(error);
+    if (std::string error = invalidSettings(given); !error.empty()) return fail(error);
+    std::string isolationError;
+    const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
+    if (!isolated) return fail(isolationError);
+    const Settings& settings = *isolated;
     // The reference must describe this view: scene, camera and size here, the light after the frame says where.
     const SurfaceKey surfaceKey{camera.position, camera.target, camera.fovYDeg, camera.nearPlane, camera.farPlane,
                                 width, height};
@@ -406,8 +403,8 @@ AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& sett
     if (!stats.ok) return fail(stats.error);
     report.warnings = stats.warnings;
     report.cost.toolFrameMs = msSince(t);
-    const ReferenceLight light = referenceLight(stats);
-    if (!m.visibilityLight || !sameLight(*m.visibilityLight, light))
+    const ReferenceLight light = referenceLight(settings.lights[0], m.origin);
+    if (!m.visibilityLight || !(*m.visibilityLight == light))
         return fail("no reference for this light (it moved): measure it first", true);
     report.cost.bvhReused = report.cost.referenceReused = true;
     report.cost.triangles = m.bvh->triangles();
@@ -421,7 +418,7 @@ AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& sett
     if (!m.counter) m.counter = std::make_unique<GpuAccuracyCounter>();
     if (!m.counterCurrent) {
         t = Clock::now();
-        const EdgeUnits units(m.samples, stats.light, camera, m.origin, height);
+        const EdgeUnits units(m.samples, boundary, camera, m.origin, height);
         const std::size_t count = std::size_t(width) * std::size_t(height);
         std::vector<float> worldPerTexel(count, 0.0f), screenPerTexel(count, 0.0f);
         for (std::size_t i = 0; i < count; ++i) {

@@ -51,6 +51,8 @@ struct AccuracyCounts {
     std::size_t background = 0;        // no surface under the pixel
     std::size_t facingAway = 0;        // geometric normal faces away from the light: unlit by the main pass, not scored
     std::size_t outsideCone = 0;       // spot light: outside the cone (V = 0, S = 0 expected; scored as shadowed)
+    std::size_t outOfRange = 0;        // spot / point light: beyond its range: not reached, neither lit nor shadowed,
+                                       // not scored
     std::size_t nonFinite = 0;         // a non-finite point, normal or S (must stay 0)
     std::size_t measured = 0;          // pixels scored
     std::size_t lit = 0;               // measured with V = 1
@@ -67,6 +69,9 @@ struct AccuracyCounts {
     std::array<std::size_t, kCauseCount> causePixels{};  // mismatched pixels per MismatchCause
     std::array<std::size_t, kCauseCount> causeWrong{};   // wrong pixels per MismatchCause
 };
+
+// A measured pixel's verdict: acne / leak (visibly wrong beyond k), or the same within k of a true edge.
+enum class PixelMark : std::uint8_t { None, Acne, AcneNearEdge, Leak, LeakNearEdge };
 
 // What the reference and the measurement cost (milliseconds unless named otherwise).
 struct AccuracyCost {
@@ -129,6 +134,9 @@ struct AccuracyReport : AccuracyNumbers {
     std::vector<PixelClass> pixelClass;
     std::vector<float> pixelShadow;
     std::vector<MismatchCause> pixelCause;
+    std::vector<PixelMark> pixelMark;          // for combining lights (light_accuracy.h)
+    std::vector<std::uint8_t> pixelMeasured;   // 1 where the pixel is scored for this light
+    std::vector<std::uint8_t> pixelOnBoundary; // 1 on the true boundary's thin line
 
     double causePercentOfWrong(MismatchCause cause) const;  // share of wrong pixels this cause explains
     // The cause of the most mismatched pixels beyond k (else "within k of a true edge"; None when nothing mismatches).
@@ -146,7 +154,8 @@ public:
     AccuracyMeter(const AccuracyMeter&) = delete;
     AccuracyMeter& operator=(const AccuracyMeter&) = delete;
 
-    // Measures one view. Invalid settings, a size the GPU refuses or a cancel give ok = false with a reason; nothing
+    // Measures one view for light 0 of the effective lights, alone (light_isolation.h: its shadow factor is the one
+    // it has in the full frame); light_accuracy.h measures every light. Invalid settings, a size the GPU refuses or a cancel give ok = false with a reason; nothing
     // throws for user input. The scene must stay alive and unchanged while cached (call sceneChanged() after edits).
     AccuracyReport measure(const Scene& scene, const Settings& settings, const Camera& camera, int width, int height,
                            AccuracyProgress* progress = nullptr);

@@ -29,6 +29,7 @@ MetricsResult computeMetrics(const MetricsInput& in) {
     MetricsResult r;
     AccuracyCounts& c = r.counts;
     c.pixels = classes.size();
+    r.measured.assign(classes.size(), 0);
     r.marks.assign(classes.size(), PixelMark::None);
     r.causes.assign(classes.size(), MismatchCause::None);
     std::vector<double> texels, world, screen;
@@ -41,6 +42,7 @@ MetricsResult computeMetrics(const MetricsInput& in) {
             case PixelClass::Background: ++c.background; continue;
             case PixelClass::NonFinite: ++c.nonFinite; continue;
             case PixelClass::FacingAway: ++c.facingAway; continue;
+            case PixelClass::OutOfRange: ++c.outOfRange; continue;
             case PixelClass::OutsideCone: ++c.outsideCone; break;
             default: break;
         }
@@ -51,6 +53,7 @@ MetricsResult computeMetrics(const MetricsInput& in) {
             continue;
         }
         ++c.measured;
+        r.measured[i] = 1;
         const bool lit = isLit(cls);
         ++(lit ? c.lit : c.shadowed);
         const double error = std::abs(double(s) - (lit ? 1.0 : 0.0));

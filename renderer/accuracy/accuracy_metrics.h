@@ -30,8 +30,6 @@ inline double acceptanceRadiusTexels(const FilterSettings& filter) { return filt
 // Is the tool's S visibly different from the reference (one 8-bit step or more toward the wrong side)?
 inline bool visiblyWrong(bool lit, float s) { return lit ? s < kLitBelow : s > kVisibleStep; }
 
-enum class PixelMark : std::uint8_t { None, Acne, AcneNearEdge, Leak, LeakNearEdge };
-
 struct MetricsInput {
     const std::vector<PixelClass>* classes = nullptr;  // the reference's verdict per pixel
     const std::vector<float>* shadowFactor = nullptr;  // the tool's S per pixel
@@ -48,6 +46,7 @@ struct MetricsInput {
 };
 
 struct MetricsResult : AccuracyNumbers {
+    std::vector<std::uint8_t> measured;  // per pixel: 1 when scored (counted in counts.measured)
     std::vector<PixelMark> marks;        // per pixel, for the error overlay
     std::vector<MismatchCause> causes;   // per pixel, for the cause overlay
 };

@@ -85,14 +85,27 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     lit = withEffectiveLights(start, scene);
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
     std::string lightError;
-    const std::optional<LightSpace> lightSpace = buildLightSpace(lit, scene.bounds, origin, lightError);
-    if (!lightSpace) {
+    // A point light's six faces share near/far but see different receivers: the median of their figures.
+    std::vector<LightSpace> spaces;
+    if (lit.lights[0].type == LightType::Point) {
+        if (const auto faces = buildCubeFaceSpaces(lit.lights[0], scene.bounds, origin, lightError))
+            spaces.assign(faces->begin(), faces->end());
+    } else if (const auto space = buildLightSpace(lit, scene.bounds, origin, lightError)) {
+        spaces.push_back(*space);
+    }
+    if (spaces.empty()) {
         result.error = lightError;
         return finish();
     }
     // At the receivers' actual depths: D32F's step follows the depth's exponent.
-    const double unitTexels =
-        depthBiasUnitTexels(*lightSpace, start.lights[0].shadow.format, receiverDepths(scene, *lightSpace, origin));
+    std::vector<double> perView;
+    for (const LightSpace& space : spaces) {
+        const ReceiverDepths receivers = receiverDepths(scene, space, origin);
+        const double texels = depthBiasUnitTexels(space, start.lights[0].shadow.format, receivers);
+        if (receivers.valid && texels > 0.0) perView.push_back(texels);
+    }
+    std::sort(perView.begin(), perView.end());
+    const double unitTexels = perView.empty() ? 0.0 : perView[perView.size() / 2];
     if (!(unitTexels > 0.0)) {
         result.error = "cannot relate DepthBias to texels for this light";
         return finish();

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab {
@@ -16,15 +17,25 @@ constexpr CauseInfo kCauses[kCauseCount] = {
     {"casterCulled", "caster culled in the shadow pass",
      "set shadow.cullMode=none (or make the material doubleSided)", 230, 60, 230},
     {"outsideVolume", "outside the light's volume",
-     "set projection.autoFit=true (or sampler.addressMode=border)", 40, 200, 200},
+     "set projection.autoFit=true (or sampler.addressMode=border); point light: beyond its range or far plane",
+     40, 200, 200},
     {"nearPlaneClip", "caster clipped by the near plane", "set projection.depthClamp=true or lower projection.near",
      250, 150, 30},
     {"alphaTest", "alpha test", "check the material's alphaCutoff and texture coordinates", 120, 220, 60},
     {"nearEdge", "within k of a true edge", "raise shadow.resolution or use a smaller filter.kernel", 120, 100, 70},
 };
 
-// The receiver's place in the map: outside [-1, 1] laterally, behind the light, or beyond the far plane.
-bool outsideVolume(const LightSpace& light, const glm::dvec3& p) {
+// A point light's cube face holding p sees it at this depth: its largest coordinate from the light (90-degree faces).
+double cubeFaceDepth(const ReferenceLight& light, const glm::dvec3& p) {
+    const glm::dvec3 d = glm::abs(p - light.position);
+    return std::max({d.x, d.y, d.z});
+}
+
+// The receiver's place in the map: outside [-1, 1] laterally, behind the light, or beyond the far plane. A point
+// light's cube covers every direction: only beyond its range or the faces' far plane is outside.
+bool outsideVolume(const ReferenceLight& reference, const LightSpace& light, const glm::dvec3& p) {
+    if (reference.type == LightType::Point)
+        return beyondRange(reference, p) || cubeFaceDepth(reference, p) > light.farPlane;
     const glm::dvec4 clip = light.viewProjection() * glm::dvec4(p, 1.0);
     if (!(clip.w > 0.0)) return true;
     const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
@@ -44,15 +55,15 @@ const std::array<MismatchCause, kCauseCount - 1>& allCauses() {
 
 MismatchCause decideCause(const CauseContext& c, const glm::dvec3& p, const glm::dvec3& n, PixelClass reference,
                           double distance, double k) {
-    if (reference == PixelClass::OutsideCone || outsideVolume(c.lightSpace, p)) return MismatchCause::OutsideVolume;
+    if (reference == PixelClass::OutsideCone || outsideVolume(c.light, c.lightSpace, p)) return MismatchCause::OutsideVolume;
     const glm::dvec3 l = towardLight(c.light, p);
     // The ray the map sees: from the light side down to just above the receiver.
     const double offset = 1e-5 * (glm::length(p) + c.sceneRadius);
     const glm::dvec3 receiver = p + n * offset;
-    const double length = c.light.spot ? glm::length(c.light.position - receiver) : 4.0 * c.sceneRadius + 1.0;
-    const glm::dvec3 start = c.light.spot ? c.light.position : receiver + l * length;
+    const double length = c.light.positional() ? glm::length(c.light.position - receiver) : 4.0 * c.sceneRadius + 1.0;
+    const glm::dvec3 start = c.light.positional() ? c.light.position : receiver + l * length;
     HitRules rules;
-    rules.spot = c.light.spot;
+    rules.positional = c.light.positional();
     rules.lightDirection = glm::vec3(c.light.direction);
     rules.lightPosition = glm::vec3(c.light.position);
     rules.cullMode = c.cullMode;
@@ -63,7 +74,8 @@ MismatchCause decideCause(const CauseContext& c, const glm::dvec3& p, const glm:
         if (!kept.hit) return MismatchCause::CasterCulled;
         // The caster's distance along the light from the light's eye (near plane's frame).
         const glm::dvec3 caster = start - l * double(kept.t);
-        const double casterDepth = -(c.lightSpace.view * glm::dvec4(caster, 1.0)).z;
+        const double casterDepth = c.light.type == LightType::Point ? cubeFaceDepth(c.light, caster)
+                                                                     : -(c.lightSpace.view * glm::dvec4(caster, 1.0)).z;
         if (!c.depthClamp && casterDepth < c.lightSpace.nearPlane) return MismatchCause::NearPlaneClip;
         if (distance <= k) return MismatchCause::NearEdge;
         return MismatchCause::BiasOverGap;

@@ -18,7 +18,7 @@ enum class MismatchCause : std::uint8_t {
     SelfShadowing,  // a truly lit receiver shadows itself: bias below its own depth slope (acne)
     BiasOverGap,    // the map holds the caster, but the bias pushed it behind the receiver (Peter Panning)
     CasterCulled,   // every occluder on the ray is a face the shadow pass culls (single-sided back face, cullMode)
-    OutsideVolume,  // the receiver lies outside the light's volume: the address mode / border policy decides S
+    OutsideVolume,  // outside the light's volume (point light: beyond its range / far plane): the border policy decides S
     NearPlaneClip,  // the caster lies before the light's near plane and depth clamp is off
     AlphaTest,      // the map's alpha test and the exact one disagree (a MASK face on the ray)
     NearEdge,       // within k texels of a true shadow boundary: resolution / filter blur

@@ -17,7 +17,10 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr int kProbeDirections = 16;
 constexpr double kProbeStepTexels = 0.5;
 
-bool hasVisibility(PixelClass c) { return c != PixelClass::Background && c != PixelClass::NonFinite; }
+// Out of range: the light does not reach it, so it is on neither side of a shadow boundary.
+bool hasVisibility(PixelClass c) {
+    return c != PixelClass::Background && c != PixelClass::NonFinite && c != PixelClass::OutOfRange;
+}
 
 glm::dvec2 toTexels(const LightSpace& light, const glm::dvec3& p) {
     const glm::dvec4 clip = light.viewProjection() * glm::dvec4(p, 1.0);
@@ -25,6 +28,27 @@ glm::dvec2 toTexels(const LightSpace& light, const glm::dvec3& p) {
     const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
     return (ndc * 0.5 + 0.5) * double(light.resolution);
 }
+
+// Point light: d = p - light position. The cube face that sees d (0..5 = +X, -X, +Y, -Y, +Z, -Z), and d's texels on
+// the plane of face f (its two other axes over its depth; NaN behind the face or more than 63 degrees off its axis).
+constexpr double kFaceExtent = 2.0;  // |tan| on a face's plane: 1 = the face's edge, 2 = 63 degrees
+
+int cubeFace(const glm::dvec3& d) {
+    const glm::dvec3 a = glm::abs(d);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    return 2 * axis + (d[axis] < 0.0 ? 1 : 0);
+}
+
+glm::dvec2 faceTexels(const glm::dvec3& d, int face, int resolution) {
+    const int axis = face / 2;
+    const double depth = (face % 2 ? -1.0 : 1.0) * d[axis];
+    const glm::dvec2 onPlane(d[(axis + 1) % 3] / depth, d[(axis + 2) % 3] / depth);
+    if (!(depth > 0.0) || std::abs(onPlane.x) > kFaceExtent || std::abs(onPlane.y) > kFaceExtent)
+        return glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+    return (onPlane * 0.5 + 0.5) * double(resolution);
+}
+
+bool finite2(const glm::dvec2& t) { return std::isfinite(t.x) && std::isfinite(t.y); }
 
 }  // namespace
 
@@ -50,19 +74,42 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
     visibleDistance_.assign(count, -1.0f);
     probedTo_.assign(count, 0.0f);
     flipAt_.assign(count, std::numeric_limits<float>::infinity());
-    for (std::size_t i = 0; i < count; ++i)
-        if (hasVisibility(classes[i])) texel_[i] = toTexels(light, samples.point[i]);
+    point_ = probe.light.type == LightType::Point;
+    if (point_) face_.assign(count, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!hasVisibility(classes[i])) continue;
+        if (point_) {
+            const glm::dvec3 d = samples.point[i] - probe.light.position;
+            face_[i] = std::uint8_t(cubeFace(d));
+            texel_[i] = faceTexels(d, face_[i], light.resolution);
+        } else {
+            texel_[i] = toTexels(light, samples.point[i]);
+        }
+    }
 
     std::vector<glm::dvec2> points;
+    std::array<std::vector<glm::dvec2>, 6> facePoints;
     const std::size_t w = std::size_t(samples.width);
     auto consider = [&](std::size_t i, std::size_t j) {
         if (!hasVisibility(classes[i]) || !hasVisibility(classes[j])) return;
         if (isLit(classes[i]) == isLit(classes[j])) return;
         if (!sameSurface(samples, i, j)) return;
-        const glm::dvec2 mid = 0.5 * (texel_[i] + texel_[j]);
-        if (!std::isfinite(mid.x) || !std::isfinite(mid.y)) return;
-        points.push_back(mid);
-        onBoundary_[isLit(classes[i]) ? i : j] = 1;
+        bool kept = false;
+        if (point_) {
+            for (int f = 0; f < 6; ++f) {
+                const glm::dvec2 a = faceTexels(samples.point[i] - probe.light.position, f, light.resolution);
+                const glm::dvec2 b = faceTexels(samples.point[j] - probe.light.position, f, light.resolution);
+                if (!finite2(a) || !finite2(b)) continue;
+                facePoints[std::size_t(f)].push_back(0.5 * (a + b));
+                kept = true;
+            }
+        } else {
+            const glm::dvec2 mid = 0.5 * (texel_[i] + texel_[j]);
+            if (!finite2(mid)) return;
+            points.push_back(mid);
+            kept = true;
+        }
+        if (kept) onBoundary_[isLit(classes[i]) ? i : j] = 1;
     };
     for (int y = 0; y < samples.height; ++y)
         for (int x = 0; x < samples.width; ++x) {
@@ -71,10 +118,27 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
             if (y + 1 < samples.height) consider(i, i + w);
         }
     tree_ = PointTree(std::move(points));
+    for (std::size_t f = 0; f < 6; ++f) faceTrees_[f] = PointTree(std::move(facePoints[f]));
+}
+
+std::size_t ShadowBoundary::pointCount() const {
+    std::size_t n = tree_.size();
+    for (const PointTree& t : faceTrees_) n += t.size();
+    return n;
+}
+
+double ShadowBoundary::texelWorldSizeAt(const glm::dvec3& p) const {
+    if (point_) {
+        const glm::dvec3 d = glm::abs(p - probe_.light.position);
+        // A 90-degree face: 2 x depth across, over the map's resolution.
+        return 2.0 * std::max({d.x, d.y, d.z, light_.nearPlane}) / double(light_.resolution);
+    }
+    return light_.perspective ? light_.texelSizeAt(glm::dot(p - light_.position, light_.direction))
+                              : light_.texelWorldSize;
 }
 
 glm::dvec3 ShadowBoundary::alongLight(const glm::dvec3& p) const {
-    return probe_.light.spot ? glm::normalize(p - probe_.light.position) : light_.direction;
+    return probe_.light.positional() ? glm::normalize(p - probe_.light.position) : light_.direction;
 }
 
 bool ShadowBoundary::alongTheRays(std::size_t i) const {
@@ -91,8 +155,16 @@ double ShadowBoundary::probe(std::size_t i, double k) {
     if (alongTheRays(i)) return kInfinity;
     const glm::dvec3 along = alongLight(p);
     const double nDotAlong = glm::dot(n, along);
-    const double texelWorld =
-        light_.perspective ? light_.texelSizeAt(glm::dot(p - light_.position, light_.direction)) : light_.texelWorldSize;
+    const double texelWorld = texelWorldSizeAt(p);
+    // The ring lies on the light's image plane: a point light's is the plane of the pixel's cube face.
+    glm::dvec3 right = right_, up = up_;
+    if (point_) {
+        const int axis = face_[i] / 2;
+        right = glm::dvec3(0.0);
+        up = glm::dvec3(0.0);
+        right[(axis + 1) % 3] = 1.0;
+        up[(axis + 2) % 3] = 1.0;
+    }
     if (probedTo_[i] == 0.0f) ++probedPixels_;
     std::size_t rays = 0;
     double radius = double(probedTo_[i]);
@@ -102,7 +174,7 @@ double ShadowBoundary::probe(std::size_t i, double k) {
         for (int d = 0; d < kProbeDirections; ++d) {
             const double angle = 2.0 * std::numbers::pi * (double(d) + 0.5 * double(int(radius / kProbeStepTexels) % 2)) /
                                  kProbeDirections;
-            const glm::dvec3 offset = (std::cos(angle) * right_ + std::sin(angle) * up_) * (radius * texelWorld);
+            const glm::dvec3 offset = (std::cos(angle) * right + std::sin(angle) * up) * (radius * texelWorld);
             const glm::dvec3 q = p + offset - along * (glm::dot(n, offset) / nDotAlong);
             ++rays;
             if (litAt(*probe_.bvh, probe_.light, q, n, probe_.sceneRadius) != lit) {
@@ -120,8 +192,8 @@ double ShadowBoundary::probe(std::size_t i, double k) {
 double ShadowBoundary::visibleDistance(std::size_t i) {
     if (visibleDistance_[i] < 0.0f) {
         const glm::dvec2& t = texel_[i];
-        visibleDistance_[i] =
-            std::isfinite(t.x) && std::isfinite(t.y) ? float(tree_.nearestDistance(t)) : float(kInfinity);
+        const PointTree& tree = point_ ? faceTrees_[face_[i]] : tree_;
+        visibleDistance_[i] = finite2(t) ? float(tree.nearestDistance(t)) : float(kInfinity);
     }
     return visibleDistance_[i];
 }

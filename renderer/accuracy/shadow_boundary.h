@@ -2,6 +2,10 @@
 // The true shadow boundary and each pixel's distance to it, in shadow-map texels (the texel grid of the tool's
 // light space, so the distance is in "texels of p's footprint" and compares with the filter's radius).
 // - Visible boundary: midpoints between 4-neighbour pixels on one continuous surface whose visibility differs.
+// - Point lights: each pixel's texels are on the plane of the cube face that sees it (90-degree faces, the map's
+//   resolution per face); a boundary point is kept for every face whose plane extends to it (up to 63 degrees off
+//   the face's axis), so a distance across a cube seam is measured in the pixel's own face's texels. Distances do not
+//   depend on how a face is oriented, only on its axis.
 // - Boundaries the view does not show (behind a fold, below pixel size): a pixel farther than k from the visible
 //   boundary is probed with shadow rays from rings of points on its own tangent plane, out to k texels; the
 //   distance drops to the radius where visibility flips. Both are cached per pixel.
@@ -13,6 +17,7 @@
 
 #include <glm/ext/vector_double2.hpp>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <vector>
@@ -59,7 +64,10 @@ public:
     DistanceState state(std::size_t i, double k) const;
     bool probes() const { return probe_.bvh != nullptr; }
 
-    std::size_t pointCount() const { return tree_.size(); }
+    std::size_t pointCount() const;
+    // World size of one shadow-map texel at p (directional: constant; spot: at p's depth along the axis; point: at
+    // p's depth in its cube face).
+    double texelWorldSizeAt(const glm::dvec3& p) const;
     bool onBoundary(std::size_t i) const { return !onBoundary_.empty() && onBoundary_[i] != 0; }
     std::size_t probedPixels() const { return probedPixels_.load(); }
     std::size_t probeRays() const { return probeRays_.load(); }
@@ -82,6 +90,9 @@ private:
     std::atomic<std::size_t> probedPixels_{0};
     std::atomic<std::size_t> probeRays_{0};
     PointTree tree_;
+    std::array<PointTree, 6> faceTrees_;  // point light: the boundary on each cube face's plane
+    std::vector<std::uint8_t> face_;      // point light: the face that sees each pixel
+    bool point_ = false;
 };
 
 }  // namespace shadowlab

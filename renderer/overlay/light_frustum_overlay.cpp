@@ -34,6 +34,13 @@ std::vector<glm::dvec3> lightVolumeCorners(const LightSpace& light) {
     return corners;
 }
 
+std::vector<LightSpace> lightVolumes(const FrameStats& stats, std::size_t light) {
+    std::vector<LightSpace> volumes;
+    for (const ShadowViewStats& view : stats.views)
+        if (view.hasView && view.light == light) volumes.push_back(view.space);
+    return volumes;
+}
+
 std::vector<glm::dvec3> lightVolumeLines(const LightSpace& light) {
     const std::vector<glm::dvec3> c = lightVolumeCorners(light);
     std::vector<glm::dvec3> lines;
@@ -80,13 +87,23 @@ LightFrustumOverlay::LightFrustumOverlay()
 }
 
 std::string LightFrustumOverlay::draw(const FrameStats& stats, RenderTarget& target, const FrustumOverlayStyle& style) {
+    return draw(stats, {stats.light}, target, style);
+}
+
+std::string LightFrustumOverlay::draw(const FrameStats& stats, const std::vector<LightSpace>& volumes,
+                                      RenderTarget& target, const FrustumOverlayStyle& style) {
     if (!stats.ok) return "no light volume to draw: the frame was not rendered (" + stats.error + ")";
-    if (!allFinite(stats.light.viewProjection()) || !allFinite(stats.cameraViewProjection))
-        return "no light volume to draw: the light's or the camera's matrices are not finite";
+    if (!allFinite(stats.cameraViewProjection))
+        return "no light volume to draw: the camera's matrices are not finite";
+    for (const LightSpace& volume : volumes)
+        if (!allFinite(volume.viewProjection()))
+            return "no light volume to draw: the light's matrices are not finite";
     if (target.width() < 1) return "no light volume to draw: the view has no size";
+    if (volumes.empty()) return {};  // a light without shadow views has no volume
 
     std::vector<glm::vec3> points;
-    for (const glm::dvec3& p : lightVolumeLines(stats.light)) points.emplace_back(p);
+    for (const LightSpace& volume : volumes)
+        for (const glm::dvec3& p : lightVolumeLines(volume)) points.emplace_back(p);
     glNamedBufferData(vertices_.id(), GLsizeiptr(points.size() * sizeof(glm::vec3)), points.data(), GL_STREAM_DRAW);
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());

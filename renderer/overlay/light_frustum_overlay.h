@@ -27,6 +27,9 @@ std::vector<glm::dvec3> lightVolumeCorners(const LightSpace& light);
 // Line segments (pairs of render-origin-relative points) that outline the light's volume.
 std::vector<glm::dvec3> lightVolumeLines(const LightSpace& light);
 
+// Light `light`'s volumes in the frame: its one view, or a point light's six cube faces (none without a view).
+std::vector<LightSpace> lightVolumes(const FrameStats& stats, std::size_t light);
+
 class LightFrustumOverlay {
 public:
     LightFrustumOverlay();  // needs a current GL 4.5 context; throws std::runtime_error if the shader does not build
@@ -34,6 +37,10 @@ public:
     // Draws over `target`, which must hold the frame `stats` describes (its colour and depth). Returns "" or why
     // nothing was drawn (the frame failed, or its matrices are not finite). Leaves depth writes on and blending off.
     std::string draw(const FrameStats& stats, RenderTarget& target, const FrustumOverlayStyle& style = {});
+    // The same for the given light spaces (render-origin relative, as the frame's views): one light's view, or a
+    // point light's six cube faces, whose frusta together outline the cube around its range. None: nothing drawn.
+    std::string draw(const FrameStats& stats, const std::vector<LightSpace>& volumes, RenderTarget& target,
+                     const FrustumOverlayStyle& style = {});
 
 private:
     gl::Program program_;

@@ -35,6 +35,7 @@ const char* className(PixelClass c) {
         case PixelClass::Background: return "background";
         case PixelClass::NonFinite: return "non-finite";
         case PixelClass::FacingAway: return "facing away from the light (unlit, not scored)";
+        case PixelClass::OutOfRange: return "beyond the light's range (not reached, not scored)";
         case PixelClass::OutsideCone: return "outside the spot cone (V = 0)";
         case PixelClass::Lit: return "lit (V = 1)";
         case PixelClass::Shadowed: return "shadowed (V = 0)";

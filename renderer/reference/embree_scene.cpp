@@ -48,7 +48,7 @@ bool culledByShadowPass(const EmbreeScene::GeometryInfo& g, unsigned primitive, 
     const glm::vec3 p2(v[3 * tri[2]], v[3 * tri[2] + 1], v[3 * tri[2] + 2]);
     glm::vec3 front = glm::cross(p1 - p0, p2 - p0);
     if (g.mirrored) front = -front;
-    const glm::vec3 towardLight = rules.spot ? rules.lightPosition - p0 : -rules.lightDirection;
+    const glm::vec3 towardLight = rules.positional ? rules.lightPosition - p0 : -rules.lightDirection;
     return shadowPassCulls(rules.cullMode, g.doubleSided, glm::dot(front, towardLight) > 0.0f);
 }
 

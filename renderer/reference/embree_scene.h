@@ -22,9 +22,9 @@ struct HitRules {
     bool shadowPassCulling = false; // drop the faces the shadow pass culls: cullMode, unless doubleSided; the
                                     // front face follows the instance's winding (mirrored instances flip it)
     CullMode cullMode = CullMode::None;
-    bool spot = false;
+    bool positional = false;  // spot or point: light comes from lightPosition
     glm::vec3 lightDirection{0.0f, -1.0f, 0.0f};  // directional: where light travels
-    glm::vec3 lightPosition{0.0f};                // spot
+    glm::vec3 lightPosition{0.0f};                // spot and point
 };
 
 struct RayHit {

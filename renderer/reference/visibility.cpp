@@ -3,15 +3,33 @@
 #include "reference/parallel_rows.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 
 namespace shadowlab {
 
+ReferenceLight referenceLight(const LightSettings& settings, const glm::dvec3& origin) {
+    ReferenceLight light;
+    light.type = settings.type;
+    const glm::dvec3 direction(settings.direction);
+    const double length = glm::length(direction);
+    if (length > 0.0) light.direction = direction / length;
+    light.position = glm::dvec3(settings.position) - origin;
+    light.cosHalfCone = std::cos(glm::radians(std::clamp(double(settings.spotConeDeg), 1.0, 170.0)) * 0.5);
+    light.range = std::max(double(settings.range), 0.0);
+    return light;
+}
+
+bool beyondRange(const ReferenceLight& light, const glm::dvec3& point) {
+    return light.positional() && light.range > 0.0 && glm::length(point - light.position) > light.range;
+}
+
 glm::dvec3 towardLight(const ReferenceLight& light, const glm::dvec3& point) {
-    if (!light.spot) return -light.direction;
+    if (!light.positional()) return -light.direction;
     const glm::dvec3 d = light.position - point;
     const double length = glm::length(d);
     return length > 0.0 ? d / length : glm::dvec3(0.0);
@@ -27,7 +45,7 @@ bool occludedFrom(const EmbreeScene& bvh, const ReferenceLight& light, const glm
     const glm::dvec3 origin = p + n * offset;
     glm::dvec3 direction = l;
     float tFar = std::numeric_limits<float>::infinity();
-    if (light.spot) {
+    if (light.positional()) {
         direction = light.position - origin;
         tFar = 1.0f - 1e-6f;
     }
@@ -35,7 +53,7 @@ bool occludedFrom(const EmbreeScene& bvh, const ReferenceLight& light, const glm
 }
 
 bool outsideCone(const ReferenceLight& light, const glm::dvec3& l) {
-    return light.spot && glm::dot(-l, light.direction) < light.cosHalfCone;
+    return light.type == LightType::Spot && glm::dot(-l, light.direction) < light.cosHalfCone;
 }
 
 }  // namespace
@@ -43,7 +61,7 @@ bool outsideCone(const ReferenceLight& light, const glm::dvec3& l) {
 bool litAt(const EmbreeScene& bvh, const ReferenceLight& light, const glm::dvec3& point, const glm::dvec3& normal,
            double sceneRadius) {
     const glm::dvec3 l = towardLight(light, point);
-    if (outsideCone(light, l) || !(glm::dot(normal, l) > 0.0)) return false;
+    if (beyondRange(light, point) || outsideCone(light, l) || !(glm::dot(normal, l) > 0.0)) return false;
     return !occludedFrom(bvh, light, point, normal, l, sceneRadius);
 }
 
@@ -69,6 +87,10 @@ VisibilityResult traceVisibility(const EmbreeScene& bvh, const SurfaceSamples& s
             const glm::dvec3 l = towardLight(light, p);
             const double nDotL = glm::dot(n, l);
             result.lambert[i] = float(std::max(nDotL, 0.0));
+            if (beyondRange(light, p)) {
+                result.classes[i] = PixelClass::OutOfRange;
+                continue;
+            }
             if (outsideCone(light, l)) {
                 result.classes[i] = PixelClass::OutsideCone;
                 continue;

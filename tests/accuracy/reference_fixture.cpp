@@ -2,6 +2,7 @@
 
 #include "gl_fixture.h"
 #include "image/image_io.h"
+#include "light/scene_lights.h"
 
 #include <cmath>
 #include <filesystem>
@@ -23,10 +24,7 @@ ReferenceView traceReference(const Scene& scene, const Settings& settings, int w
                              view.samples),
               "");
     view.bvh = std::make_unique<EmbreeScene>(scene, origin);
-    view.light.spot = view.stats.light.perspective;
-    view.light.direction = view.stats.light.direction;
-    view.light.position = view.stats.light.position;
-    view.light.cosHalfCone = std::cos(std::atan(view.stats.light.tanHalfFov));
+    view.light = referenceLight(withEffectiveLights(settings, scene).lights[0], origin);
     view.visibility = traceVisibility(*view.bvh, view.samples, view.light, double(scene.bounds.radius()), nullptr);
     return view;
 }

@@ -37,7 +37,7 @@ expect_ok measure-roof "$SHADOWLAB" measure --scene builtin:roof --preset defaul
   --set shadow.cullMode=back --json roof.json
 grep -q "caster culled in the shadow pass .*shadow.cullMode=none" measure-roof.out && pass "roof: cause and remedy" \
   || fail "roof causes: $(grep -A4 'causes of' measure-roof.out)"
-culled=$(python3 -c "import json; print(json.load(open('roof.json'))['causes']['casterCulled']['percentOfWrong'])")
+culled=$(python3 -c "import json; print(json.load(open('roof.json'))['lights'][0]['causes']['casterCulled']['percentOfWrong'])")
 less_than 90 "$culled" && pass "roof: culled casters explain $culled % of wrong pixels" || fail "roof culled = $culled"
 
 # Issue 9, observation 2: a 16² map says that acne and leak cannot judge it.
@@ -83,6 +83,64 @@ expect_ok tune-roof "$SHADOWLAB" tune --scene builtin:roof --preset default --wi
   --set shadow.cullMode=back --out roof-tuned.json
 grep -q "^result:.*cullMode \(none\|front\)" tune-roof.out && pass "tune picks a cull mode for the roof" \
   || fail "roof tune: $(grep '^result' tune-roof.out)"
+
+# Many lights (issue 10): a 2-light preset (the tuned sun plus a spot light) measured light by light, then the whole
+# picture; --light N measures and tunes one light; a light that does not exist or does not cast is refused by key.
+python3 - <<'PY'
+import copy, json
+p = json.load(open("tuned.json"))
+spot = copy.deepcopy(p["lights"][0])
+spot.update({"type": "spot", "position": [2, 6, 3], "direction": [-0.3, -1, -0.5]})
+spot["shadow"].update({"depthBias": 0, "slopeScaledDepthBias": 0, "normalOffset": 0})
+p["lights"].append(spot)
+json.dump(p, open("two-lights.json", "w"), indent=2)
+PY
+expect_ok measure-two "$SHADOWLAB" measure --scene builtin:textbook --preset ./two-lights.json --width 320 \
+  --height 180 --json two.json --overlay two.png --cause-overlay two-cause.png
+grep -q "^lights.0 (directional)" measure-two.out && grep -q "^lights.1 (spot)" measure-two.out \
+  && grep -q "^whole picture (2 lights measured" measure-two.out && pass "measure prints each light and the whole" \
+  || fail "two lights: $(grep -E '^(lights|whole)' measure-two.out)"
+python3 - <<'PY' && pass "JSON: lights[2] + whole, max(light wrong) <= whole wrong <= sum" || fail "two-light JSON"
+import json, sys
+d = json.load(open("two.json"))
+wrong = [l["counts"]["wrong"] for l in d["lights"]]
+w = d["whole"]["counts"]["wrong"]
+ok = [l["index"] for l in d["lights"]] == [0, 1] and d["lights"][1]["type"] == "spot" and max(wrong) <= w <= sum(wrong)
+ok = ok and wrong[1] > 0 and d["whole"]["lightsMeasured"] == 2
+print("per light wrong", wrong, "whole", w)
+sys.exit(0 if ok else 1)
+PY
+[ "$(png_size two.png)" = "320 180" ] && pass "union overlay written" || fail "union overlay: $(png_size two.png)"
+expect_ok measure-light1 "$SHADOWLAB" measure --scene builtin:textbook --preset ./two-lights.json --width 320 \
+  --height 180 --light 1 --json light1.json
+python3 -c "
+import json; a = json.load(open('light1.json')); b = json.load(open('two.json'))
+assert [l['index'] for l in a['lights']] == [1] and a['lights'][0]['counts'] == b['lights'][1]['counts']" \
+  && pass "--light 1 measures light 1 alone, with the numbers it has among two" || fail "--light 1: $(head -3 measure-light1.out)"
+expect_ok measure-point "$SHADOWLAB" measure --scene builtin:textbook --preset ./two-lights.json \
+  --set lights.2.type=point --set 'lights.2.position=[1,4,1]' --set lights.2.range=7 --light 2 --width 320 \
+  --height 180 --json point.json --overlay point.png
+python3 -c "
+import json; l = json.load(open('point.json'))['lights'][0]
+assert l['index'] == 2 and l['type'] == 'point', l['type']
+assert l['counts']['outOfRange'] > 1000 and l['counts']['outsideCone'] == 0, l['counts']
+assert l['wrongPixelsPercent'] < 5, l['wrongPixelsPercent']" \
+  && pass "a point light is measured through its cube map; beyond its range is not counted" \
+  || fail "point light: $(grep -E 'wrong pixels|pixels [0-9]' measure-point.out | head -2)"
+expect_error light-5 "lights.5: no such light (the settings have 2 lights" "$SHADOWLAB" measure \
+  --scene builtin:textbook --preset ./two-lights.json --light 5 --width 32 --height 32
+expect_error tune-light-5 "lights.5: no such light" "$SHADOWLAB" tune --scene builtin:textbook \
+  --preset ./two-lights.json --light 5 --width 32 --height 32 --out never.json
+[ ! -f never.json ] && pass "a refused tune writes nothing" || fail "tune --light 5 wrote never.json"
+expect_error light-no-shadow "lights.1.castsShadows is false" "$SHADOWLAB" measure --scene builtin:textbook \
+  --preset ./two-lights.json --set lights.1.castsShadows=false --light 1 --width 32 --height 32
+expect_ok tune-light1 "$SHADOWLAB" tune --scene builtin:textbook --preset ./two-lights.json --light 1 --width 320 \
+  --height 180 --out two-tuned.json
+python3 -c "
+import json; a = json.load(open('two-lights.json')); b = json.load(open('two-tuned.json'))
+assert b['lights'][0]['shadow'] == a['lights'][0]['shadow'], 'light 0 must stay'
+assert b['lights'][1]['shadow'] != a['lights'][1]['shadow'], 'light 1 must be tuned'" \
+  && pass "tune --light 1 writes light 1's bias and keeps light 0's" || fail "tune --light 1: $(grep '^result' tune-light1.out)"
 
 # Live accuracy: --remeasure-bench times re-measures after a bias change on the GPU path and the CPU path, and both
 # count the same frame alike.

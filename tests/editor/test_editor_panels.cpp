@@ -34,7 +34,7 @@ TEST_P(EditorLayout, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheS
     const std::string name = "layout-" + std::to_string(width) + "x" + std::to_string(height);
     EditorHarness h(testOptions(testFolder(name)), width, height);
     h.settle();
-    const std::vector<std::string> expected = {"Scene", "Presets", "Light", "Projection", "Shadow map",
+    const std::vector<std::string> expected = {"Scene", "Presets", "Lights", "Light", "Projection", "Shadow map",
                                                "Sampling", "Shadow map viewer", "Stats", "Accuracy", "Probe"};
     ASSERT_EQ(panels().size(), expected.size());
     std::vector<ControlRect> rects;
@@ -93,21 +93,21 @@ TEST_F(EditorPanels, TypedSlopeOutsideItsRangeIsRefusedAndThePreviousValueKept) 
     h.ctrlClick("shadow.slopeScaledDepthBias");  // Ctrl+click turns the slider into a text field
     h.selectAllAndType("250");
     EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, before);
-    const std::string* error = h.state().fieldError("shadow.slopeScaledDepthBias");
+    const std::string* error = h.state().fieldError("lights.0.shadow.slopeScaledDepthBias");
     ASSERT_NE(error, nullptr);
     EXPECT_NE(error->find("out of range"), std::string::npos) << *error;
     // 1e39 overflows a float: infinity is refused too.
     h.ctrlClick("shadow.slopeScaledDepthBias");
     h.selectAllAndType("1e39");
     EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, before);
-    error = h.state().fieldError("shadow.slopeScaledDepthBias");
+    error = h.state().fieldError("lights.0.shadow.slopeScaledDepthBias");
     ASSERT_NE(error, nullptr);
     EXPECT_NE(error->find("finite"), std::string::npos) << *error;
     // A good typed value clears the refusal.
     h.ctrlClick("shadow.slopeScaledDepthBias");
     h.selectAllAndType("3.5");
     EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, 3.5f);
-    EXPECT_EQ(h.state().fieldError("shadow.slopeScaledDepthBias"), nullptr);
+    EXPECT_EQ(h.state().fieldError("lights.0.shadow.slopeScaledDepthBias"), nullptr);
 }
 
 TEST_F(EditorPanels, FilterComboSwitchesToPoissonAndShowsItsRadius) {
@@ -144,7 +144,7 @@ TEST_F(EditorPanels, ResolutionAboveTheGpuLimitIsRefusedWithAMessageAndTheMapKep
     EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 2048);
     EXPECT_EQ(h.editor().renderer().shadowMap().resolution(), 2048);
     EXPECT_EQ(h.editor().renderer().shadowMap().generation(), generation);
-    const std::string* error = h.state().fieldError("shadow.resolution");
+    const std::string* error = h.state().fieldError("lights.0.shadow.resolution");
     ASSERT_NE(error, nullptr);
     EXPECT_NE(error->find("GL_MAX_TEXTURE_SIZE"), std::string::npos) << *error;
     ASSERT_NE(h.state().lastMessage(), nullptr);

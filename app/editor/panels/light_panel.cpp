@@ -1,4 +1,5 @@
-// Light: type, direction as azimuth + elevation, spot position / cone / range, intensity, animation.
+// Light: the selected light's type, direction as azimuth + elevation, spot / point position, cone and range, colour
+// and intensity; the animation preview.
 #include "editor/field_widgets.h"
 #include "editor/light_angles.h"
 #include "editor/panels/panel_registry.h"
@@ -7,51 +8,60 @@
 
 namespace shadowlab::editor {
 
+namespace {
+
+// A vec3 key edited with one ImGui widget (drag or colour picker), recorded and explained like the bound controls.
+void vec3Control(EditorState& state, const std::string& key, bool changed, const glm::vec3& value) {
+    if (changed) state.edit(key, nlohmann::json::array({value.x, value.y, value.z}));
+    state.controls.recordLastItem(controlName(key.c_str()));
+    fieldHelp(state, key.c_str());
+    showFieldError(state, key.c_str());
+}
+
+}  // namespace
+
 void drawLightPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
-    const LightSettings& light = state.settings.lights[0];
+    if (!lightHeader(state)) return;
     ImGui::PushItemWidth(-110.0f);
+    auto key = [&](const char* within) { return state.lightKey(within); };
+    const LightSettings light = *state.selected();  // a copy: edits below may reallocate the list
 
-    comboField(state, "light.type", "type");
-    checkboxField(state, "light.useSceneLight", "use the scene's light");
-    if (state.haveStats) ImGui::TextDisabled("using %s", state.stats.lightSource.c_str());
+    comboField(state, key("type").c_str(), "type");
 
-    // The key stores a direction vector; people think in azimuth and elevation of where the light comes from.
-    LightAngles angles = anglesFromDirection(light.direction);
-    bool anglesChanged = ImGui::SliderFloat("azimuth", &angles.azimuthDeg, -180.0f, 180.0f, "%.1f deg");
-    state.controls.recordLastItem("light.azimuth");
-    anglesChanged |= ImGui::SliderFloat("elevation", &angles.elevationDeg, -89.0f, 89.0f, "%.1f deg");
-    state.controls.recordLastItem("light.elevation");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Angle of the light above the horizon (90 = straight down)");
-    if (anglesChanged) {
-        const glm::vec3 d = directionFromAngles(angles);
-        state.edit("light.direction", nlohmann::json::array({d.x, d.y, d.z}));
-    }
-    showFieldError(state, "light.direction");
-
-    if (light.type == LightType::Spot) {
-        glm::vec3 position = light.position;
-        if (ImGui::DragFloat3("position", &position.x, 0.05f, 0.0f, 0.0f, "%.2f"))
-            state.edit("light.position", nlohmann::json::array({position.x, position.y, position.z}));
-        state.controls.recordLastItem("light.position");
-        fieldHelp(state, "light.position");
-        showFieldError(state, "light.position");
-        sliderFloatField(state, "light.spotConeDeg", "cone", 1.0f, 170.0f, "%.1f deg");
-        // A spot's range is its shadow volume's far plane.
-        if (state.settings.lights[0].projection.autoFit) {
-            ImGui::TextDisabled("range: fitted to the scene (Projection > auto-fit)");
-        } else {
-            dragFloatField(state, "projection.far", "range", 0.05f, "%.2f");
+    if (light.type != LightType::Point) {
+        // The key stores a direction vector; people think in azimuth and elevation of where the light comes from.
+        LightAngles angles = anglesFromDirection(light.direction);
+        bool anglesChanged = ImGui::SliderFloat("azimuth", &angles.azimuthDeg, -180.0f, 180.0f, "%.1f deg");
+        state.controls.recordLastItem("light.azimuth");
+        anglesChanged |= ImGui::SliderFloat("elevation", &angles.elevationDeg, -89.0f, 89.0f, "%.1f deg");
+        state.controls.recordLastItem("light.elevation");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Angle of the light above the horizon (90 = straight down)");
+        if (anglesChanged) {
+            const glm::vec3 d = directionFromAngles(angles);
+            state.edit(key("direction"), nlohmann::json::array({d.x, d.y, d.z}));
         }
+        showFieldError(state, key("direction").c_str());
     }
-    sliderFloatField(state, "light.intensity", "intensity", 0.0f, 4.0f, "%.2f");
-    sliderFloatField(state, "light.ambient", "ambient", 0.0f, 1.0f, "%.2f");
+
+    if (light.type != LightType::Directional) {
+        glm::vec3 position = light.position;
+        const bool moved = ImGui::DragFloat3("position", &position.x, 0.05f, 0.0f, 0.0f, "%.2f");
+        vec3Control(state, key("position"), moved, position);
+        if (light.type == LightType::Spot)
+            sliderFloatField(state, key("spotConeDeg").c_str(), "cone", 1.0f, 170.0f, "%.1f deg");
+        dragFloatField(state, key("range").c_str(), "range (0 = no limit)", 0.05f, "%.2f");
+    }
+    glm::vec3 color = light.color;
+    const bool recoloured = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
+    vec3Control(state, key("color"), recoloured, color);
+    sliderFloatField(state, key("intensity").c_str(), "intensity", 0.0f, 4.0f, "%.2f");
 
     ImGui::Separator();
     ImGui::Checkbox("animate", &state.animateLight);
     state.controls.recordLastItem("light.animate");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Rotate the light around the scene (a preview: the preset is not changed)");
+        ImGui::SetTooltip("Rotate the selected light around the scene (a preview: the preset is not changed)");
     if (state.animateLight) {
         ImGui::SameLine();
         ImGui::SetNextItemWidth(-1.0f);

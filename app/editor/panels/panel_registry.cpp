@@ -8,9 +8,10 @@ const std::vector<Panel>& panels() {
     static const std::vector<Panel> all = {
         {"Scene", PanelColumn::Left, 0.17f, drawScenePanel},
         {"Presets", PanelColumn::Left, 0.25f, drawPresetsPanel},
-        {"Light", PanelColumn::Left, 0.34f, drawLightPanel},
-        {"Projection", PanelColumn::Left, 0.24f, drawProjectionPanel},
-        {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel},
+        {"Lights", PanelColumn::Left, 0.19f, drawLightsPanel},
+        {"Light", PanelColumn::Left, 0.21f, drawLightPanel, true},
+        {"Projection", PanelColumn::Left, 0.18f, drawProjectionPanel, true},
+        {"Shadow map", PanelColumn::Right, 0.35f, drawShadowMapPanel, true},
         {"Sampling", PanelColumn::Right, 0.17f, drawSamplingPanel},
         {"Shadow map viewer", PanelColumn::Right, 0.48f, drawShadowMapViewerPanel},
         // Bottom shares keep the outer panels' centres inside the middle 40 % of the window at 1280..1920 wide

@@ -23,6 +23,7 @@ struct Panel {
     float share;            // its part of the column's height (Left / Right) or of the bottom strip's width (Bottom);
                             // a column's shares add up to 1
     void (*draw)(PanelContext&);  // the window's contents (Begin/End are done by the editor)
+    bool editsSelectedLight = false;  // its title names the light it edits ("Light: 1 spot")
 };
 
 const std::vector<Panel>& panels();
@@ -41,6 +42,7 @@ float bottomStripHeight(ImVec2 display);
 // One function per panel, each in its own file.
 void drawScenePanel(PanelContext&);
 void drawPresetsPanel(PanelContext&);
+void drawLightsPanel(PanelContext&);
 void drawLightPanel(PanelContext&);
 void drawProjectionPanel(PanelContext&);
 void drawShadowMapPanel(PanelContext&);

@@ -4,6 +4,7 @@
 #include "editor/panels/panel_registry.h"
 #include "shadow/shadow_map.h"
 
+#include <algorithm>
 #include <string>
 
 namespace shadowlab::editor {
@@ -15,7 +16,8 @@ void resolutionControls(EditorState& state) {
         const char* label;
         int size;
     } kPicks[] = {{"256", 256}, {"512", 512}, {"1K", 1024}, {"2K", 2048}, {"4K", 4096}, {"8K", 8192}};
-    const int current = state.settings.lights[0].shadow.resolution;
+    const int current = state.selected()->shadow.resolution;
+    const std::string key = state.lightKey("shadow.resolution");
     const int maxSize = state.limits.maxTextureSize;
     ImGui::TextUnformatted("resolution");
     for (const auto& pick : kPicks) {
@@ -24,7 +26,7 @@ void resolutionControls(EditorState& state) {
         const bool tooBig = maxSize > 0 && pick.size > maxSize;
         if (selected) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         ImGui::BeginDisabled(tooBig);
-        if (ImGui::SmallButton(pick.label) && !selected) state.edit("shadow.resolution", pick.size);
+        if (ImGui::SmallButton(pick.label) && !selected) state.edit(key, pick.size);
         ImGui::EndDisabled();
         if (selected) ImGui::PopStyleColor();
         state.controls.recordLastItem(std::string("shadow.resolution=") + pick.label);
@@ -34,21 +36,26 @@ void resolutionControls(EditorState& state) {
     int custom = current;
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
     if (ImGui::InputInt("custom (Enter)", &custom, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue) && custom != current)
-        state.edit("shadow.resolution", custom);
+        state.edit(key, custom);
     state.controls.recordLastItem("shadow.resolution");
-    fieldHelp(state, "shadow.resolution");
+    fieldHelp(state, key.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("max %d", maxSize);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("GL_MAX_TEXTURE_SIZE of this GPU");
-    showFieldError(state, "shadow.resolution");
-    if (state.haveStats)
-        ImGui::TextDisabled("map: %d x %d %s, %.1f MiB", state.stats.shadowMapResolution,
-                            state.stats.shadowMapResolution, depthFormatName(state.stats.shadowMapFormat),
-                            double(state.stats.shadowMapBytes) / (1024.0 * 1024.0));
+    showFieldError(state, key.c_str());
+    const std::vector<const ShadowViewStats*> views = state.selectedLightViews();
+    if (!views.empty())
+        ImGui::TextDisabled("map: %d x %d %s%s; all maps %.1f MiB", views.front()->resolution,
+                            views.front()->resolution, depthFormatName(views.front()->format),
+                            views.size() > 1 ? " per face" : "", double(state.stats.shadowMapBytes) / (1024.0 * 1024.0));
 }
 
 void biasAmounts(const EditorState& state) {
     if (!state.haveStats) return;
+    // The frame reports the bias of its first view only.
+    const auto first = std::find_if(state.stats.views.begin(), state.stats.views.end(),
+                                    [](const ShadowViewStats& v) { return v.hasView; });
+    if (first == state.stats.views.end() || first->light != state.selectedLight) return;
     // The bias at this scene's receivers, each term in depth, world units and texels; the frame report's full
     // sentences (what r is, at which depths) in the tooltip.
     const BiasReport& b = state.stats.bias;
@@ -87,17 +94,19 @@ void biasAmounts(const EditorState& state) {
 
 void drawShadowMapPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
+    if (!lightHeader(state)) return;
+    auto key = [&](const char* within) { return state.lightKey(within); };
     resolutionControls(state);
     ImGui::PushItemWidth(-175.0f);
-    comboField(state, "shadow.depthFormat", "depth format");
+    comboField(state, key("shadow.depthFormat").c_str(), "depth format");
     ImGui::Separator();
-    dragFloatField(state, "shadow.depthBias", "DepthBias (units)", 1.0f, "%.4g");  // d16 after a format change: 0.0078
-    sliderFloatField(state, "shadow.slopeScaledDepthBias", "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");
-    dragFloatField(state, "shadow.depthBiasClamp", "DepthBiasClamp", 0.0001f, "%.5f");
-    sliderFloatField(state, "shadow.normalOffset", "normal offset (texels)", 0.0f, 4.0f, "%.2f");
+    dragFloatField(state, key("shadow.depthBias").c_str(), "DepthBias (units)", 1.0f, "%.4g");  // d16 after a format change: 0.0078
+    sliderFloatField(state, key("shadow.slopeScaledDepthBias").c_str(), "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");
+    dragFloatField(state, key("shadow.depthBiasClamp").c_str(), "DepthBiasClamp", 0.0001f, "%.5f");
+    sliderFloatField(state, key("shadow.normalOffset").c_str(), "normal offset (texels)", 0.0f, 4.0f, "%.2f");
     biasAmounts(state);
     ImGui::Separator();
-    comboField(state, "shadow.cullMode", "cull (shadow pass)");
+    comboField(state, key("shadow.cullMode").c_str(), "cull (shadow pass)");
     ImGui::PopItemWidth();
 }
 

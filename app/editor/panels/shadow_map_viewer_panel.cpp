@@ -70,12 +70,40 @@ void drawProbeTaps(const PixelProbeReport& r, const UvRect& visible, ImVec2 pos,
     state.controls.record("viewer.probeLookup", ControlRect{c.x - 6, c.y - 6, 12, 12});
 }
 
+// The views of the frame that have a map: "light 0", "light 2 +X", ... The choice is kept as (light, face).
+void viewPicker(EditorState& state) {
+    MapViewerState& v = state.viewer;
+    const ShadowViewStats* shown = state.shownView();
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##view", shown ? shown->name.c_str() : "no view")) {
+        for (const ShadowViewStats& view : state.stats.views) {
+            if (!view.hasView) continue;
+            const bool selected = &view == shown;
+            if (ImGui::Selectable(view.name.c_str(), selected)) {
+                v.light = view.light;
+                v.face = view.face;
+            }
+            state.controls.recordLastItem("viewer.view=" + view.name);
+        }
+        ImGui::EndCombo();
+    }
+    state.controls.recordLastItem("viewer.view");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Which shadow view to show: a light's map, or one cube face of a point light");
+}
+
 }  // namespace
 
 void drawShadowMapViewerPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
     MapViewerState& v = state.viewer;
-    const bool spot = state.haveStats && state.stats.light.perspective;
+    viewPicker(state);
+    const ShadowViewStats* shown = state.shownView();
+    if (!shown) {
+        ImGui::TextDisabled(state.haveStats ? "no light casts a shadow: no map to show" : "no frame rendered yet");
+        return;
+    }
+    const bool spot = shown->space.perspective;
     contrastControls(v, spot, state);
     ImGui::Checkbox("texel grid", &v.options.texelGrid);
     ImGui::SameLine();
@@ -84,7 +112,11 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
     ImGui::SameLine();
     if (ImGui::SmallButton("fit")) v.zoomPan.reset();
     state.controls.recordLastItem("viewer.fit");
-    const PixelProbeReport* probe = state.probe.report && state.probe.report->ok ? &*state.probe.report : nullptr;
+    // The probe looks up the frame's first view (see PixelProbeReport): its taps belong on that map only.
+    const bool firstView = &*std::find_if(state.stats.views.begin(), state.stats.views.end(),
+                                          [](const ShadowViewStats& view) { return view.hasView; }) == shown;
+    const PixelProbeReport* probe =
+        firstView && state.probe.report && state.probe.report->ok ? &*state.probe.report : nullptr;
     bool focusProbe = false;
     if (probe) {
         ImGui::SameLine();
@@ -97,10 +129,10 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     const float side = std::floor(std::max(0.0f, std::min(avail.x, avail.y - ImGui::GetTextLineHeightWithSpacing())));
-    if (side < 16.0f || !state.haveStats) return;
+    if (side < 16.0f) return;
     const int size = int(side);
     v.width = v.height = size;
-    const int resolution = state.stats.shadowMapResolution;
+    const int resolution = shown->resolution;
 
     const ImVec2 pos = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("##map", ImVec2(side, side));

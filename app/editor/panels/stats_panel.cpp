@@ -1,5 +1,5 @@
 // Stats: per-pass times (labelled CPU on a software rasterizer), why the shadow pass ran, frame-time history,
-// triangles, casters and shadow-map memory.
+// triangles, casters and shadow-map memory; a table of the shadow views (ran or skipped, why, time).
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 #include "shadow/shadow_map.h"
@@ -34,6 +34,47 @@ void plot(const char* label, const std::deque<float>& values, ImVec2 size) {
     ImGui::PlotLines("##plot", v.data(), int(v.size()), 0, overlay, 0.0f, top, size);
 }
 
+// One row per shadow view of the frame: whether it rendered, why (the planner's reason), its time.
+void viewsTable(EditorState& state, const char* clock) {
+    const std::vector<ShadowViewStats>& views = state.stats.views;
+    if (views.empty()) {
+        ImGui::TextDisabled("shadow views: none (no lights)");
+        return;
+    }
+    const float rows = float(std::min<std::size_t>(views.size(), 7) + 1);
+    if (ImGui::BeginTable("views", 4,
+                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
+                              ImGuiTableFlags_BordersInnerV,
+                          ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 4.0f))) {
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableSetupColumn("view");
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn(clock[0] == 'C' ? "ms (CPU)" : "ms (GPU)");
+        ImGui::TableSetupColumn("why", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableHeadersRow();
+        for (const ShadowViewStats& v : views) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(v.name.c_str());
+            ImGui::TableNextColumn();
+            if (v.ran)
+                ImGui::TextUnformatted("ran");
+            else
+                ImGui::TextDisabled("skipped");
+            ImGui::TableNextColumn();
+            if (v.ran && v.milliseconds)
+                ImGui::Text("%.2f", *v.milliseconds);
+            else
+                ImGui::TextDisabled("-");
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", v.reason.c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.reason.c_str());
+        }
+        ImGui::EndTable();
+    }
+    state.controls.recordLastItem("stats.views");
+}
+
 }  // namespace
 
 void drawStatsPanel(PanelContext& ctx) {
@@ -65,6 +106,7 @@ void drawStatsPanel(PanelContext& ctx) {
                     double(s.shadowMapBytes) / (1024.0 * 1024.0));
         ImGui::TextDisabled("frames rendered %ld, idle frames (no pass) %ld", state.renderedFrames, state.idleFrames);
         state.controls.recordLastItem("stats.frames");
+        viewsTable(state, clock);
 
         if (!plotsBeside) {
             ImGui::EndTable();
