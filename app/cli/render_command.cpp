@@ -1,6 +1,7 @@
 #include "cli/render_command.h"
 
 #include "accuracy/accuracy_meter.h"
+#include "accuracy/compare_label.h"
 #include "cli/frame_report.h"
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
@@ -30,25 +31,6 @@ std::vector<std::uint8_t> topRowFirst(const std::vector<std::uint8_t>& glRows, i
         std::copy_n(glRows.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * stride), stride,
                     out.begin() + std::ptrdiff_t(std::size_t(y) * stride));
     return out;
-}
-
-std::string milliseconds(const std::optional<double>& ms) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f ms", ms.value_or(0.0));
-    return ms ? text : "n/a";
-}
-
-std::vector<std::string> compareLabel(const std::string& side, const std::string& preset, const FrameStats& stats) {
-    return {side + ": " + preset,
-            "shadow " + milliseconds(stats.shadowPass.milliseconds) + ", main " + milliseconds(stats.mainPass.milliseconds) +
-                " (" + (stats.timingSource.rfind("GPU", 0) == 0 ? "GPU" : "CPU") + ")"};
-}
-
-std::string accuracyLine(const AccuracyReport& r) {
-    char text[128];
-    std::snprintf(text, sizeof text, "acne %.3f %%, leak %.3f %%, wrong %.3f %%", r.acnePercent, r.leakPercent,
-                  r.wrongPercent);
-    return text;
 }
 
 }  // namespace

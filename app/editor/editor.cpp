@@ -104,6 +104,7 @@ void Editor::renderFrame() {
         state_.animatedAzimuthDeg = std::fmod(state_.animatedAzimuthDeg + state_.animateDegreesPerSecond * dt, 360.0);
     }
     renderViewport();
+    renderAbView();
     pollAccuracy();
     runProbe();
     runProfile();
@@ -139,6 +140,7 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     state_.sceneSpec = spec;
     state_.scenePathInput = spec;
     renderer_->sceneChanged();
+    abRenderer_.sceneChanged();
     for (std::size_t i = 0; i < state_.scene->warnings.size() && i < 3; ++i)
         state_.say(state_.scene->name + ": " + state_.scene->warnings[i]);
     // A new scene gets the preset's camera (auto-framed by default, and on a scene it was not tuned on).
@@ -151,8 +153,7 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     }
 }
 
-Settings Editor::effectiveSettings() const {
-    Settings s = state_.settings;
+Settings Editor::previewed(Settings s) const {
     if (state_.animateLight && state_.animatedAzimuthDeg != 0.0 && state_.selectedLight < s.lights.size()) {
         LightSettings& light = s.lights[state_.selectedLight];
         // The preview turns the light around the vertical axis through the scene's centre.
@@ -220,10 +221,8 @@ void Editor::renderViewport() {
     state_.clampSelectedLight();
     if (state_.showLightFrustum) {
         // The selected light's volume: its one view, or a point light's six cube faces.
-        std::vector<LightSpace> volumes;
-        for (const ShadowViewStats& view : stats.views)
-            if (view.hasView && view.light == state_.selectedLight) volumes.push_back(view.space);
-        if (std::string error = frustum_->draw(stats, volumes, target_); !error.empty())
+        if (std::string error = frustum_->draw(stats, lightVolumes(stats, state_.selectedLight), target_);
+            !error.empty())
             state_.say("light frustum: " + error, true);
     }
     state_.lastFrameMs = (secondsNow() - start) * 1000.0;
@@ -459,7 +458,7 @@ bool Editor::busy() const {
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
                         state_.showLightFrustum,   state_.showLightFrustum ? state_.selectedLight : 0};
-    return !(key == *lastRendered_) || mapPictureStale_;
+    return !(key == *lastRendered_) || mapPictureStale_ || abViewDue();
 }
 
 std::optional<std::string> Editor::takeWindowScreenshotRequest() {

@@ -103,7 +103,8 @@ private:
     void renderMapPicture(bool mapRedrawn);
     void takeScreenshot();
     void refreshPresetList();
-    Settings effectiveSettings() const;  // the edited settings plus the light animation's preview
+    Settings effectiveSettings() const { return previewed(state_.settings); }  // the edited settings, previewed
+    Settings previewed(Settings s) const;  // `s` plus the light animation's preview
     std::optional<AccuracyViewKey> accuracyKey() const;  // what a measurement now would be made for
     void startAccuracyJob(AccuracyJobKind kind);
     void pollAccuracy();
@@ -116,6 +117,13 @@ private:
     void runProbe();                           // the pending probe, or the same pixel again once the view changed
     void drawProfileLine(ImVec2 imagePos);     // the depth profile's line (Ctrl+drag draws it)
     void runProfile();                         // the drawn line's depth profile, again once the view changed
+    // A/B (editor_ab.cpp): A's passes when it changed, the toolbar's buttons, the divider (an item submitted before
+    // the view's so it wins the hover), both images with their labels.
+    void renderAbView();
+    bool abViewDue() const;
+    void abToolbar();
+    void abDividerInput(ImVec2 imagePos, ImVec2 imageSize);
+    bool drawAbSplit(ImVec2 imagePos, ImVec2 imageSize);  // false when A has no picture yet (B is drawn whole)
 
     void handleShortcuts();
     ImVec4 viewportWindowRect() const;
@@ -137,6 +145,7 @@ private:
     std::unique_ptr<LightFrustumOverlay> frustum_;
     std::unique_ptr<ShadowMapView> mapView_;
     RenderTarget target_;
+    AbRenderer abRenderer_;  // A's view while comparing
     AsyncSceneLoader loader_;
     std::optional<OrbitCamera> orbit_;
     std::optional<RenderKey> lastRendered_;

@@ -1,5 +1,6 @@
 #include "editor/editor_state.h"
 
+#include "editor/message_log.h"
 #include "light/depth_format_change.h"
 #include "settings/settings_fields.h"
 
@@ -93,8 +94,8 @@ std::vector<const ShadowViewStats*> EditorState::selectedLightViews() const {
 void EditorState::say(std::string text, bool error) {
     // Printed too, so scripts and users in a terminal see what the window says.
     (error ? std::cerr : std::cout) << (error ? "shadowlab: error: " : "shadowlab: ") << text << std::endl;
-    messages.push_back(Message{std::move(text), error, time});
-    if (messages.size() > 50) messages.erase(messages.begin());
+    messages.push_back(Message{std::move(text), error, time, clockStamp()});
+    if (messages.size() > kMessagesKept) messages.erase(messages.begin());
 }
 
 const std::string* EditorState::fieldError(const std::string& key) const {

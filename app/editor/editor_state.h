@@ -1,6 +1,7 @@
 #pragma once
 // What the editor's panels read and change: the edited Settings, the scene, the preset session, the last frame's
 // stats, messages and the named controls' rectangles. Panels change Settings only through edit().
+#include "editor/ab_compare.h"
 #include "editor/accuracy_state.h"
 #include "editor/control_rects.h"
 #include "editor/preset_session.h"
@@ -31,6 +32,7 @@ struct Message {
     std::string text;
     bool error = false;
     double time = 0.0;  // seconds since the editor started
+    std::string clock;  // local wall-clock time, "HH:MM:SS" (the message log shows it)
 };
 
 // An automatic change the editor made on top of the user's edit (e.g. DepthBias re-expressed for a new depth
@@ -96,6 +98,7 @@ struct EditorState {
     AccuracyState accuracy;  // the Accuracy panel and the viewport's accuracy overlay
     ProbeState probe;        // the Probe panel: why the clicked pixel is lit or shadowed
     SweepPanelState sweep;   // the Cost vs accuracy panel
+    AbState ab;              // A/B: the snapshot A beside the edited settings B
 
     // Scene panel
     std::optional<SceneLoadProgress> loading;  // while a scene loads
@@ -111,7 +114,8 @@ struct EditorState {
     bool screenshotWithShadowMap = false;
     std::string lastScreenshot;  // path of the newest screenshot, or why it failed
 
-    std::vector<Message> messages;  // newest last
+    static constexpr std::size_t kMessagesKept = 50;
+    std::vector<Message> messages;  // newest last, the last kMessagesKept
     std::optional<UndoStep> undo;   // offered by the status line while its note is the newest message
     ControlRects controls;
     double time = 0.0;

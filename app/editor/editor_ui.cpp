@@ -3,6 +3,7 @@
 #include "editor/editor.h"
 #include "editor/editor_keys.h"
 #include "editor/field_widgets.h"
+#include "editor/message_log.h"
 #include "editor/panels/panel_registry.h"
 #include "settings/settings_fields.h"
 
@@ -103,6 +104,8 @@ void Editor::drawViewport() {
     ImGui::SetNextItemWidth(150.0f);
     viewModeCombo();
     ImGui::SameLine();
+    abToolbar();  // next to what the view shows: it splits the view
+    ImGui::SameLine();
     ImGui::Checkbox("light frustum", &state_.showLightFrustum);
     state_.controls.recordLastItem("viewport.frustum");
     ImGui::SameLine();
@@ -140,6 +143,7 @@ void Editor::drawViewport() {
     const ImVec2 imagePos(origin.x, origin.y + kToolbarHeight);
     const ImVec2 imageSize(rect.z, std::max(0.0f, rect.w - kToolbarHeight - kStatusHeight));
     viewportRect_ = ImVec4(imagePos.x, imagePos.y, std::floor(imageSize.x), std::floor(imageSize.y));
+    abDividerInput(imagePos, imageSize);
     ImGui::SetCursorScreenPos(imagePos);
     if (imageSize.x >= 1.0f && imageSize.y >= 1.0f) {
         ImGui::InvisibleButton("##view", imageSize, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
@@ -153,8 +157,9 @@ void Editor::drawViewport() {
                            imageEnd, ImVec2(0, 0), ImVec2(1, 1));
             drawOverlayNotes(imagePos, imageSize);
         } else if (target_.width() > 0 && state_.haveStats) {
-            draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(target_.colorTexture())), imagePos,
-                           imageEnd, ImVec2(0, 1), ImVec2(1, 0));
+            if (!drawAbSplit(imagePos, imageSize))
+                draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(target_.colorTexture())),
+                               imagePos, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
             if (a.showOverlay) drawOverlayNotes(imagePos, imageSize);
         } else {
             draw->AddText(ImVec2(imagePos.x + 12, imagePos.y + 12), IM_COL32(200, 200, 200, 255),
@@ -284,6 +289,8 @@ void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
 void Editor::drawStatusBar() {
     const ImVec2 size = ImGui::GetWindowSize();
     ImGui::SetCursorPos(ImVec2(8, size.y - kStatusHeight + 4));
+    messageLogButton(state_);
+    ImGui::SameLine();
     if (state_.loading) {
         const SceneLoadProgress& p = *state_.loading;
         ImGui::ProgressBar(float(std::fmod(p.elapsedSeconds, 1.0)), ImVec2(120, 16), "");
@@ -309,6 +316,8 @@ void Editor::drawStatusBar() {
             ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
             ImGui::TextUnformatted(m->text.c_str());
             ImGui::PopTextWrapPos();
+            const ImVec2 at = ImGui::GetWindowPos(), tipSize = ImGui::GetWindowSize();
+            state_.controls.record("status.tooltip", ControlRect{at.x, at.y, tipSize.x, tipSize.y});
             ImGui::EndTooltip();
         }
     }

@@ -34,6 +34,13 @@ std::vector<glm::dvec3> lightVolumeCorners(const LightSpace& light) {
     return corners;
 }
 
+std::vector<LightSpace> lightVolumes(const FrameStats& stats, std::size_t light) {
+    std::vector<LightSpace> volumes;
+    for (const ShadowViewStats& view : stats.views)
+        if (view.hasView && view.light == light) volumes.push_back(view.space);
+    return volumes;
+}
+
 std::vector<glm::dvec3> lightVolumeLines(const LightSpace& light) {
     const std::vector<glm::dvec3> c = lightVolumeCorners(light);
     std::vector<glm::dvec3> lines;

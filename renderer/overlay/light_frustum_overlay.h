@@ -27,6 +27,9 @@ std::vector<glm::dvec3> lightVolumeCorners(const LightSpace& light);
 // Line segments (pairs of render-origin-relative points) that outline the light's volume.
 std::vector<glm::dvec3> lightVolumeLines(const LightSpace& light);
 
+// Light `light`'s volumes in the frame: its one view, or a point light's six cube faces (none without a view).
+std::vector<LightSpace> lightVolumes(const FrameStats& stats, std::size_t light);
+
 class LightFrustumOverlay {
 public:
     LightFrustumOverlay();  // needs a current GL 4.5 context; throws std::runtime_error if the shader does not build
