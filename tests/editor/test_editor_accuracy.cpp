@@ -48,6 +48,17 @@ protected:
         harness->frame(2);
         return frames;
     }
+    // Frames until Auto has made `count` full measurements (each job waited for), at most `maxSeconds`: on a loaded
+    // machine one frame can take longer than the stillness Auto waits for, so a fixed time would be too short.
+    void framesUntilMeasured(int count, double maxSeconds = 60.0) {
+        const auto start = std::chrono::steady_clock::now();
+        while (harness->state().accuracy.measurements < count &&
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < maxSeconds) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            harness->frame();
+            waitForJob();
+        }
+    }
     // Frames for `seconds` of wall time.
     void framesFor(double seconds) {
         const auto start = std::chrono::steady_clock::now();
@@ -125,8 +136,7 @@ TEST_F(EditorAccuracy, AutoMeasuresOnceTheViewIsStillAndNeverTwiceForTheSameView
     h.click("accuracy.auto");
     ASSERT_TRUE(a.autoMeasure);
     // The view has been still since it opened: the first measurement comes without a click.
-    framesFor(0.8);
-    waitForJob();
+    framesUntilMeasured(1);
     ASSERT_EQ(a.measurements, 1);
     EXPECT_EQ(a.stale, "");
 
@@ -136,8 +146,7 @@ TEST_F(EditorAccuracy, AutoMeasuresOnceTheViewIsStillAndNeverTwiceForTheSameView
     EXPECT_FALSE(a.running) << "Auto waits until the view is still";
     EXPECT_EQ(a.measurements, 1);
     EXPECT_FALSE(a.stale.empty());
-    framesFor(0.8);
-    waitForJob();
+    framesUntilMeasured(2);
     EXPECT_EQ(a.measurements, 2);
     EXPECT_EQ(a.stale, "");
     // Still: never again for the same view and settings.
