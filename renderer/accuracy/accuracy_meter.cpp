@@ -84,6 +84,17 @@ std::string invalidSettings(const Settings& settings) {
     return text.empty() ? "" : "invalid settings: " + text;
 }
 
+// What measure() and remeasure() measure: light 0 alone, in a view of at least 1x1; nullopt with `error` otherwise.
+std::optional<Settings> measuredSettings(const Settings& given, const Scene& scene, int width, int height,
+                                         std::string& error) {
+    if (width < 1 || height < 1) {
+        error = "view size must be at least 1x1";
+        return std::nullopt;
+    }
+    if (error = invalidSettings(given); !error.empty()) return std::nullopt;
+    return isolateLight(given, scene, 0, error);
+}
+
 }  // namespace
 
 double AccuracyReport::causePercentOfWrong(MismatchCause cause) const {
@@ -199,11 +210,9 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         report.cancelled = true;
         return fail("cancelled");
     };
-    if (width < 1 || height < 1) return fail("view size must be at least 1x1");
-    if (std::string error = invalidSettings(given); !error.empty()) return fail(error);
-    std::string isolationError;
-    const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
-    if (!isolated) return fail(isolationError);
+    std::string settingsError;
+    const std::optional<Settings> isolated = measuredSettings(given, scene, width, height, settingsError);
+    if (!isolated) return fail(settingsError);
     const Settings& settings = *isolated;
 
     // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
@@ -385,11 +394,9 @@ AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& give
         report.error = std::move(error);
         return report;
     };
-    if (width < 1 || height < 1) return fail("view size must be at least 1x1");
-    if (std::string error = invalidSettings(given); !error.empty()) return fail(error);
-    std::string isolationError;
-    const std::optional<Settings> isolated = isolateLight(given, scene, 0, isolationError);
-    if (!isolated) return fail(isolationError);
+    std::string settingsError;
+    const std::optional<Settings> isolated = measuredSettings(given, scene, width, height, settingsError);
+    if (!isolated) return fail(settingsError);
     const Settings& settings = *isolated;
     // The reference must describe this view: scene, camera and size here, the light after the frame says where.
     const SurfaceKey surfaceKey{camera.position, camera.target, camera.fovYDeg, camera.nearPlane, camera.farPlane,
