@@ -177,14 +177,14 @@ TEST_F(FlickerTest, SubTexelLightTurnFlickersAtShadowEdgesOfAnUnsnappedMap) {
     AccuracyMeter meter;
     Motion motion;
     motion.kind = MotionKind::Light;
-    motion.step = 0.02;  // degrees: a fraction of a texel of the 256² map (checked below)
+    motion.step = 0.2;  // degrees: about a quarter texel of the 256² map (checked below)
     motion.frames = 4;
     const FlickerReport r = measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
     ASSERT_TRUE(r.ok) << r.error;
     savePicture(r.overlayRgba, r.width, r.height, "flicker-textbook-light");
     savePicture(r.worstPreviousRgba, r.width, r.height, "flicker-textbook-light-worst-a");
     savePicture(r.worstCurrentRgba, r.width, r.height, "flicker-textbook-light-worst-b");
-    EXPECT_GT(r.stepTexels, 0.02);
+    EXPECT_GT(r.stepTexels, 0.1);
     EXPECT_LT(r.stepTexels, 1.0) << "the step must be sub-texel";
     EXPECT_GT(r.maxFlickerPercent, 0.0);
     EXPECT_GT(maskCount(r.flickerMask), 0u);
