@@ -172,6 +172,11 @@ TEST(DepthFormatChange, D32fToD16KeepsTheDepthOffsetAtTheReceivers) {
     shadow.depthBias = 1.0f;
     EXPECT_NEAR(double(changeDepthFormat(shadow, DepthFormat::D32F, 0.3).shadow.depthBias), 33554432.0 / 65535.0, 1e-2);
     EXPECT_NEAR(double(changeDepthFormat(shadow, DepthFormat::D32F, 0.75).shadow.depthBias), 16777216.0 / 65535.0, 1e-2);
+    // Reversed-Z without known receivers: they are taken at stored depth 0.25 (the mirror of 0.75), where D32F's r
+    // is 2^-25, half of its step at 0.75: twice the units.
+    shadow.reversedZ = true;
+    EXPECT_NEAR(double(changeDepthFormat(shadow, DepthFormat::D32F, std::nullopt).shadow.depthBias),
+                2.0 * 16777216.0 / 65535.0, 1e-2);
 }
 
 TEST(DepthFormatChange, NoBiasOrSameFormatChangesNothingButTheFormat) {
