@@ -149,7 +149,7 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
         for (const std::string& w : current.warnings)
             if (std::find(report.warnings.begin(), report.warnings.end(), w) == report.warnings.end())
                 report.warnings.push_back(w);
-        report.frames.push_back({static_cast<const AccuracyNumbers&>(current), current.shadowViewsRendered});
+        report.frames.push_back({static_cast<const AccuracyNumbers&>(current), current.shadowViewsRendered, current.cost});
         if (f == 0) {
             report.texelWorldSize = current.texelWorldSize;
             if (motion.kind == MotionKind::Camera && current.texelWorldSize > 0.0)

@@ -63,6 +63,7 @@ struct FlickerPair {
 struct FlickerFrame {
     AccuracyNumbers numbers;  // the usual metrics of this frame (its camera and light)
     std::size_t shadowViewsRendered = 0;
+    AccuracyCost cost;        // what measuring it cost (a light motion traces new rays every frame)
 };
 
 struct FlickerReport {
