@@ -249,6 +249,14 @@ TEST_F(FlickerTest, BadMotionOrLightIsRefusedWithTheReason) {
     r = measureFlicker(t.meter, t.scene, t.settings, t.camera, kWidth, kHeight, motion);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("lights.5"), std::string::npos) << r.error;
+    // A point light turns about the scene's centre: sitting there, it would not move at all.
+    motion.light = 0;
+    motion.kind = MotionKind::Light;
+    t.settings.lights[0].type = LightType::Point;
+    t.settings.lights[0].position = t.scene.bounds.center();
+    r = measureFlicker(t.meter, t.scene, t.settings, t.camera, kWidth, kHeight, motion);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("scene's centre"), std::string::npos) << r.error;
 }
 
 }  // namespace
