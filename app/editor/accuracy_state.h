@@ -74,7 +74,7 @@ struct AccuracyState {
     Motion flickerMotion = [] {
         Motion m;
         m.kind = MotionKind::Light;
-        m.step = 0.2;
+        m.step = motionInfo(m.kind).typicalStep;
         m.frames = 8;
         return m;
     }();

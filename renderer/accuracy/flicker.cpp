@@ -5,6 +5,7 @@
 #include "light/light_space.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -162,15 +163,20 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
         report.frames.push_back({static_cast<const AccuracyNumbers&>(current), current.shadowViewsRendered, current.cost});
         if (f == 0) {
             report.texelWorldSize = current.texelWorldSize;
-            if (motion.kind == MotionKind::Camera && current.texelWorldSize > 0.0)
-                report.stepTexels = std::abs(motion.step) / current.texelWorldSize;
+            // A turn sweeps the looked-at point across the receivers by its distance x the angle.
+            const double travel = motion.kind == MotionKind::Camera ? std::abs(motion.step)
+                                  : motion.kind == MotionKind::CameraTurn
+                                      ? glm::length(camera.target - camera.position) * glm::radians(std::abs(motion.step))
+                                      : 0.0;
+            if (movesCamera(motion.kind) && current.texelWorldSize > 0.0)
+                report.stepTexels = travel / current.texelWorldSize;
         }
         std::vector<std::uint8_t> picture = dimmedPicture(width, height, current.pixelClass, current.pixelShadow,
                                                           current.pixelLambert, frameSettings.ambient);
         if (f > 0) {
             // The pair's halves at frame f's camera: a light motion keeps the camera (frame f-1 is the first half);
             // a camera motion keeps the light, so frame f with frame f-1's light is frame f itself.
-            const AccuracyReport& first = motion.kind == MotionKind::Light ? previous : current;
+            const AccuracyReport& first = movesCamera(motion.kind) ? current : previous;
             FlickerPair pair;
             pair.from = f - 1;
             pair.counts = compareFlickerPair(halfOf(first), halfOf(current), &flickering);

@@ -61,6 +61,23 @@ TEST(FlickerMotion, CameraSlidesAlongItsRightVectorByFrameTimesStep) {
     EXPECT_NEAR(cameraAtFrame(start, motion, 1).position.x - start.position.x, 0.001, 1e-9);
 }
 
+TEST(FlickerMotion, CameraTurnsItsViewAboutItsPosition) {
+    Camera start;
+    start.position = {0.0, 2.0, 10.0};
+    start.target = {0.0, 2.0, 0.0};
+    Motion motion;
+    motion.kind = MotionKind::CameraTurn;
+    motion.step = 0.5;
+    motion.frames = 200;
+    const Camera c = cameraAtFrame(start, motion, 180);  // 90 degrees about world up
+    EXPECT_EQ(c.position, start.position);
+    EXPECT_NEAR(glm::length(c.target - c.position), 10.0, 1e-9);
+    EXPECT_NEAR(std::abs(c.target.x), 10.0, 1e-9);
+    EXPECT_NEAR(c.target.y, 2.0, 1e-12);
+    EXPECT_EQ(parseMotion("camera-turn"), MotionKind::CameraTurn);
+    EXPECT_EQ(motionNames(), "camera, camera-turn or light");
+}
+
 TEST(FlickerMotion, LightTurnsByFrameTimesStepAboutTheDefaultAxis) {
     Bounds bounds;
     bounds.extend({-1.0f, -1.0f, -1.0f});
@@ -180,6 +197,13 @@ TEST_F(FlickerTest, CameraMotionFlickersExactlyZeroAndRerendersNoShadowView) {
     EXPECT_EQ(maskCount(r.flickerMask), 0u);
     // The camera did move: the frames see different pixels.
     EXPECT_NE(r.frames.front().numbers.counts.lit, r.frames.back().numbers.counts.lit);
+
+    // Turning the camera (HARD_CASES.md case 7's second half) keeps the maps too.
+    const FlickerReport turned = t.play(MotionKind::CameraTurn, 0.1, 3);
+    ASSERT_TRUE(turned.ok) << turned.error;
+    EXPECT_EQ(turned.maxFlickerPercent, 0.0);
+    for (const FlickerPair& pair : turned.pairs) EXPECT_EQ(pair.shadowViewsRendered, 0u);
+    EXPECT_NE(turned.frames.front().numbers.counts.lit, turned.frames.back().numbers.counts.lit);
 }
 
 TEST_F(FlickerTest, SubTexelLightTurnFlickersAtShadowEdgesOfAnUnsnappedMap) {

@@ -241,11 +241,14 @@ void flickerTab(PanelContext& ctx) {
     AccuracyState& a = state.accuracy;
     Motion& m = a.flickerMotion;
     ImGui::BeginDisabled(a.running);
-    int kind = m.kind == MotionKind::Camera ? 0 : 1;
-    ImGui::SetNextItemWidth(110.0f);
-    if (ImGui::Combo("motion", &kind, "camera\0light\0")) {
-        m.kind = kind == 0 ? MotionKind::Camera : MotionKind::Light;
-        m.step = m.kind == MotionKind::Camera ? 0.01 : 0.2;  // a sub-texel step of a typical map for either
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::BeginCombo("motion", motionName(m.kind))) {
+        for (const MotionInfo& info : motionKinds())
+            if (ImGui::Selectable(info.name, info.kind == m.kind) && info.kind != m.kind) {
+                m.kind = info.kind;
+                m.step = info.typicalStep;
+            }
+        ImGui::EndCombo();
     }
     state.controls.recordLastItem("accuracy.flicker.motion");
     ImGui::SameLine();
@@ -255,8 +258,7 @@ void flickerTab(PanelContext& ctx) {
     state.controls.recordLastItem("accuracy.flicker.frames");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(110.0f);
-    ImGui::InputDouble(m.kind == MotionKind::Camera ? "world units / frame" : "degrees / frame", &m.step, 0.0, 0.0,
-                       "%.4g");
+    ImGui::InputDouble((std::string(motionInfo(m.kind).unit) + " / frame").c_str(), &m.step, 0.0, 0.0, "%.4g");
     state.controls.recordLastItem("accuracy.flicker.step");
     if (ImGui::Button("Measure flicker")) ctx.actions.measureFlicker();
     state.controls.recordLastItem("accuracy.flicker.measure");
@@ -280,7 +282,7 @@ void flickerTab(PanelContext& ctx) {
             "a visible change of S while V does not, flips included");
         row("mean |dS|", format("max %.5f, mean %.5f", f.maxMeanAbsDeltaS, f.meanMeanAbsDeltaS),
             "over pixels whose V did not change");
-        row("step", format("%g ", f.motion.step) + (f.motion.kind == MotionKind::Camera ? "world units" : "degrees") +
+        row("step", format("%g ", f.motion.step) + motionInfo(f.motion.kind).unit +
                         format(" = %.3g texels", f.stepTexels) + (f.stepTexels < 1.0 ? " (sub-texel)" : ""),
             "per frame; in texels of the light's map");
         std::size_t rerendered = 0;
