@@ -100,7 +100,6 @@ void drawShadowMapPanel(PanelContext& ctx) {
     resolutionControls(state);
     ImGui::PushItemWidth(-175.0f);
     comboField(state, key("shadow.depthFormat").c_str(), "depth format");
-    checkboxField(state, key("shadow.reversedZ").c_str(), "Reversed-Z");
     ImGui::Separator();
     dragFloatField(state, key("shadow.depthBias").c_str(), "DepthBias (units)", 1.0f, "%.4g");  // d16 after a format change: 0.0078
     sliderFloatField(state, key("shadow.slopeScaledDepthBias").c_str(), "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");
@@ -110,6 +109,7 @@ void drawShadowMapPanel(PanelContext& ctx) {
     biasAmounts(state);
     ImGui::Separator();
     comboField(state, key("shadow.cullMode").c_str(), "cull (shadow pass)");
+    checkboxField(state, key("shadow.reversedZ").c_str(), "Reversed-Z (near 1, far 0)");
     ImGui::PopItemWidth();
 }
 
