@@ -123,7 +123,10 @@ ReceiverDepths receiverDepths(const Scene& scene, const LightSpace& light, const
                 continue;  // outside the map
             const glm::dvec3 e1(b - a), e2(c - a);
             const double det = e1.x * e2.y - e2.x * e1.y;  // twice the area in texels
-            const double depth = std::clamp(std::max({a.z, b.z, c.z}), 0.0, 1.0);
+            // The triangle's farthest vertex from the light in either convention (reversed-Z: the smallest stored
+            // depth), so both report the same receivers.
+            const double depth = std::clamp(light.reversedZ ? std::min({a.z, b.z, c.z}) : std::max({a.z, b.z, c.z}),
+                                            0.0, 1.0);
             if (!std::isfinite(det) || !std::isfinite(depth)) continue;
             const double area = 0.5 * std::abs(det);
             r.valid = true;
