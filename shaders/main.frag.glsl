@@ -9,6 +9,8 @@
 //              technique's taps
 //              (renderer/shading/filter_taps.cpp, shared with the pixel probe)
 //   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
+//   RECEIVER_PLANE  some directional / spot caster uses receiver-plane depth bias (its LightData flag says which);
+//              with FILTER_NEAREST (taps that read one texel) the plane is taken at the texel's centre
 // Only the lights, kinds and features a frame uses are compiled in; loop counts are compile-time constants.
 layout(location = 0) in vec3 vWorldPosition;
 layout(location = 1) in vec3 vNormal;
@@ -26,7 +28,8 @@ struct LightData {
     vec4 radiance;        // rgb: colour; w: intensity
     vec4 shadow;          // x: map array, y: layer (2D) or cube index, z: 1 / resolution, w: normal offset (texels)
     vec4 depth;           // x: near, y: far, z: texel world size (directional) or per unit of depth (spot, point),
-                          // w: 1 = reversed-Z (the map stores near 1, far 0; its sampler compares GEQUAL), else 0
+                          // w: flags: 1 = reversed-Z (the map stores near 1, far 0; its sampler compares GEQUAL),
+                          //    2 = receiver-plane depth bias
 };
 #if LIGHT_COUNT > 0
 layout(std140, binding = 0) uniform Lights { LightData uLights[LIGHT_COUNT]; };
@@ -64,7 +67,7 @@ const vec2 TAP_OFFSETS[FILTER_TAPS] = vec2[](FILTER_TAP_OFFSETS);
 
 // Texture coordinates and window depth in the view's depth convention: GL's [-1, 1] clip depth, or reversed-Z's
 // zero-to-one depth (near 1, far 0). The CPU's copy is LightSpace::textureOf.
-bool reversedZ(LightData L) { return L.depth.w > 0.5; }
+bool reversedZ(LightData L) { return (int(L.depth.w) & 1) != 0; }
 
 vec3 toLightTexture(LightData L, vec3 worldPosition) {
     vec4 clip = L.viewProjection * vec4(worldPosition, 1.0);
@@ -82,19 +85,66 @@ float rangeWindow(float distance, float range) {
     return clamp(1.0 - r * r * r * r, 0.0, 1.0) * clamp(1.0 - r * r * r * r, 0.0, 1.0);
 }
 
+#ifdef RECEIVER_PLANE
+// Screen-space derivatives of the surface position, taken in main() where control flow is uniform (a light's cone
+// test is not): the receiver's plane for every light.
+vec3 gPositionDx, gPositionDy;
+
+// A plane steeper than this many texel-world-sizes of depth along the light per texel across is clamped (grazing
+// receivers, silhouettes): the tilt then stops growing and the slope bias covers the rest.
+const float kReceiverPlaneMaxSlope = 8.0;
+
+// Receiver-plane depth bias (Isidoro, GDC 2006): the receiver's depth change per texel along the map's u and v. The
+// pixel's steps in x and y, taken into the map, give the Jacobian d(u,v)/d(x,y) and d(depth)/d(x,y); its inverse
+// gives d(depth)/d(u,v). 0 when the light does not use it or the Jacobian is (near) singular (an edge-on receiver).
+// `ray`: the unit direction light travels at the lookup; `texelWorld`: a texel's world size there.
+vec2 receiverPlaneSlope(LightData L, vec3 lookup, vec3 lightTex, vec3 ray, float texelWorld) {
+    if ((int(L.depth.w) & 2) == 0) return vec2(0.0);
+    float texels = 1.0 / L.shadow.z;
+    vec3 dx = toLightTexture(L, lookup + gPositionDx) - lightTex;
+    vec3 dy = toLightTexture(L, lookup + gPositionDy) - lightTex;
+    dx.xy *= texels;
+    dy.xy *= texels;
+    float det = dx.x * dy.y - dx.y * dy.x;
+    if (!(abs(det) > 1e-3 * length(dx.xy) * length(dy.xy))) return vec2(0.0);
+    vec2 slope = vec2(dy.y * dx.z - dx.y * dy.z, dx.x * dy.z - dy.x * dx.z) / det;
+    float limit = kReceiverPlaneMaxSlope * abs(toLightTexture(L, lookup + ray * texelWorld).z - lightTex.z);
+    float length2 = dot(slope, slope);
+    return length2 > limit * limit ? slope * (limit * inversesqrt(length2)) : slope;
+}
+#endif
+
 #if MAP_ARRAYS_2D > 0
-// Fraction of light reaching the point through a 2D view, 1 = lit.
-float shadow2D(LightData L, vec3 lookup) {
+// Fraction of light reaching the point through a 2D view, 1 = lit. `ray` and `texelWorld` (the direction light
+// travels and a texel's world size at the lookup) bound the receiver plane's tilt.
+float shadow2D(LightData L, vec3 lookup, vec3 ray, float texelWorld) {
     vec3 lightTex = toLightTexture(L, lookup);
     float ref = clampToFar(L, lightTex.z);
+#ifdef RECEIVER_PLANE
+    vec2 plane = receiverPlaneSlope(L, lookup, lightTex, ray, texelWorld);
+#endif
 #if MAP_ARRAYS_2D == 1
     const int map = 0;  // one array: a constant index (a dynamic one is much slower on some drivers, llvmpipe 3x)
 #else
     int map = int(L.shadow.x);
 #endif
     float sum = 0.0;
-    FOR_EACH_TAP
-        sum += texture(uMaps2D[map], vec4(lightTex.xy + TAP_OFFSET * uFilterScale * L.shadow.z, L.shadow.y, ref));
+    FOR_EACH_TAP {
+        vec2 offset = TAP_OFFSET * uFilterScale;  // texels
+#ifdef RECEIVER_PLANE
+#ifdef FILTER_NEAREST
+        // A nearest tap reads one texel, whose stored depth is its caster's at the texel's centre: the plane there.
+        vec2 lookupTexels = lightTex.xy / L.shadow.z;
+        vec2 toCentre = floor(lookupTexels + offset) + 0.5 - lookupTexels;
+        float tapRef = clampToFar(L, lightTex.z + dot(plane, toCentre));
+#else
+        float tapRef = clampToFar(L, lightTex.z + dot(plane, offset));  // the receiver's plane at the tap
+#endif
+#else
+        float tapRef = ref;
+#endif
+        sum += texture(uMaps2D[map], vec4(lightTex.xy + offset * L.shadow.z, L.shadow.y, tapRef));
+    }
     return sum / float(FILTER_TAPS);
 }
 #endif
@@ -171,7 +221,7 @@ vec3 offsetLookup(Shading s, LightData L, float texelWorld) {
 void directionalLight(inout Shading s, LightData L, const bool casts) {
     float shadow = 1.0;
 #if MAP_ARRAYS_2D > 0
-    if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z));
+    if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z), L.direction.xyz, L.depth.z);
 #endif
     addLight(s, L, -L.direction.xyz, shadow, 1.0);
 }
@@ -186,7 +236,10 @@ void spotLight(inout Shading s, LightData L, const bool casts) {
     }
     float shadow = 1.0;
 #if MAP_ARRAYS_2D > 0
-    if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z * dot(vWorldPosition - L.position.xyz, L.direction.xyz)));
+    if (casts) {
+        float texelWorld = L.depth.z * dot(vWorldPosition - L.position.xyz, L.direction.xyz);
+        shadow = shadow2D(L, offsetLookup(s, L, texelWorld), -l, texelWorld);
+    }
 #endif
     addLight(s, L, l, shadow, attenuation);
 }
@@ -212,6 +265,10 @@ void main() {
     alpha *= texture(uBaseColorTexture, vUv).a;
 #endif
     if (alpha < uAlphaCutoff) discard;
+#endif
+#ifdef RECEIVER_PLANE
+    gPositionDx = dFdx(vWorldPosition);
+    gPositionDy = dFdy(vWorldPosition);
 #endif
     Shading s;
     s.n = normalize(vNormal);

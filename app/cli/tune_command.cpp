@@ -19,9 +19,9 @@ namespace {
 
 std::string stepLine(const TuneStep& s) {
     char line[256];
-    std::snprintf(line, sizeof line, "%3d  %-34s %12.6g %7.3g %7.3g %-5s %8.3f %8.3f %8.3f %8zu %7.2f%s", s.index,
+    std::snprintf(line, sizeof line, "%3d  %-34s %12.6g %7.3g %7.3g %-5s %-3s %8.3f %8.3f %8.3f %8zu %7.2f%s", s.index,
                   s.phase.c_str(), double(s.depthBias), double(s.slopeScaledDepthBias), double(s.normalOffset),
-                  cullModeName(s.cullMode).c_str(),
+                  cullModeName(s.cullMode).c_str(), s.receiverPlaneBias ? "on" : "off",
                   s.acnePercent, s.leakPercent, s.wrongPercent, s.wrongBeyondK, s.edgeErrorTexels,
                   s.bestSoFar ? "  <- best" : "");
     return line;
@@ -68,7 +68,7 @@ int runTune(const TuneOptions& options) {
             std::cout << "tuning bias of " << label << " for " << scene.name << " at " << options.width << "x"
                       << options.height << ", measured alone: acne <= " << options.maxAcnePercent
                       << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
-            std::cout << "  #  phase                                 DepthBias   slope  normal cull    acne %   leak %"
+            std::cout << "  #  phase                                 DepthBias   slope  normal cull  rpb   acne %   leak %"
                          "  wrong %  wrong>k edge tx\n";
             const TuneResult result =
                 tuneBias(meter, scene, *one, camera, options.width, options.height, options.maxAcnePercent, nullptr,
@@ -80,8 +80,10 @@ int runTune(const TuneOptions& options) {
             if (result.reachedLimit) {
                 std::cout << "\nresult: " << label << ": DepthBias " << best.depthBias << ", SlopeScaledDepthBias "
                           << best.slopeScaledDepthBias << ", normal offset " << best.normalOffset
-                          << " texels, cullMode " << cull << " (" << result.path.size() << " candidates in "
-                          << result.seconds << " s)\n";
+                          << " texels, cullMode " << cull << ", receiverPlaneBias "
+                          << (best.receiverPlaneBias ? "true" : "false") << " (" << result.path.size()
+                          << " candidates in " << result.seconds << " s)\n";
+                if (const std::string why = receiverPlaneChoice(result); !why.empty()) std::cout << why << "\n";
                 setLightShadow(tuned, index, result.best.lights[0].shadow);
                 summary += " " + label + ": acne " + std::to_string(result.report.acnePercent) + " %, leak " +
                            std::to_string(result.report.leakPercent) + " %, wrong pixels " +
@@ -106,7 +108,7 @@ int runTune(const TuneOptions& options) {
             for (const TuneStep& s : result.path)
                 path.push_back({{"index", s.index}, {"phase", s.phase}, {"depthBias", s.depthBias},
                                 {"slopeScaledDepthBias", s.slopeScaledDepthBias}, {"normalOffset", s.normalOffset},
-                                {"cullMode", cullModeName(s.cullMode)},
+                                {"cullMode", cullModeName(s.cullMode)}, {"receiverPlaneBias", s.receiverPlaneBias},
                                 {"acnePercent", s.acnePercent}, {"leakPercent", s.leakPercent},
                                 {"wrongPixelsPercent", s.wrongPercent}, {"wrongBeyondK", s.wrongBeyondK},
                                 {"meanError", s.meanError}, {"edgeErrorP95Texels", s.edgeErrorTexels},
@@ -117,7 +119,9 @@ int runTune(const TuneOptions& options) {
                                   {"seconds", result.seconds},
                                   {"closest",
                                    {{"depthBias", best.depthBias}, {"slopeScaledDepthBias", best.slopeScaledDepthBias},
-                                    {"normalOffset", best.normalOffset}, {"cullMode", cull}}},
+                                    {"normalOffset", best.normalOffset}, {"cullMode", cull},
+                                    {"receiverPlaneBias", best.receiverPlaneBias}}},
+                                  {"receiverPlaneChoice", receiverPlaneChoice(result)},
                                   {"report", accuracyToJson(result.report)},
                                   {"path", path}});
         }

@@ -170,7 +170,8 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
             applied = state_.edit("shadow.depthBias", best.depthBias) &&
                       state_.edit("shadow.slopeScaledDepthBias", best.slopeScaledDepthBias) &&
                       state_.edit("shadow.normalOffset", best.normalOffset) &&
-                      state_.edit("shadow.cullMode", cullModeName(best.cullMode));
+                      state_.edit("shadow.cullMode", cullModeName(best.cullMode)) &&
+                      state_.edit("shadow.receiverPlaneBias", best.receiverPlaneBias);
             if (key) key->settings = tune.best;
         } else if (key) {
             key->settings = tune.closest;  // the report describes the closest candidate, not the view: stale
@@ -178,10 +179,11 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
         char text[320];
         if (tune.reachedLimit)
             std::snprintf(text, sizeof text,
-                          "suggested: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s (acne "
+                          "suggested: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s%s (acne "
                           "%.3f %%, wrong pixels %.3f %%, %zu candidates, %.1f s)%s",
                           double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
-                          cullModeName(best.cullMode).c_str(), tune.report.acnePercent, tune.report.wrongPercent,
+                          cullModeName(best.cullMode).c_str(), best.receiverPlaneBias ? ", receiver-plane bias" : "",
+                          tune.report.acnePercent, tune.report.wrongPercent,
                           tune.path.size(), tune.seconds, applied ? ", applied" : ", NOT applied");
         else
             std::snprintf(text, sizeof text,

@@ -4,10 +4,12 @@
 #include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <optional>
 
@@ -31,6 +33,13 @@ constexpr int kBisections = 3;
 constexpr int kMaxSteps = 2 + 4 * (10 + kBisections);  // for the progress bar: start, zero bias, 4 families
                                                        // (cull mode candidates extend it; the bar then rescales)
 constexpr float kFirstShare = 0.3f;                    // of the progress bar: the first candidate's reference
+
+// What the search varies besides the bias amounts: the cull mode and receiver-plane bias.
+struct Variant {
+    CullMode cull = CullMode::None;
+    bool plane = false;
+    bool operator==(const Variant&) const = default;
+};
 
 // One search direction: the bias grows with t along it.
 struct Family {
@@ -58,6 +67,31 @@ bool betterCandidate(const TuneStep& a, const TuneStep& b) {
     if (a.edgeErrorTexels != b.edgeErrorTexels) return a.edgeErrorTexels < b.edgeErrorTexels;
     if (a.biasTexels != b.biasTexels) return a.biasTexels < b.biasTexels;
     return a.acnePercent < b.acnePercent;
+}
+
+std::string receiverPlaneChoice(const TuneResult& result) {
+    const std::optional<TuneStep>& off = result.bestByPlane[0];
+    const std::optional<TuneStep>& on = result.bestByPlane[1];
+    if (!off || !on) return {};
+    const bool picked = betterCandidate(*on, *off);
+    const TuneStep& a = picked ? *on : *off;
+    const TuneStep& b = picked ? *off : *on;
+    std::string why;
+    if (a.withinLimit != b.withinLimit) why = "only it reaches the acne limit";
+    else if (!a.withinLimit) why = "less acne";
+    else if (a.wrongBeyondK != b.wrongBeyondK) why = "fewer wrong pixels beyond k";
+    else if (a.edgeErrorTexels != b.edgeErrorTexels) why = "a smaller edge error";
+    else why = "a smaller bias";
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "receiver-plane bias %s (%s): with it slope %.3g, acne %.3f %%, leak %.3f %%, wrong %.3f %% "
+                  "(%zu beyond k), edge %.2f texels; without it slope %.3g, acne %.3f %%, leak %.3f %%, wrong %.3f %% "
+                  "(%zu beyond k), edge %.2f texels",
+                  picked ? "kept" : "not kept", why.c_str(), double(on->slopeScaledDepthBias), on->acnePercent,
+                  on->leakPercent, on->wrongPercent, on->wrongBeyondK, on->edgeErrorTexels,
+                  double(off->slopeScaledDepthBias), off->acnePercent, off->leakPercent, off->wrongPercent,
+                  off->wrongBeyondK, off->edgeErrorTexels);
+    return text;
 }
 
 TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& start, const Camera& camera, int width,
@@ -111,9 +145,10 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         return finish();
     }
 
-    auto settingsFor = [&](const Candidate& c, CullMode cull) {
+    auto settingsFor = [&](const Candidate& c, Variant v) {
         Settings s = start;
-        s.lights[0].shadow.cullMode = cull;
+        s.lights[0].shadow.cullMode = v.cull;
+        s.lights[0].shadow.receiverPlaneBias = v.plane;
         s.lights[0].shadow.depthBias = float(std::min(c.constantTexels / unitTexels, kMaxDepthBiasUnits));
         s.lights[0].shadow.slopeScaledDepthBias = float(std::min(c.slope, kMaxSlope));
         s.lights[0].shadow.normalOffset = float(std::min(c.normal, kMaxNormalTexels));
@@ -158,6 +193,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         step.slopeScaledDepthBias = s.lights[0].shadow.slopeScaledDepthBias;
         step.normalOffset = s.lights[0].shadow.normalOffset;
         step.cullMode = s.lights[0].shadow.cullMode;
+        step.receiverPlaneBias = s.lights[0].shadow.receiverPlaneBias;
         step.biasTexels = magnitude;
         step.acnePercent = report.acnePercent;
         step.leakPercent = report.leakPercent;
@@ -184,25 +220,40 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     // 1. The given preset, and no bias at all.
     const Candidate given{double(start.lights[0].shadow.depthBias) * unitTexels, start.lights[0].shadow.slopeScaledDepthBias,
                           start.lights[0].shadow.normalOffset};
-    const CullMode startCull = start.lights[0].shadow.cullMode;
+    const Variant startVariant{start.lights[0].shadow.cullMode, start.lights[0].shadow.receiverPlaneBias};
     measure("start (the given settings)", start, given.magnitude());
     std::size_t culled = lastCulled;
-    const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}, startCull), 0.0);
+    const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}, startVariant), 0.0);
     if (stop) return finish();
     culled = std::max(culled, lastCulled);
 
     // 2. Culled casters cause wrong pixels: the other cull modes join the search when they cull less.
-    std::vector<std::pair<CullMode, bool>> modes = {{startCull, zeroPasses.value_or(false)}};
+    std::vector<std::pair<Variant, bool>> modes = {{startVariant, zeroPasses.value_or(false)}};
     if (culled > 0) {
         for (CullMode mode : {CullMode::None, CullMode::Back, CullMode::Front}) {
-            if (mode == startCull) continue;
+            if (mode == startVariant.cull) continue;
+            const Variant v{mode, startVariant.plane};
             const std::optional<bool> passes =
-                measure(std::string("zero bias, cull ") + cullModeName(mode), settingsFor({}, mode), 0.0);
+                measure(std::string("zero bias, cull ") + cullModeName(mode), settingsFor({}, v), 0.0);
             if (stop) return finish();
             if (lastCulled < culled) {
-                modes.emplace_back(mode, passes.value_or(false));
+                modes.emplace_back(v, passes.value_or(false));
                 plannedSteps += 4 * (10 + kBisections);
             }
+        }
+    }
+    // 2b. A filter whose taps spread (PCF, Poisson) on a directional or spot light: the search runs with
+    //     receiver-plane bias the other way too, and the usual criterion picks between them.
+    const bool planeApplies = filterTechnique(start.filter.kind).receiverPlane && lit.lights[0].type != LightType::Point;
+    if (planeApplies) {
+        const std::size_t count = modes.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            const Variant v{modes[i].first.cull, !modes[i].first.plane};
+            const std::optional<bool> passes =
+                measure(std::string("zero bias, receiver plane ") + (v.plane ? "on" : "off"), settingsFor({}, v), 0.0);
+            if (stop) return finish();
+            modes.emplace_back(v, passes.value_or(false));
+            plannedSteps += 4 * (10 + kBisections);
         }
     }
 
@@ -217,7 +268,8 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     };
     for (const auto& [mode, passesAtZero] : modes) {
         if (passesAtZero) continue;
-        const std::string suffix = mode == startCull ? "" : std::string(", cull ") + cullModeName(mode);
+        std::string suffix = mode.cull == startVariant.cull ? "" : std::string(", cull ") + cullModeName(mode.cull);
+        if (mode.plane != startVariant.plane) suffix += mode.plane ? ", receiver plane" : ", no receiver plane";
         for (const Family& family : families) {
             double failing = 0.0, passing = -1.0;
             for (double t = 0.25;; t = std::min(t * 2.0, family.tMax)) {
@@ -244,6 +296,11 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         }
     }
 
+    for (const TuneStep& step : result.path) {
+        std::optional<TuneStep>& best = result.bestByPlane[step.receiverPlaneBias ? 1 : 0];
+        if (!best || betterCandidate(step, *best)) best = step;
+    }
+    if (!planeApplies) result.bestByPlane[0] = result.bestByPlane[1] = std::nullopt;
     result.reachedLimit = bestIndex && result.path[*bestIndex].withinLimit;
     if (result.reachedLimit) {
         result.best = result.closest;

@@ -1,12 +1,14 @@
 #pragma once
-// Suggests DepthBias, SlopeScaledDepthBias, normal offset and, when culled casters cause wrong pixels, the shadow
-// pass's cull mode: among the candidates whose acne (metrics version 2) is at most maxAcnePercent, the fewest wrong
+// Suggests DepthBias, SlopeScaledDepthBias, normal offset, with a PCF / Poisson filter whether to use receiver-plane
+// depth bias (each way is searched; the plane usually needs far less slope bias) and, when culled casters cause wrong
+// pixels, the shadow pass's cull mode: among the candidates whose acne (metrics version 2) is at most maxAcnePercent, the fewest wrong
 // pixels beyond k, then the smallest edge error, then the smallest bias. It never suggests a setting above the limit:
 // when none reaches it, it says so and names the cause that stops it. Candidates are measured with an AccuracyMeter
 // (each costs one tool frame: the reference is cached). Other settings are kept as given.
 #include "accuracy/accuracy_meter.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct TuneStep {
     float slopeScaledDepthBias = 0.0f;
     float normalOffset = 0.0f;       // texels
     CullMode cullMode = CullMode::None;
+    bool receiverPlaneBias = false;
     double biasTexels = 0.0;         // the bias's size in texels (constant + slope + normal offset), for the tie-break
     double acnePercent = 0.0;
     double leakPercent = 0.0;
@@ -42,14 +45,20 @@ struct TuneResult {
     bool cancelled = false;
     std::string error;               // when !ok
     bool reachedLimit = false;       // false: no candidate reached acne <= maxAcnePercent
-    Settings best;                   // reached: start with the best bias (and cull mode) found; else start unchanged
+    Settings best;                   // reached: start with the best bias (cull mode, receiver plane) found; else start
     Settings closest;                // the candidate with the least acne (== best when reached)
     MismatchCause blockingCause = MismatchCause::None;  // not reached: the cause of most of closest's acne
     std::vector<TuneStep> path;      // every candidate measured, in order
     AccuracyReport report;           // the measurement of `closest`
     double seconds = 0.0;            // wall time of the search
     AccuracyCost referenceCost;      // what the first measurement (which built the reference) cost
+    // When the search ran both ways (PCF / Poisson): the best candidate with receiver-plane bias and without it, by
+    // the same criterion; index 0 = off, 1 = on (nullopt: that way was not searched).
+    std::optional<TuneStep> bestByPlane[2];
 };
+
+// Why the tuner kept or dropped receiver-plane bias, in one sentence ("" when it searched only one way).
+std::string receiverPlaneChoice(const TuneResult& result);
 
 TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& start, const Camera& camera, int width,
                     int height, double maxAcnePercent = 0.1, AccuracyProgress* progress = nullptr,

@@ -69,13 +69,16 @@ double polygonOffsetDepth(const ShadowMapSettings& shadow, DepthFormat format, d
     return o;
 }
 
-double windowDepthSlope(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+std::optional<glm::dvec2> windowDepthGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     const glm::dvec3 e1 = b - a, e2 = c - a;
     const double det = e1.x * e2.y - e2.x * e1.y;
-    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return -1.0;
-    const double dzdx = (e1.z * e2.y - e2.z * e1.y) / det;
-    const double dzdy = (e2.z * e1.x - e1.z * e2.x) / det;
-    return std::max(std::abs(dzdx), std::abs(dzdy));
+    if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return std::nullopt;
+    return glm::dvec2((e1.z * e2.y - e2.z * e1.y) / det, (e2.z * e1.x - e1.z * e2.x) / det);
+}
+
+double windowDepthSlope(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const std::optional<glm::dvec2> g = windowDepthGradient(a, b, c);
+    return g ? std::max(std::abs(g->x), std::abs(g->y)) : -1.0;
 }
 
 BiasTerm biasTerm(const LightSpace& light, double depth, double atDepth) {
@@ -120,7 +123,10 @@ ReceiverDepths receiverDepths(const Scene& scene, const LightSpace& light, const
                 continue;  // outside the map
             const glm::dvec3 e1(b - a), e2(c - a);
             const double det = e1.x * e2.y - e2.x * e1.y;  // twice the area in texels
-            const double depth = std::clamp(std::max({a.z, b.z, c.z}), 0.0, 1.0);
+            // The triangle's farthest vertex from the light in either convention (reversed-Z: the smallest stored
+            // depth), so both report the same receivers.
+            const double depth = std::clamp(light.reversedZ ? std::min({a.z, b.z, c.z}) : std::max({a.z, b.z, c.z}),
+                                            0.0, 1.0);
             if (!std::isfinite(det) || !std::isfinite(depth)) continue;
             const double area = 0.5 * std::abs(det);
             r.valid = true;

@@ -10,7 +10,10 @@
 #include "scene/scene.h"
 #include "settings/settings.h"
 
+#include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_double3.hpp>
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -37,6 +40,8 @@ double polygonOffsetDepth(const ShadowMapSettings& shadow, DepthFormat format, d
 // m of a triangle from its vertices in the map's window space (x, y in texels, z window depth): the largest of
 // |dz/dx|, |dz/dy|, as the GPU computes it for the polygon offset. Negative for an edge-on triangle (no slope).
 double windowDepthSlope(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+// The plane's signed gradient (dz/dx, dz/dy) of the same triangle; nullopt for an edge-on one.
+std::optional<glm::dvec2> windowDepthGradient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
 // A depth difference `depth`, taken at window depth `atDepth` (spot lights' depth is not linear in distance), in
 // world units and texels.

@@ -1,6 +1,7 @@
 #include "probe/pixel_probe.h"
 
 #include "shading/filter_taps.h"
+#include "shading/filters/filter_technique.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -183,6 +184,28 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     const auto [depthEps, texelEps] = lookupUncertainty(light, lookup, res);
     r.depthUncertainty = depthEps;
 
+    // The surface's triangle in the map (x, y in texels, z stored depth): its slope sets the bias it gets as a caster,
+    // its plane the receiver-plane term (main.frag.glsl takes the same plane from screen-space derivatives).
+    glm::dvec3 window[3];
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 t = toLightTexture(light, v[k]);
+        window[k] = {t.x * res, t.y * res, std::clamp(t.z, 0.0, 1.0)};
+    }
+    glm::dvec2 plane(0.0);  // d(depth)/d(texel) when receiver-plane bias applies
+    const ShadowMapSettings& shadow = settings_.lights[0].shadow;
+    if (shadow.receiverPlaneBias && filterTechnique(r.filter.kind).receiverPlane && light.cubeFace < 0) {
+        glm::dvec3 unclamped[3];
+        for (int k = 0; k < 3; ++k) unclamped[k] = {window[k].x, window[k].y, toLightTexture(light, v[k]).z};
+        if (const std::optional<glm::dvec2> g = windowDepthGradient(unclamped[0], unclamped[1], unclamped[2])) {
+            // The shader's clamp: at most 8 texel-world-sizes of depth along the light per texel across.
+            const glm::dvec3 ray = light.perspective ? glm::normalize(lookup - light.position) : light.direction;
+            const double limit = 8.0 * std::abs(toLightTexture(light, lookup + ray * texelWorld).z - r.lightTexture.z);
+            const double length = glm::length(*g);
+            plane = length > limit ? *g * (limit / length) : *g;
+        }
+    }
+    r.receiverPlane = plane;
+
     // The taps: which texels each compares, read back from the map in one rectangle.
     const double texelStep = double(1.0f / float(res));  // uShadowTexel
     struct Candidate {
@@ -228,7 +251,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     }
     const int rectW = maxX >= minX ? maxX - minX + 1 : 0, rectH = maxY >= minY ? maxY - minY + 1 : 0;
     const std::vector<float> stored = readShadowMapRect(renderer_->shadowMap(), minX, minY, rectW, rectH);
-    auto compare = [&](int tx, int ty, double weight) {
+    auto compare = [&](int tx, int ty, double weight, double receiver, double eps) {
         ProbeTexel texel;
         texel.weight = weight;
         const std::optional<int> ax = addressTexel(tx, res, r.addressMode), ay = addressTexel(ty, res, r.addressMode);
@@ -236,8 +259,8 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         texel.texel = texel.border ? glm::ivec2(tx, ty) : glm::ivec2(*ax, *ay);
         texel.stored = texel.border ? double(conventionBorderDepth(settings_.sampler.borderDepth, light.reversedZ))
                                     : double(stored[std::size_t(*ay - minY) * std::size_t(rectW) + std::size_t(*ax - minX)]);
-        texel.lit = light.litBy(r.receiverDepth, texel.stored);
-        texel.uncertain = std::abs(r.receiverDepth - texel.stored) <= depthEps;
+        texel.lit = light.litBy(receiver, texel.stored);
+        texel.uncertain = std::abs(receiver - texel.stored) <= eps;
         return texel;
     };
     double sum = 0.0, low = 0.0, high = 0.0;
@@ -246,9 +269,17 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         ProbeTap& t = r.taps[k];
         const Candidate& c = candidates[k];
         t.value = t.low = t.high = 0.0;
+        // Receiver-plane bias: a nearest tap compares the plane at its texel's centre, a bilinear one at the tap.
+        const glm::dvec2 toPlane = t.bilinear ? t.offsetTexels
+                                              : glm::floor(t.texelCoord) + 0.5 - r.texelCoord;
+        const double planeTerm = glm::dot(plane, toPlane);
+        const double receiver = plane == glm::dvec2(0.0) ? r.receiverDepth : light.clampToFar(r.receiverDepth + planeTerm);
+        // The GPU takes the plane from float differences of neighbouring pixels' positions: a relative error of its
+        // own (2^-8 covers llvmpipe's on builtin:grazing, where a 20-unit DepthBias leaves that noise as acne).
+        const double eps = depthEps + std::abs(planeTerm) * std::ldexp(1.0, -8);
         for (const auto& [tx, wx] : c.xs)
             for (const auto& [ty, wy] : c.ys) {
-                ProbeTexel texel = compare(tx, ty, wx * wy);
+                ProbeTexel texel = compare(tx, ty, wx * wy, receiver, eps);
                 t.value += texel.weight * (texel.lit ? 1.0 : 0.0);
                 t.low += texel.weight * (texel.lit && !texel.uncertain ? 1.0 : 0.0);
                 t.high += texel.weight * (texel.lit || texel.uncertain ? 1.0 : 0.0);
@@ -262,7 +293,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         for (int tx : c.altXs)
             for (int ty : c.altYs) others.emplace_back(tx, ty);
         for (const auto& [tx, ty] : others) {
-            const ProbeTexel other = compare(tx, ty, 1.0);
+            const ProbeTexel other = compare(tx, ty, 1.0, receiver, eps);
             t.low = std::min(t.low, other.lit && !other.uncertain ? 1.0 : 0.0);
             t.high = std::max(t.high, other.lit || other.uncertain ? 1.0 : 0.0);
             ++r.uncertainComparisons;
@@ -281,14 +312,8 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     r.agrees = r.shadowGpu >= r.shadowLow - r.tolerance && r.shadowGpu <= r.shadowHigh + r.tolerance;
 
     // The bias this surface gets as a caster: its own triangle's slope in the map, r at its largest depth.
-    glm::dvec3 window[3];
-    for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 t = toLightTexture(light, v[k]);
-        window[k] = {t.x * res, t.y * res, std::clamp(t.z, 0.0, 1.0)};
-    }
     const double slope = windowDepthSlope(window[0], window[1], window[2]);
     const double maxDepth = std::max({window[0].z, window[1].z, window[2].z});
-    const ShadowMapSettings& shadow = settings_.lights[0].shadow;
     const double atDepth = std::clamp(r.receiverDepth, 0.0, 1.0);
     r.bias.depthSlope = std::max(slope, 0.0);
     r.bias.step = depthStepAt(r.format, maxDepth);

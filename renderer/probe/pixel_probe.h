@@ -71,6 +71,7 @@ struct PixelProbeReport {
     bool reversedZ = false;          // the map's depth convention: near 1, far 0 (depths below are as stored)
     double receiverDepth = 0.0;      // what each tap compares: z clamped to the far plane (fixed point: to [0, 1])
     double depthUncertainty = 0.0;   // float rounding of the GPU's receiver depth, in depth
+    glm::dvec2 receiverPlane{0.0};   // receiver-plane bias: d(depth)/d(texel) each tap adds (0 when not applied)
 
     int resolution = 0;
     DepthFormat format = DepthFormat::D32F;

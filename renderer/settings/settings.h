@@ -31,6 +31,9 @@ struct ShadowMapSettings {
     // Reversed-Z: the map stores near = 1, far = 0 (glClipControl zero-to-one, GEQUAL compare); the bias keys keep
     // their meaning (toward the light). D32F's float steps then fall where perspective depth needs them.
     bool reversedZ = false;
+    // Receiver-plane depth bias (Isidoro, GDC 2006): each PCF / Poisson tap compares the depth of the receiver's plane
+    // at that tap, not the centre's, so wide kernels need no slope bias of their own. Directional and spot lights.
+    bool receiverPlaneBias = false;
 
     bool operator==(const ShadowMapSettings&) const = default;
 };

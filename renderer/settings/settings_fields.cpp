@@ -329,6 +329,13 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                  "meaning. With d32f, precision where perspective depth needs it",
                                  at([](auto& l) -> auto& { return l.shadow.reversedZ; })),
                        kView | kVariant | kInvalidatesSampler));  // maps of each convention share an array and sampler
+    f.push_back(tagged(boolField(keyOf("shadow.receiverPlaneBias"),
+                                 "Receiver-plane depth bias (Isidoro, GDC 2006), PCF and Poisson only: each tap compares "
+                                 "the depth of the receiver's plane at the tap (from screen-space derivatives), so wide "
+                                 "kernels need little slope bias. Directional and spot lights; not applied to point "
+                                 "lights' cube faces (a plane does not carry across a face edge)",
+                                 at([](auto& l) -> auto& { return l.shadow.receiverPlaneBias; })),
+                       kVariant));  // RECEIVER_PLANE is compiled in only with a filter that takes several taps
 
     // its projection
     f.push_back(tagged(boolField(keyOf("projection.autoFit"),

@@ -52,7 +52,9 @@ LightBlock blockOf(const MainPassLight& l, const glm::dvec3& origin) {
         // Directional: a texel's world size; spot and point: per unit of depth (the shader multiplies).
         const double texelWorld =
             space.perspective ? 2.0 * space.tanHalfFov / space.resolution : space.texelWorldSize;
-        b.depth = glm::vec4(float(space.nearPlane), float(space.farPlane), float(texelWorld), space.reversedZ ? 1.0f : 0.0f);
+        // w: flags, 1 = reversed-Z, 2 = receiver-plane bias (read only by RECEIVER_PLANE variants).
+        const float flags = (space.reversedZ ? 1.0f : 0.0f) + (s.shadow.receiverPlaneBias ? 2.0f : 0.0f);
+        b.depth = glm::vec4(float(space.nearPlane), float(space.farPlane), float(texelWorld), flags);
     }
     return b;
 }
@@ -93,6 +95,9 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
             case LightType::Point: ++base.lights.point; base.lights.pointCasters += casts; break;
         }
         base.normalOffset = base.normalOffset || (casts && l.settings->shadow.normalOffset > 0.0f);
+        base.receiverPlane = base.receiverPlane || (casts && l.settings->shadow.receiverPlaneBias &&
+                                                    l.settings->type != LightType::Point &&
+                                                    filterTechnique(settings.filter.kind).receiverPlane);
         blocks.push_back(blockOf(l, in.renderOrigin));
     }
     base.lights.mapArrays2D = int(in.maps2D.size());

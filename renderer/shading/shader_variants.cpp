@@ -36,6 +36,8 @@ std::vector<std::string> MainVariantKey::defines() const {
     d.push_back("MAP_ARRAYS_2D " + std::to_string(lights.mapArrays2D));
     d.push_back("MAP_ARRAYS_CUBE " + std::to_string(lights.mapArraysCube));
     if (normalOffset) d.push_back("NORMAL_OFFSET");
+    if (receiverPlane) d.push_back("RECEIVER_PLANE");
+    if (receiverPlane && !filterTechnique(filter).bilinear) d.push_back("FILTER_NEAREST");
     if (alphaMask) d.push_back("ALPHA_MASK");
     if (alphaMask && alphaTexture) d.push_back("BASE_COLOR_TEXTURE");
     return d;

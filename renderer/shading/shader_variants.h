@@ -28,6 +28,8 @@ struct MainVariantKey {
     ViewMode view = ViewMode::Lit;
     LightSetKey lights;
     bool normalOffset = false;  // some casting light offsets its lookup
+    bool receiverPlane = false; // some casting directional / spot light uses receiver-plane bias with a filter that
+                                // supports it (RECEIVER_PLANE; each light's flag picks it at run time)
     bool alphaMask = false;
     bool alphaTexture = false;
 

@@ -56,8 +56,9 @@ TEST_F(BiasTunerTest, FromZeroBiasEndsWithinTheAcneLimitWithLessLeakThanPeterPan
         EXPECT_DOUBLE_EQ(again.acnePercent, result.report.acnePercent);
         const AccuracyReport panning = meter.measure(scene, loadShippedPreset("peter-panning"), camera, 480, 270);
         EXPECT_LT(again.leakPercent, panning.leakPercent);
-        // Only the three searched values change.
+        // Only the searched values change: the three bias amounts and (PCF) receiver-plane bias.
         Settings other = result.best;
+        other.lights[0].shadow.receiverPlaneBias = start.lights[0].shadow.receiverPlaneBias;
         other.lights[0].shadow.depthBias = start.lights[0].shadow.depthBias;
         other.lights[0].shadow.slopeScaledDepthBias = start.lights[0].shadow.slopeScaledDepthBias;
         other.lights[0].shadow.normalOffset = start.lights[0].shadow.normalOffset;

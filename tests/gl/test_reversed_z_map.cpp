@@ -71,6 +71,11 @@ TEST_F(ReversedZMap, ASpotAndAPointLightShadowTheSamePixels) {
         }
         EXPECT_GT(dark, 500) << "the cube must cast a shadow for the check to mean anything";
         EXPECT_LT(differ, long(va.rgba.size() / 4 / 500)) << differ << " pixels differ";
+        // The bias report finds the same receivers: the slope-scaled term is the same world distance.
+        EXPECT_NEAR(vb.stats.bias.slope.world, va.stats.bias.slope.world, 0.01 * va.stats.bias.slope.world);
+        // And the precision gain: the float clip depth's step at the receivers, in world units, is far finer.
+        if (std::string(type) == "spot")
+            EXPECT_LT(vb.stats.bias.clipPrecision.world * 16.0, va.stats.bias.clipPrecision.world);
     }
 }
 

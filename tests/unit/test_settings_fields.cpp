@@ -52,7 +52,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 34u);  // every tunable of Settings: 12 global, 22 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 35u);  // every tunable of Settings: 12 global, 23 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -279,7 +279,8 @@ TEST(SettingsOverride, UnknownKeysSuggestCloseOnesOrListAll) {
     e = applySettingOverride(s, "depthBias=3");  // group forgotten
     EXPECT_TRUE(contains(e, "shadow.depthBias")) << e;
     e = applySettingOverride(s, "shadow.bias=3");  // part of a name
-    EXPECT_TRUE(contains(e, "did you mean shadow.depthBias, shadow.slopeScaledDepthBias, shadow.depthBiasClamp?"))
+    EXPECT_TRUE(contains(e, "did you mean shadow.depthBias, shadow.slopeScaledDepthBias, shadow.depthBiasClamp, "
+                            "shadow.receiverPlaneBias?"))
         << e;
     e = applySettingOverride(s, "filter.Kind=pcf");  // wrong case
     EXPECT_TRUE(contains(e, "filter.kind")) << e;

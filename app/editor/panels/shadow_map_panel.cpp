@@ -1,5 +1,6 @@
-// Shadow map: resolution (quick picks + custom, capped at GL_MAX_TEXTURE_SIZE), depth format, reversed-Z, the three D3D bias
-// values, normal offset and cull mode; beside the bias, what it amounts to in depth steps, texels and world units.
+// Shadow map: resolution (quick picks + custom, capped at GL_MAX_TEXTURE_SIZE), depth format, reversed-Z, the three
+// D3D bias values, normal offset, receiver-plane bias and cull mode; beside the bias, what it amounts to in depth
+// steps, texels and world units.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 #include "shadow/shadow_map.h"
@@ -99,15 +100,16 @@ void drawShadowMapPanel(PanelContext& ctx) {
     resolutionControls(state);
     ImGui::PushItemWidth(-175.0f);
     comboField(state, key("shadow.depthFormat").c_str(), "depth format");
-    checkboxField(state, key("shadow.reversedZ").c_str(), "Reversed-Z");
     ImGui::Separator();
     dragFloatField(state, key("shadow.depthBias").c_str(), "DepthBias (units)", 1.0f, "%.4g");  // d16 after a format change: 0.0078
     sliderFloatField(state, key("shadow.slopeScaledDepthBias").c_str(), "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");
     dragFloatField(state, key("shadow.depthBiasClamp").c_str(), "DepthBiasClamp", 0.0001f, "%.5f");
     sliderFloatField(state, key("shadow.normalOffset").c_str(), "normal offset (texels)", 0.0f, 4.0f, "%.2f");
+    checkboxField(state, key("shadow.receiverPlaneBias").c_str(), "receiver-plane bias (PCF, Poisson)");
     biasAmounts(state);
     ImGui::Separator();
     comboField(state, key("shadow.cullMode").c_str(), "cull (shadow pass)");
+    checkboxField(state, key("shadow.reversedZ").c_str(), "Reversed-Z (near 1, far 0)");
     ImGui::PopItemWidth();
 }
 

@@ -24,6 +24,9 @@ struct FilterTechnique {
     // Optional: when the taps are the square grid -R..R (row by row), R; the shader then loops instead of reading a
     // constant array (much faster for large kernels on some drivers).
     int (*gridRadius)(const FilterSettings& filter) = nullptr;
+    // Whether shadow.receiverPlaneBias applies: taps away from the lookup (PCF, Poisson) compare the receiver plane's
+    // depth there. A single centred tap has nothing to tilt.
+    bool receiverPlane = false;
 };
 
 const FilterTechnique& filterTechnique(FilterKind kind);

@@ -12,7 +12,8 @@ const FilterTechnique& poissonFilter() {
         [](const FilterSettings&) { return std::vector<glm::vec2>(poissonDisk().begin(), poissonDisk().end()); },
         [](const FilterSettings& filter) { return filter.poissonRadius; },
         // One more texel: each tap's bilinear comparison reads the next texel too.
-        [](const FilterSettings& filter) { return double(filter.poissonRadius) + 1.0; }};
+        [](const FilterSettings& filter) { return double(filter.poissonRadius) + 1.0; },
+        /*gridRadius=*/nullptr, /*receiverPlane=*/true};
     return technique;
 }
 
