@@ -6,6 +6,10 @@ const std::vector<HardCase>& hardCaseList() {
     static const std::vector<HardCase> list = {
         {1, "light direction parallel to the lookAt up vector (pole sweep)", runPoleSweep},
         {2, "grazing light and the slope-scaled bias blowing up (clamp)", runGrazingClamp},
+        {3, "large world coordinates", runLargeWorld},
+        {7, "shimmering under sub-texel camera or light motion", runShimmer},
+        {12, "casters behind the light's near plane (pancaking)", runPancaking},
+        {13, "mirrored instances and winding", runMirroredInstances},
     };
     return list;
 }

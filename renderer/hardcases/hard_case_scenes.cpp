@@ -25,10 +25,11 @@ void addFloor(Scene& scene, float size, float y) {
     scene.computeBounds();
 }
 
-void addBox(Scene& scene, const glm::vec3& center, const glm::vec3& size) {
+void addBox(Scene& scene, const glm::vec3& center, const glm::vec3& size, bool mirrorX) {
     // The cube is 2 x 2 x 2 around (0, 1, 0): move its centre to the origin, scale, then place.
     const glm::mat4 toOrigin = glm::translate(glm::mat4(1.0f), -builtin::kCubeCenter);
-    const glm::mat4 scale = glm::scale(glm::mat4(1.0f), size / builtin::kCubeSize);
+    const glm::vec3 flip(mirrorX ? -1.0f : 1.0f, 1.0f, 1.0f);
+    const glm::mat4 scale = glm::scale(glm::mat4(1.0f), flip * size / builtin::kCubeSize);
     scene.instances.push_back({1, glm::translate(glm::mat4(1.0f), center) * scale * toOrigin});
     scene.computeBounds();
 }

@@ -11,7 +11,8 @@ namespace shadowlab::hardcases {
 Scene meshKit(const char* name);
 // Instances of the kit: the floor scaled to `size` x `size` at height y; a box of `size` with its centre at `center`.
 void addFloor(Scene& scene, float size, float y = 0.0f);
-void addBox(Scene& scene, const glm::vec3& center, const glm::vec3& size);
+// mirrorX: scaled by -1 along x (a negative determinant: its triangles wind the other way in world space).
+void addBox(Scene& scene, const glm::vec3& center, const glm::vec3& size, bool mirrorX = false);
 
 // About 170 units across: a 170 x 170 floor and a grid of 8 x 8 buildings of 4..24 units height (case 3, 17).
 Scene cityScene();
