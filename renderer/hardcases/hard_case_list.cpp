@@ -7,9 +7,13 @@ const std::vector<HardCase>& hardCaseList() {
         {1, "light direction parallel to the lookAt up vector (pole sweep)", runPoleSweep},
         {2, "grazing light and the slope-scaled bias blowing up (clamp)", runGrazingClamp},
         {3, "large world coordinates", runLargeWorld},
+        {4, "small near / large far, D16 / D24 / D32F (precision per format)", runPrecisionPerFormat},
         {7, "shimmering under sub-texel camera or light motion", runShimmer},
         {12, "casters behind the light's near plane (pancaking)", runPancaking},
         {13, "mirrored instances and winding", runMirroredInstances},
+        {14, "degenerate light parameters", runDegenerateLight},
+        {15, "degenerate and non-power-of-two resolutions", runDegenerateResolution},
+        {16, "degenerate geometry", runDegenerateGeometry},
     };
     return list;
 }
