@@ -20,7 +20,6 @@ int runHardCases(const HardCasesOptions& options) {
         fail(error);
         return 2;
     }
-    if (std::string e = checkOutputFolder(options.json, "--json"); !e.empty()) return fail(e);
     if (!options.outDir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(options.outDir, ec);
@@ -28,6 +27,8 @@ int runHardCases(const HardCasesOptions& options) {
             return fail("--out-dir " + options.outDir + ": cannot create the folder" +
                         (ec ? " (" + ec.message() + ")" : ""));
     }
+    // After --out-dir, which may be the JSON's folder.
+    if (std::string e = checkOutputFolder(options.json, "--json"); !e.empty()) return fail(e);
     hardcases::HardCaseOptions caseOptions;
     caseOptions.quick = options.quick;
     caseOptions.outDir = options.outDir;
