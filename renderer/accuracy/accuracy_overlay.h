@@ -21,6 +21,12 @@ const std::vector<LegendEntry>& causeLegend();  // every cause, then the true bo
 
 enum class OverlayKind { Error, Cause };
 
+// The picture every overlay colours over, RGBA8, row 0 = top: background dark, every surface grey by the tool's
+// S x Lambert with the ambient term.
+std::vector<std::uint8_t> dimmedPicture(int width, int height, const std::vector<PixelClass>& classes,
+                                        const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
+                                        float ambient);
+
 // RGBA8, row 0 = top (the buffers' order).
 std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, const std::vector<PixelClass>& classes,
                                       const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
