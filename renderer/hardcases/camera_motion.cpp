@@ -10,7 +10,7 @@ CameraMotion moveCamera(CaseContext& context, const Scene& scene, const Settings
     Renderer renderer;  // its own: the first frame renders the map, every later one may not
     CameraMotion motion;
     Settings s = settings;
-    RenderedView first, previous;
+    RenderedView first;
     for (int f = 0; f <= frames; ++f) {
         const double k = double(f);
         s.camera.position = settings.camera.position + k * step;
@@ -23,14 +23,12 @@ CameraMotion moveCamera(CaseContext& context, const Scene& scene, const Settings
                                            &renderer);
         if (!view.stats.ok) throw std::runtime_error("frame " + std::to_string(f) + ": " + view.stats.error);
         if (f == 0) {
-            first = view;
+            first = std::move(view);
         } else {
             ++motion.frames;
             for (const ShadowViewStats& v : view.stats.views) motion.viewsRerendered += v.ran;
             motion.lightSpaceChanged += view.stats.light.viewProjection() != first.stats.light.viewProjection();
-            motion.pictureChanged += view.rgba != previous.rgba;
         }
-        previous = std::move(view);
     }
     return motion;
 }

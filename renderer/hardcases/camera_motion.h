@@ -1,6 +1,7 @@
 #pragma once
-// Cases 3 and 7: the camera moved frame by frame while the light stands still. The light's volume is fitted to the
-// scene, not to the view, so the shadow map must not change: no view re-rendered, the light's matrix bit-equal.
+// Case 7: the camera turned frame by frame while the light stands still (the flicker measure, accuracy/motion.h,
+// plays translations only). The light's volume is fitted to the scene, not to the view, so the shadow map must not
+// change: no view re-rendered, the light's matrix bit-equal.
 #include "hardcases/hard_case.h"
 
 #include <glm/ext/vector_double3.hpp>
@@ -11,7 +12,6 @@ struct CameraMotion {
     int frames = 0;             // frames after the first
     int viewsRerendered = 0;    // shadow views rendered after the first frame (must be 0)
     int lightSpaceChanged = 0;  // frames whose first light space differs from the first frame's (must be 0)
-    int pictureChanged = 0;     // frames whose picture differs from the previous one (the camera did move)
 };
 
 // Renders `frames` + 1 frames from settings.camera (which must not auto-frame), moving the camera's position and

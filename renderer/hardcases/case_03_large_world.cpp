@@ -1,9 +1,8 @@
 // HARD_CASES 3: a city-sized scene (170 units) moved by T in {0, 1e3, 1e4, 1e5, 1e6} on x and z; the float32 step is
 // 0.0625 at 1e6. In screen space the mask must not depend on T: edge error(T) <= edge error(0) + 0.5 texel. Then the
-// camera moves 1 mm per frame at 1e6 with the light still: the map must not change (flicker 0).
+// camera moves 1 mm per frame at 1e6 with the light still: no view re-rendered, flicker 0.
 #include "hardcases/cases.h"
 
-#include "hardcases/camera_motion.h"
 #include "hardcases/hard_case_scenes.h"
 
 namespace shadowlab::hardcases {
@@ -24,8 +23,8 @@ void runLargeWorld(CaseContext& context, CaseResult& result) {
         if (!r.ok) throw std::runtime_error("T = " + figure(t) + ": " + r.error);
         if (t == 0.0) {
             edge0 = r.edgeErrorP95Texels;
-            result.check("T = 0: edge error p95 (wrong pixels " + percent(r.wrongPercent) + ")",
-                         figure(r.edgeErrorP95Texels, "texels"), "the reference for T > 0", true);
+            result.info("T = 0: edge error p95 (wrong pixels " + percent(r.wrongPercent) + ")",
+                        figure(r.edgeErrorP95Texels, "texels"), "the reference for T > 0");
         } else {
             result.check("T = " + figure(t, "", 1) + ": edge error p95 (wrong pixels " + percent(r.wrongPercent) + ")",
                          figure(r.edgeErrorP95Texels, "texels"), "<= " + figure(edge0 + 0.5, "texels"),
@@ -33,20 +32,19 @@ void runLargeWorld(CaseContext& context, CaseResult& result) {
         }
         farthest = moved;
     }
-    // The camera 1 mm per frame along x at T = 1e6, looking at the city from its auto-framed place.
-    const Camera framed = cameraFor(s.camera, farthest, double(width) / double(height));
-    s.camera.autoFrame = false;
-    s.camera.position = framed.position;
-    s.camera.target = framed.target;
-    s.view = ViewMode::Shadow;  // the frames written show the shadow factor
-    const int frames = context.pick(10, 3);
-    const CameraMotion motion =
-        moveCamera(context, farthest, s, width, height, frames, {1e-3, 0.0, 0.0}, 0.0, "T1e6-camera");
-    result.check("T = 1e6, camera +1 mm x " + std::to_string(frames) + ": shadow views re-rendered",
-                 std::to_string(motion.viewsRerendered), "0 (the light is still)", motion.viewsRerendered == 0);
-    result.check("T = 1e6, camera +1 mm: light matrix changed", std::to_string(motion.lightSpaceChanged) + " frames",
-                 "0", motion.lightSpaceChanged == 0);
-    result.notRun("T = 1e6, camera +1 mm: flicker", "0", "needs the flicker measure, renderer/accuracy/flicker.h (issue 14)");
+    // The camera 1 mm per frame along its right vector at T = 1e6, the light still.
+    Motion motion;
+    motion.kind = MotionKind::Camera;
+    motion.step = 1e-3;
+    motion.frames = context.pick(10, 3);
+    const FlickerReport f = context.flicker(farthest, s, width, height, motion, "T1e6-camera");
+    if (!f.ok) throw std::runtime_error(f.error);
+    std::size_t rerendered = 0;
+    for (const FlickerPair& pair : f.pairs) rerendered += pair.shadowViewsRendered;
+    result.check("T = 1e6, camera +1 mm x " + std::to_string(f.pairs.size()) + ": shadow views re-rendered",
+                 std::to_string(rerendered), "0 (the light is still)", rerendered == 0);
+    result.check("T = 1e6, camera +1 mm: flicker, worst pair", percent(f.maxFlickerPercent), "0",
+                 f.maxFlickerPercent == 0.0);
 }
 
 }  // namespace shadowlab::hardcases

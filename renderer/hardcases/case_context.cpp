@@ -100,6 +100,23 @@ AccuracyReport CaseContext::measure(const Scene& scene, Settings settings, int w
     return report;
 }
 
+FlickerReport CaseContext::flicker(const Scene& scene, Settings settings, int width, int height, const Motion& motion,
+                                   const std::string& picture) {
+    FlickerReport report;
+    if (std::string error = applyConvention(settings); !error.empty()) {
+        report.error = error;
+        return report;
+    }
+    const Camera camera = cameraFor(settings.camera, scene, double(width) / double(height));
+    report = measureFlicker(meter_, scene, settings, camera, width, height, motion);
+    if (report.ok && !picture.empty()) {
+        writePicture(picture + "-a", report.width, report.height, report.worstPreviousRgba);
+        writePicture(picture + "-b", report.width, report.height, report.worstCurrentRgba);
+        writePicture(picture + "-overlay", report.width, report.height, report.overlayRgba);
+    }
+    return report;
+}
+
 RenderedView CaseContext::render(const Scene& scene, Settings settings, int width, int height,
                                  const std::string& picture, Renderer* renderer) {
     RenderedView view;

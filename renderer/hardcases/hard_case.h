@@ -3,6 +3,7 @@
 // measured, each figure beside the document's threshold, and the pictures that show it. The cases live one per file
 // (case_NN_*.cpp); hard_case_runner.h selects, runs and reports them. Knows no window, UI or CLI.
 #include "accuracy/accuracy_meter.h"
+#include "accuracy/flicker.h"
 #include "frame/frame_stats.h"
 #include "frame/renderer.h"
 #include "reference/surface_samples.h"
@@ -88,6 +89,10 @@ public:
     // `picture`.png into the output folder when a name is given. Records the mask for case 5.
     AccuracyReport measure(const Scene& scene, Settings settings, int width, int height,
                            const std::string& picture = "");
+    // The flicker measure (accuracy/flicker.h) of `motion` from the settings' camera; writes the worst pair's two
+    // frames as `picture`-a / -b and the flicker overlay as `picture`-overlay when a name is given.
+    FlickerReport flicker(const Scene& scene, Settings settings, int width, int height, const Motion& motion,
+                          const std::string& picture = "");
     // One frame of `renderer` (the context's own when null) into a fresh target.
     RenderedView render(const Scene& scene, Settings settings, int width, int height, const std::string& picture = "",
                         Renderer* renderer = nullptr);
