@@ -11,6 +11,8 @@ const std::vector<HardCase>& hardCaseList() {
         {6, "border texels, address modes and PCF crossing the border", runBorderTexels},
         {7, "shimmering under sub-texel camera or light motion", runShimmer},
         {8, "spot light perspective aliasing", runSpotAliasing},
+        {9, "point light cube seams", runCubeSeams},
+        {10, "Peter Panning of thin casters", runThinCasters},
         {12, "casters behind the light's near plane (pancaking)", runPancaking},
         {13, "mirrored instances and winding", runMirroredInstances},
         {14, "degenerate light parameters", runDegenerateLight},
