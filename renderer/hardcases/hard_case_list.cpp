@@ -13,11 +13,13 @@ const std::vector<HardCase>& hardCaseList() {
         {8, "spot light perspective aliasing", runSpotAliasing},
         {9, "point light cube seams", runCubeSeams},
         {10, "Peter Panning of thin casters", runThinCasters},
+        {11, "alpha-tested casters (cutoff 0.25 / 0.5 / 0.75)", runAlphaCutoffs},
         {12, "casters behind the light's near plane (pancaking)", runPancaking},
         {13, "mirrored instances and winding", runMirroredInstances},
         {14, "degenerate light parameters", runDegenerateLight},
         {15, "degenerate and non-power-of-two resolutions", runDegenerateResolution},
         {16, "degenerate geometry", runDegenerateGeometry},
+        {17, "scale extremes and texel-relative biases", runScaleExtremes},
     };
     return list;
 }
