@@ -91,11 +91,11 @@ AccuracyReport CaseContext::measure(const Scene& scene, Settings settings, int w
     AccuracyReport report = meter_.measure(scene, settings, camera, width, height);
     if (report.ok && !picture.empty()) writePicture(picture, report.width, report.height, report.overlayRgba);
     if (report.ok && recordMasks && result) {
-        if (lastCase_ != result->number) measureIndex_ = 0, lastCase_ = result->number;
         std::vector<std::uint8_t> mask(report.pixelShadow.size(), 2);
         for (std::size_t i = 0; i < mask.size(); ++i)
             if (report.pixelMeasured[i]) mask[i] = report.pixelShadow[i] >= 0.5f ? 1 : 0;
-        masks[std::to_string(result->number) + "/" + std::to_string(measureIndex_++)] = std::move(mask);
+        masks[reversedZ ? "reversed-Z" : "as set"][std::to_string(result->number) + "/" +
+                                                     std::to_string(measureIndex_++)] = std::move(mask);
     }
     return report;
 }
@@ -179,7 +179,7 @@ std::optional<Scene> CaseContext::assimpScene(const std::string& relative, std::
 }
 
 void CaseContext::writePicture(const std::string& name, int width, int height, const std::vector<std::uint8_t>& rgba) {
-    if (options_.outDir.empty() || rgba.empty()) return;
+    if (options_.outDir.empty() || rgba.empty() || !picturesOn) return;
     char prefix[16];
     std::snprintf(prefix, sizeof prefix, "case%02d-", result ? result->number : 0);
     const std::string file = prefix + name + ".png";

@@ -107,19 +107,24 @@ public:
     // Writes an RGBA picture (row 0 = top) as `name`.png into the output folder (nothing without one) and lists it.
     void writePicture(const std::string& name, int width, int height, const std::vector<std::uint8_t>& rgba);
 
-    // The case being run (set by the runner).
+    // The case being run: set by the runner (and case 5's re-runs) through startCase.
     CaseResult* result = nullptr;
-    // Case 5: the masks (S >= 0.5 per measured pixel, 2 = not measured) of every measurement, by picture-less
-    // label "case/index", recorded while recordMasks is set.
+    void startCase(CaseResult* running) {
+        result = running;
+        measureIndex_ = 0;
+    }
+    // Case 5: the masks (S >= 0.5 per measured pixel, 2 = not measured) of every measurement, by label
+    // "case/index" under the convention it ran in ("as set" or "reversed-Z"), recorded while recordMasks is set.
     bool recordMasks = false;
-    std::map<std::string, std::vector<std::uint8_t>> masks;
+    std::map<std::string, std::map<std::string, std::vector<std::uint8_t>>> masks;
+    // Off: measure / render write no pictures (case 5's re-runs).
+    bool picturesOn = true;
 
 private:
     const HardCaseOptions& options_;
     AccuracyMeter& meter_;
     Renderer& renderer_;
     int measureIndex_ = 0;
-    int lastCase_ = -1;
 };
 
 struct HardCase {

@@ -8,6 +8,7 @@ const std::vector<HardCase>& hardCaseList() {
         {2, "grazing light and the slope-scaled bias blowing up (clamp)", runGrazingClamp},
         {3, "large world coordinates", runLargeWorld},
         {4, "small near / large far, D16 / D24 / D32F (precision per format)", runPrecisionPerFormat},
+        {5, "reversed-Z (every other case in both conventions)", runReversedZ},
         {6, "border texels, address modes and PCF crossing the border", runBorderTexels},
         {7, "shimmering under sub-texel camera or light motion", runShimmer},
         {8, "spot light perspective aliasing", runSpotAliasing},

@@ -28,14 +28,14 @@ std::vector<const HardCase*> selectCases(const std::vector<HardCase>& cases, con
 }
 
 namespace {
-
 constexpr int kReversedZCase = 5;
+}  // namespace
 
-CaseResult runOne(const HardCase& c, CaseContext& context) {
+CaseResult runCase(const HardCase& c, CaseContext& context) {
     CaseResult result;
     result.number = c.number;
     result.title = c.title;
-    context.result = &result;
+    context.startCase(&result);
     const auto start = std::chrono::steady_clock::now();
     try {
         c.run(context, result);
@@ -43,9 +43,11 @@ CaseResult runOne(const HardCase& c, CaseContext& context) {
         result.error = e.what();
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    context.result = nullptr;
+    context.startCase(nullptr);
     return result;
 }
+
+namespace {
 
 std::string cell(const std::string& text, std::size_t width) {
     return text.size() >= width ? text : text + std::string(width - text.size(), ' ');
@@ -64,11 +66,11 @@ std::vector<CaseResult> runCases(const std::vector<const HardCase*>& cases, Case
     context.recordMasks = reversed != nullptr;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (cases[i] == reversed) continue;
-        results[i] = runOne(*cases[i], context);
+        results[i] = runCase(*cases[i], context);
         if (progress) printCase(*progress, results[i]);
     }
     if (reversed) {
-        results[reversedAt] = runOne(*reversed, context);
+        results[reversedAt] = runCase(*reversed, context);
         if (progress) printCase(*progress, results[reversedAt]);
     }
     context.recordMasks = false;

@@ -17,6 +17,9 @@ namespace shadowlab::hardcases {
 std::vector<const HardCase*> selectCases(const std::vector<HardCase>& cases, const std::vector<int>& requested,
                                          std::string& error);
 
+// Runs one case, timed; a case that throws gets the exception's text as its error.
+CaseResult runCase(const HardCase& c, CaseContext& context);
+
 // Runs the selected cases in order (a case that throws gets its error), printing each case's table as it
 // finishes when `progress` is given. Case 5 (both conventions) runs after the others: it compares their masks.
 std::vector<CaseResult> runCases(const std::vector<const HardCase*>& cases, CaseContext& context,
