@@ -8,6 +8,7 @@
 
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowlab::hardcases {
@@ -50,7 +51,15 @@ void runPoleSweep(CaseContext& context, CaseResult& result) {
         if (r.frames[f].numbers.leakPercent >= worstLeak) worstLeak = r.frames[f].numbers.leakPercent, leakAt = t;
     }
     int above = 0;  // pairs whose flicker exceeds their V-changed share
-    for (const FlickerPair& pair : r.pairs) above += pair.counts.flickerPercent > pair.counts.vChangedPercent;
+    int firstAbove = -1, lastAbove = -1;
+    std::size_t mostPixels = 0;
+    for (const FlickerPair& pair : r.pairs)
+        if (pair.counts.flickerPercent > pair.counts.vChangedPercent) {
+            ++above;
+            if (firstAbove < 0) firstAbove = pair.from;
+            lastAbove = pair.from;
+            mostPixels = std::max(mostPixels, pair.counts.flicker);
+        }
     const std::string n = std::to_string(motion.frames);
     result.check("light matrices finite, of " + n + " t", std::to_string(finite) + " of " + n, "all",
                  finite == motion.frames);
@@ -58,11 +67,14 @@ void runPoleSweep(CaseContext& context, CaseResult& result) {
     result.check("leak, worst t (" + figure(leakAt) + ")", percent(worstLeak), "< 0.1 %", worstLeak < 0.1);
     result.check("flicker between adjacent t (step " + figure(r.stepTexels, "texels") + "), mean over " +
                      std::to_string(r.pairs.size()) + " pairs",
-                 percent(r.meanFlickerPercent) + " vs V changed " + percent(r.meanVChangedPercent),
+                 figure(r.meanFlickerPercent, "%") + " vs V changed " + figure(r.meanVChangedPercent, "%"),
                  "flicker <= V changed", r.meanFlickerPercent <= r.meanVChangedPercent);
+    const auto tOf = [&](int frame) { return figure((frame - half) * step); };
     result.info("pairs whose flicker exceeds their own V-changed share",
-                std::to_string(above) + " (worst " + percent(r.maxFlickerPercent) + ")",
-                "a sub-texel step moves the map's edge by a whole texel in some steps, none in others");
+                std::to_string(above) + (above ? " (t from " + tOf(firstAbove) + " to " + tOf(lastAbove) + ", at most " +
+                                                     std::to_string(mostPixels) + " pixels a pair)"
+                                               : ""),
+                "the pole is t = 0; a filtered edge's S slides through 0.5 while V stays");
 }
 
 }  // namespace shadowlab::hardcases

@@ -57,7 +57,7 @@ void runShimmer(CaseContext& context, CaseResult& result) {
     for (const FlickerPair& pair : turning.pairs) above += pair.counts.flickerPercent > pair.counts.vChangedPercent;
     const std::string what = "light turned 0.05 deg (" + figure(turning.stepTexels, "texels") + ")";
     result.info(what + ": flicker vs V changed, mean over " + std::to_string(turning.pairs.size()) + " pairs",
-                percent(turning.meanFlickerPercent) + " vs " + percent(turning.meanVChangedPercent) + ", " +
+                figure(turning.meanFlickerPercent, "%") + " vs " + figure(turning.meanVChangedPercent, "%") + ", " +
                     std::to_string(above) + " pairs above their own",
                 "the map's texel grid turns with the light (nothing to snap): the document expects > 0 here");
 }
