@@ -92,9 +92,15 @@ float shadow2D(LightData L, vec3 lookup) {
 #else
     int map = int(L.shadow.x);
 #endif
+    // A lookup inside the map keeps its taps inside it (half a texel from the edge: a bilinear tap's footprint too),
+    // so a kernel near the edge reads the map's own border texels, not the address mode's "outside" (HARD_CASES 6).
+    // The pixel probe mirrors this (probe/pixel_probe.cpp).
+    bool inside = all(greaterThanEqual(lightTex.xy, vec2(0.0))) && all(lessThanEqual(lightTex.xy, vec2(1.0)));
+    vec2 lo = inside ? vec2(0.5 * L.shadow.z) : vec2(-1e30), hi = inside ? vec2(1.0 - 0.5 * L.shadow.z) : vec2(1e30);
     float sum = 0.0;
     FOR_EACH_TAP
-        sum += texture(uMaps2D[map], vec4(lightTex.xy + TAP_OFFSET * uFilterScale * L.shadow.z, L.shadow.y, ref));
+        sum += texture(uMaps2D[map],
+                       vec4(clamp(lightTex.xy + TAP_OFFSET * uFilterScale * L.shadow.z, lo, hi), L.shadow.y, ref));
     return sum / float(FILTER_TAPS);
 }
 #endif

@@ -201,6 +201,8 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         t.offsetTexels = tap.offsetTexels;
         t.bilinear = tap.bilinear;
         t.texelCoord = (glm::dvec2(r.lightTexture) + tap.offsetTexels * texelStep) * double(res);
+        // A lookup inside the map keeps its taps half a texel inside its edge (main.frag.glsl's shadow2D).
+        if (r.insideMap) t.texelCoord = glm::clamp(t.texelCoord, glm::dvec2(0.5), glm::dvec2(double(res) - 0.5));
         Candidate c;
         for (int axis = 0; axis < 2; ++axis) {
             auto& list = axis == 0 ? c.xs : c.ys;
