@@ -94,7 +94,7 @@ AccuracyReport CaseContext::measure(const Scene& scene, Settings settings, int w
         std::vector<std::uint8_t> mask(report.pixelShadow.size(), 2);
         for (std::size_t i = 0; i < mask.size(); ++i)
             if (report.pixelMeasured[i]) mask[i] = report.pixelShadow[i] >= 0.5f ? 1 : 0;
-        masks[reversedZ ? "reversed-Z" : "as set"][std::to_string(result->number) + "/" +
+        masks[conventionName()][std::to_string(result->number) + "/" +
                                                      std::to_string(measureIndex_++)] = std::move(mask);
     }
     return report;

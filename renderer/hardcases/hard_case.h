@@ -117,6 +117,9 @@ public:
     // "case/index" under the convention it ran in ("as set" or "reversed-Z"), recorded while recordMasks is set.
     bool recordMasks = false;
     std::map<std::string, std::map<std::string, std::vector<std::uint8_t>>> masks;
+    // Case 5: each case's row verdicts, under the convention it ran in (recorded by runCase with the masks).
+    std::map<std::string, std::map<int, std::vector<Verdict>>> verdicts;
+    std::string conventionName() const { return reversedZ ? "reversed-Z" : "as set"; }
     // Off: measure / render write no pictures (case 5's re-runs).
     bool picturesOn = true;
 

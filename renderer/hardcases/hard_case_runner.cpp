@@ -43,6 +43,11 @@ CaseResult runCase(const HardCase& c, CaseContext& context) {
         result.error = e.what();
     }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (context.recordMasks) {
+        std::vector<Verdict>& verdicts = context.verdicts[context.conventionName()][c.number];
+        verdicts.clear();
+        for (const CaseRow& row : result.rows) verdicts.push_back(row.verdict);
+    }
     context.startCase(nullptr);
     return result;
 }
