@@ -91,12 +91,13 @@ int main(int argc, char** argv) {
                            "then time N live re-measures after a bias change (GPU count) against the CPU path")
         ->check(CLI::Range(1, 10000));
     measureCmd->add_option("--motion", measure.motion,
-                           "measure flicker instead: move the camera (translate) or the light (rotate) every frame");
+                           "measure flicker instead: camera (translate), camera-turn or light (rotate) every frame");
     measureCmd->add_option("--frames", measure.frames, "with --motion: frames rendered (pairs = frames - 1; default 10)");
     measureCmd->add_option("--step", measure.step,
-                           "with --motion: per frame, world units (camera, along its right vector) or degrees (light)");
+                           "with --motion: per frame, world units (camera, along its right vector) or degrees "
+                           "(camera-turn, light)");
     measureCmd->add_option("--direction", measure.direction,
-                           "with --motion: x,y,z = the camera's direction of travel or the light's rotation axis");
+                           "with --motion: x,y,z = the camera's direction of travel or the rotation axis");
     measureCmd->add_option("--frames-out", measure.framesOut,
                            "with --motion: write the worst pair's two frames as PNG into this folder");
 

@@ -8,8 +8,6 @@ namespace shadowlab::cli {
 
 namespace {
 
-const char* stepUnit(MotionKind kind) { return kind == MotionKind::Camera ? "world units" : "degrees"; }
-
 nlohmann::json countsToJson(const FlickerCounts& c) {
     return {{"measured", c.measured},
             {"flicker", c.flicker},
@@ -28,7 +26,7 @@ void printFlicker(std::ostream& out, const FlickerReport& r) {
     out << std::setprecision(4);
     out << "flicker, metrics version " << kMetricsVersion << " (" << r.width << "x" << r.height << ", "
         << lightLabel(r.lightIndex, r.lightType) << "): " << motionName(m.kind) << " moved " << m.step << " "
-        << stepUnit(m.kind) << " per frame = " << r.stepTexels << " texels of the light's map ("
+        << motionInfo(m.kind).unit << " per frame = " << r.stepTexels << " texels of the light's map ("
         << (r.stepTexels < 1.0 ? "sub-texel" : "a texel or more") << "; texel = " << r.texelWorldSize
         << " world units), " << m.frames << " frames, " << r.pairs.size() << " pairs\n";
     out << std::fixed << std::setprecision(3);
@@ -44,7 +42,7 @@ void printFlicker(std::ostream& out, const FlickerReport& r) {
     std::size_t rerendered = 0;
     for (const FlickerPair& p : r.pairs) rerendered += p.shadowViewsRendered;
     out << "  shadow views re-rendered after the first frame: " << rerendered
-        << (m.kind == MotionKind::Camera ? " (a camera motion must not re-render a scene-fitted map)\n" : "\n");
+        << (movesCamera(m.kind) ? " (a camera motion must not re-render a scene-fitted map)\n" : "\n");
     out << std::setprecision(3);
     out << "  pair     flicker %   V changed %   |dS|>1/8 %   mean |dS|   measured   views\n";
     for (const FlickerPair& p : r.pairs) {
@@ -77,7 +75,7 @@ nlohmann::json flickerToJson(const FlickerReport& r) {
             {"height", r.height},
             {"motion", motionName(r.motion.kind)},
             {"step", r.motion.step},
-            {"stepUnit", stepUnit(r.motion.kind)},
+            {"stepUnit", motionInfo(r.motion.kind).unit},
             {"stepTexels", r.stepTexels},
             {"texelWorldSize", r.texelWorldSize},
             {"frames", r.motion.frames},

@@ -73,12 +73,13 @@ bool wantsMotion(const MeasureOptions& o) {
 
 int runMeasureMotion(const MeasureOptions& options) {
     if (options.motion.empty())
-        return fail("--frames, --step, --direction and --frames-out measure flicker: they need --motion camera|light");
+        return fail("--frames, --step, --direction and --frames-out measure flicker: they need --motion " +
+                    motionNames());
     const std::optional<MotionKind> kind = parseMotion(options.motion);
-    if (!kind) return fail("--motion '" + options.motion + "': unknown motion (camera or light)");
+    if (!kind) return fail("--motion '" + options.motion + "': unknown motion (" + motionNames() + ")");
     if (options.step.empty())
-        return fail(std::string("--motion ") + motionName(*kind) + " needs --step S (" +
-                    (*kind == MotionKind::Camera ? "world units" : "degrees") + " per frame)");
+        return fail(std::string("--motion ") + motionName(*kind) + " needs --step S (" + motionInfo(*kind).unit +
+                    " per frame)");
     if (!options.causeOverlay.empty()) return fail("--cause-overlay: not with --motion (flicker has its own --overlay)");
     if (options.remeasureBench > 0) return fail("--remeasure-bench: not with --motion");
     Motion motion;

@@ -5,6 +5,7 @@
 #include "light/light_space.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -39,8 +40,9 @@ std::vector<LightSpace> lightSpaces(const LightSettings& light, const Bounds& bo
     return space ? std::vector<LightSpace>{*space} : std::vector<LightSpace>{};
 }
 
-// A light motion's step in map texels: the largest shift of a scene bounding-box corner between frames 0 and 1 (a
-// point light: in the cube face the corner lies in at frame 0).
+// A light motion's step in map texels: the largest shift of the scene's bounding-box centre or a corner between
+// frames 0 and 1, over those inside the map at frame 0 (a spot's cone sees few corners; a point light: in the cube
+// face the point lies in at frame 0).
 double lightStepTexels(const LightSettings& start, const Motion& motion, const Bounds& bounds) {
     if (bounds.empty) return 0.0;
     const std::vector<LightSpace> before = lightSpaces(lightAtFrame(start, motion, bounds, 0), bounds);
@@ -48,9 +50,11 @@ double lightStepTexels(const LightSettings& start, const Motion& motion, const B
     if (before.empty() || before.size() != after.size()) return 0.0;
     const glm::dvec3 centre(bounds.center());
     double largest = 0.0;
-    for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 corner = glm::dvec3(c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
-                                             c & 4 ? bounds.max.z : bounds.min.z) - centre;
+    for (int c = 0; c < 9; ++c) {
+        const glm::dvec3 corner =
+            c == 8 ? glm::dvec3(0.0)
+                   : glm::dvec3(c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
+                                c & 4 ? bounds.max.z : bounds.min.z) - centre;
         std::size_t view = 0;
         if (before.size() == 6) {  // the face whose axis is nearest the direction toward the corner
             const glm::dvec3 toward = corner - before[0].position;
@@ -58,7 +62,9 @@ double lightStepTexels(const LightSettings& start, const Motion& motion, const B
                 if (glm::dot(toward, before[f].direction) > glm::dot(toward, before[view].direction)) view = f;
         }
         glm::dvec2 a, b;
-        if (mapTexel(before[view], corner, a) && mapTexel(after[view], corner, b))
+        const double size = double(before[view].resolution);
+        if (mapTexel(before[view], corner, a) && mapTexel(after[view], corner, b) && a.x >= 0.0 && a.y >= 0.0 &&
+            a.x <= size && a.y <= size)
             largest = std::max(largest, glm::length(b - a));
     }
     return largest;
@@ -120,6 +126,11 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
     if (!isolated) return fail(error);
     const LightSettings start = isolated->lights[0];
     report.lightType = start.type;
+    if (motion.kind == MotionKind::Light && start.type == LightType::Point && !scene.bounds.empty &&
+        glm::length(glm::dvec3(start.position) - glm::dvec3(scene.bounds.center())) <
+            1e-6 * std::max(double(scene.bounds.radius()), 1e-9))
+        return fail("--motion light: lights." + std::to_string(motion.light) +
+                    " is a point light at the scene's centre; turning it about the centre does not move it");
     if (motion.kind == MotionKind::Light) report.stepTexels = lightStepTexels(start, motion, scene.bounds);
 
     const float outerBase = progress ? progress->base : 0.0f, outerSpan = progress ? progress->span : 1.0f;
@@ -149,18 +160,23 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
         for (const std::string& w : current.warnings)
             if (std::find(report.warnings.begin(), report.warnings.end(), w) == report.warnings.end())
                 report.warnings.push_back(w);
-        report.frames.push_back({static_cast<const AccuracyNumbers&>(current), current.shadowViewsRendered});
+        report.frames.push_back({static_cast<const AccuracyNumbers&>(current), current.shadowViewsRendered, current.cost});
         if (f == 0) {
             report.texelWorldSize = current.texelWorldSize;
-            if (motion.kind == MotionKind::Camera && current.texelWorldSize > 0.0)
-                report.stepTexels = std::abs(motion.step) / current.texelWorldSize;
+            // A turn sweeps the looked-at point across the receivers by its distance x the angle.
+            const double travel = motion.kind == MotionKind::Camera ? std::abs(motion.step)
+                                  : motion.kind == MotionKind::CameraTurn
+                                      ? glm::length(camera.target - camera.position) * glm::radians(std::abs(motion.step))
+                                      : 0.0;
+            if (movesCamera(motion.kind) && current.texelWorldSize > 0.0)
+                report.stepTexels = travel / current.texelWorldSize;
         }
         std::vector<std::uint8_t> picture = dimmedPicture(width, height, current.pixelClass, current.pixelShadow,
                                                           current.pixelLambert, frameSettings.ambient);
         if (f > 0) {
             // The pair's halves at frame f's camera: a light motion keeps the camera (frame f-1 is the first half);
             // a camera motion keeps the light, so frame f with frame f-1's light is frame f itself.
-            const AccuracyReport& first = motion.kind == MotionKind::Light ? previous : current;
+            const AccuracyReport& first = movesCamera(motion.kind) ? current : previous;
             FlickerPair pair;
             pair.from = f - 1;
             pair.counts = compareFlickerPair(halfOf(first), halfOf(current), &flickering);

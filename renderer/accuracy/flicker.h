@@ -63,6 +63,7 @@ struct FlickerPair {
 struct FlickerFrame {
     AccuracyNumbers numbers;  // the usual metrics of this frame (its camera and light)
     std::size_t shadowViewsRendered = 0;
+    AccuracyCost cost;        // what measuring it cost (a light motion traces new rays every frame)
 };
 
 struct FlickerReport {
@@ -74,8 +75,8 @@ struct FlickerReport {
     std::size_t lightIndex = 0;  // = motion.light
     LightType lightType = LightType::Directional;
     // The step in texels of the light's map: camera: the step over the texel's world size (directional: exact; spot /
-    // point: at the scene centre's distance); light: the largest shift of a scene bounding-box corner in the map
-    // between two frames.
+    // point: at the scene centre's distance); camera turn: the same for the looked-at point's sweep (its distance x
+    // the angle); light: the largest shift in the map of the scene's centre or a bounding-box corner inside it.
     double stepTexels = 0.0;
     double texelWorldSize = 0.0;
 

@@ -30,12 +30,33 @@ glm::dvec3 rotated(const LightSettings& light, const Bounds& bounds) {
 
 }  // namespace
 
-const char* motionName(MotionKind kind) { return kind == MotionKind::Camera ? "camera" : "light"; }
+const std::vector<MotionInfo>& motionKinds() {
+    static const std::vector<MotionInfo> kinds = {
+        {MotionKind::Camera, "camera", "world units", 0.002},
+        {MotionKind::CameraTurn, "camera-turn", "degrees", 0.1},
+        {MotionKind::Light, "light", "degrees", 0.02},
+    };
+    return kinds;
+}
+
+const MotionInfo& motionInfo(MotionKind kind) {
+    for (const MotionInfo& info : motionKinds())
+        if (info.kind == kind) return info;
+    return motionKinds().front();
+}
 
 std::optional<MotionKind> parseMotion(const std::string& name) {
-    if (name == "camera") return MotionKind::Camera;
-    if (name == "light") return MotionKind::Light;
+    for (const MotionInfo& info : motionKinds())
+        if (name == info.name) return info.kind;
     return std::nullopt;
+}
+
+std::string motionNames() {
+    std::string text;
+    const std::vector<MotionInfo>& kinds = motionKinds();
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+        text += std::string(i == 0 ? "" : i + 1 == kinds.size() ? " or " : ", ") + kinds[i].name;
+    return text;
 }
 
 std::string motionError(const Motion& motion, const Bounds& sceneBounds) {
@@ -46,9 +67,9 @@ std::string motionError(const Motion& motion, const Bounds& sceneBounds) {
         return out.str();
     }
     if (!std::isfinite(motion.step)) return "--step: must be a finite number";
-    if (motion.kind == MotionKind::Light && std::abs(motion.step) > kMaxLightStepDeg) {
-        out << "--step " << motion.step << ": a light step is in degrees per frame, at most " << kMaxLightStepDeg
-            << " (flicker is about sub-texel steps)";
+    if (motion.kind != MotionKind::Camera && std::abs(motion.step) > kMaxTurnStepDeg) {
+        out << "--step " << motion.step << ": a " << motionName(motion.kind)
+            << " step is in degrees per frame, at most " << kMaxTurnStepDeg << " (flicker is about sub-texel steps)";
         return out.str();
     }
     const double diameter = sceneBounds.empty ? 2.0 : 2.0 * double(sceneBounds.radius());
@@ -59,11 +80,18 @@ std::string motionError(const Motion& motion, const Bounds& sceneBounds) {
     }
     if (motion.direction && (!finite(*motion.direction) || glm::length(*motion.direction) < 1e-12))
         return motion.kind == MotionKind::Camera ? "--direction: the camera's direction of travel must be finite and non-zero"
-                                                 : "--direction: the light's rotation axis must be finite and non-zero";
+                                                 : "--direction: the rotation axis must be finite and non-zero";
     return "";
 }
 
 Camera cameraAtFrame(const Camera& start, const Motion& motion, int frame) {
+    if (motion.kind == MotionKind::CameraTurn) {
+        const glm::dvec3 axis = motion.direction ? glm::normalize(*motion.direction) : glm::dvec3(0.0, 1.0, 0.0);
+        Camera camera = start;
+        camera.target = start.position +
+                        rotate(start.target - start.position, axis, glm::radians(motion.step * double(frame)));
+        return camera;
+    }
     if (motion.kind != MotionKind::Camera) return start;
     const glm::dvec3 along = motion.direction ? glm::normalize(*motion.direction)
                                               : viewBasis(start.target - start.position).right;

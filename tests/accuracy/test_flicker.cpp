@@ -61,6 +61,23 @@ TEST(FlickerMotion, CameraSlidesAlongItsRightVectorByFrameTimesStep) {
     EXPECT_NEAR(cameraAtFrame(start, motion, 1).position.x - start.position.x, 0.001, 1e-9);
 }
 
+TEST(FlickerMotion, CameraTurnsItsViewAboutItsPosition) {
+    Camera start;
+    start.position = {0.0, 2.0, 10.0};
+    start.target = {0.0, 2.0, 0.0};
+    Motion motion;
+    motion.kind = MotionKind::CameraTurn;
+    motion.step = 0.5;
+    motion.frames = 200;
+    const Camera c = cameraAtFrame(start, motion, 180);  // 90 degrees about world up
+    EXPECT_EQ(c.position, start.position);
+    EXPECT_NEAR(glm::length(c.target - c.position), 10.0, 1e-9);
+    EXPECT_NEAR(std::abs(c.target.x), 10.0, 1e-9);
+    EXPECT_NEAR(c.target.y, 2.0, 1e-12);
+    EXPECT_EQ(parseMotion("camera-turn"), MotionKind::CameraTurn);
+    EXPECT_EQ(motionNames(), "camera, camera-turn or light");
+}
+
 TEST(FlickerMotion, LightTurnsByFrameTimesStepAboutTheDefaultAxis) {
     Bounds bounds;
     bounds.extend({-1.0f, -1.0f, -1.0f});
@@ -129,6 +146,25 @@ Settings textbookSettings(FilterKind filter, int resolution) {
     return s;
 }
 
+// The textbook, its view and a meter; play() measures a motion of light 0 in that view.
+struct Textbook {
+    Textbook(FilterKind filter, int resolution)
+        : scene(loadBuiltin("textbook")),
+          settings(textbookSettings(filter, resolution)),
+          camera(cameraFor(settings.camera, scene, double(kWidth) / kHeight)) {}
+    FlickerReport play(MotionKind kind, double step, int frames) {
+        Motion motion;
+        motion.kind = kind;
+        motion.step = step;
+        motion.frames = frames;
+        return measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    }
+    Scene scene;
+    Settings settings;
+    Camera camera;
+    AccuracyMeter meter;
+};
+
 void savePicture(const std::vector<std::uint8_t>& rgba, int w, int h, const std::string& name) {
     const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_TEST_OUTPUT) / "accuracy";
     std::filesystem::create_directories(dir);
@@ -142,18 +178,11 @@ std::size_t maskCount(const std::vector<std::uint8_t>& mask) {
 }
 
 TEST_F(FlickerTest, CameraMotionFlickersExactlyZeroAndRerendersNoShadowView) {
-    const Scene scene = loadBuiltin("textbook");
-    const Settings settings = textbookSettings(FilterKind::Point, 512);
-    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
-    AccuracyMeter meter;
-    // 0.2 texel of the map per frame.
-    const AccuracyReport first = meter.measure(scene, settings, camera, kWidth, kHeight);
+    Textbook t(FilterKind::Point, 512);
+    const AccuracyReport first = t.meter.measure(t.scene, t.settings, t.camera, kWidth, kHeight);
     ASSERT_TRUE(first.ok) << first.error;
-    Motion motion;
-    motion.kind = MotionKind::Camera;
-    motion.step = 0.2 * first.texelWorldSize;
-    motion.frames = 4;
-    const FlickerReport r = measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    // 0.2 texel of the map per frame.
+    const FlickerReport r = t.play(MotionKind::Camera, 0.2 * first.texelWorldSize, 4);
     ASSERT_TRUE(r.ok) << r.error;
     savePicture(r.overlayRgba, r.width, r.height, "flicker-textbook-camera");
     ASSERT_EQ(r.pairs.size(), 3u);
@@ -168,18 +197,19 @@ TEST_F(FlickerTest, CameraMotionFlickersExactlyZeroAndRerendersNoShadowView) {
     EXPECT_EQ(maskCount(r.flickerMask), 0u);
     // The camera did move: the frames see different pixels.
     EXPECT_NE(r.frames.front().numbers.counts.lit, r.frames.back().numbers.counts.lit);
+
+    // Turning the camera (HARD_CASES.md case 7's second half) keeps the maps too.
+    const FlickerReport turned = t.play(MotionKind::CameraTurn, 0.1, 3);
+    ASSERT_TRUE(turned.ok) << turned.error;
+    EXPECT_EQ(turned.maxFlickerPercent, 0.0);
+    for (const FlickerPair& pair : turned.pairs) EXPECT_EQ(pair.shadowViewsRendered, 0u);
+    EXPECT_NE(turned.frames.front().numbers.counts.lit, turned.frames.back().numbers.counts.lit);
 }
 
 TEST_F(FlickerTest, SubTexelLightTurnFlickersAtShadowEdgesOfAnUnsnappedMap) {
-    const Scene scene = loadBuiltin("textbook");
-    const Settings settings = textbookSettings(FilterKind::Point, 256);
-    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
-    AccuracyMeter meter;
-    Motion motion;
-    motion.kind = MotionKind::Light;
-    motion.step = 0.2;  // degrees: about a quarter texel of the 256² map (checked below)
-    motion.frames = 4;
-    const FlickerReport r = measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    Textbook t(FilterKind::Point, 256);
+    // 0.2 degrees: about a quarter texel of the 256² map (checked below).
+    const FlickerReport r = t.play(MotionKind::Light, 0.2, 4);
     ASSERT_TRUE(r.ok) << r.error;
     savePicture(r.overlayRgba, r.width, r.height, "flicker-textbook-light");
     savePicture(r.worstPreviousRgba, r.width, r.height, "flicker-textbook-light-worst-a");
@@ -193,9 +223,9 @@ TEST_F(FlickerTest, SubTexelLightTurnFlickersAtShadowEdgesOfAnUnsnappedMap) {
 
     // Every flickering pixel lies near a true shadow edge of the last frame: within a few pixels some neighbour has
     // the other visibility (a texel of the 256² map spans about 2 pixels here; 6 leaves room for the staircase).
-    Settings last = settings;
-    last.lights[0] = lightAtFrame(settings.lights[0], motion, scene.bounds, motion.frames - 1);
-    const AccuracyReport lastFrame = meter.measure(scene, last, camera, kWidth, kHeight);
+    Settings last = t.settings;
+    last.lights[0] = lightAtFrame(t.settings.lights[0], r.motion, t.scene.bounds, r.motion.frames - 1);
+    const AccuracyReport lastFrame = t.meter.measure(t.scene, last, t.camera, kWidth, kHeight);
     ASSERT_TRUE(lastFrame.ok);
     constexpr int kReach = 6;
     std::size_t far = 0;
@@ -218,15 +248,8 @@ TEST_F(FlickerTest, SubTexelLightTurnFlickersAtShadowEdgesOfAnUnsnappedMap) {
 }
 
 TEST_F(FlickerTest, LargerLightTurnMovesTheTrueShadowMoreThanItFlickers) {
-    const Scene scene = loadBuiltin("textbook");
-    const Settings settings = textbookSettings(FilterKind::Pcf, 2048);
-    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
-    AccuracyMeter meter;
-    Motion motion;
-    motion.kind = MotionKind::Light;
-    motion.step = 2.0;
-    motion.frames = 2;
-    const FlickerReport r = measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    Textbook t(FilterKind::Pcf, 2048);
+    const FlickerReport r = t.play(MotionKind::Light, 2.0, 2);
     ASSERT_TRUE(r.ok) << r.error;
     savePicture(r.overlayRgba, r.width, r.height, "flicker-textbook-light-2deg");
     EXPECT_GT(r.stepTexels, 10.0);
@@ -239,20 +262,25 @@ TEST_F(FlickerTest, LargerLightTurnMovesTheTrueShadowMoreThanItFlickers) {
 }
 
 TEST_F(FlickerTest, BadMotionOrLightIsRefusedWithTheReason) {
-    const Scene scene = loadBuiltin("textbook");
-    const Settings settings = textbookSettings(FilterKind::Pcf, 512);
-    const Camera camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
-    AccuracyMeter meter;
+    Textbook t(FilterKind::Pcf, 512);
     Motion motion;
     motion.frames = 1;
-    FlickerReport r = measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    FlickerReport r = measureFlicker(t.meter, t.scene, t.settings, t.camera, kWidth, kHeight, motion);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("--frames"), std::string::npos) << r.error;
     motion.frames = 2;
     motion.light = 5;
-    r = measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    r = measureFlicker(t.meter, t.scene, t.settings, t.camera, kWidth, kHeight, motion);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("lights.5"), std::string::npos) << r.error;
+    // A point light turns about the scene's centre: sitting there, it would not move at all.
+    motion.light = 0;
+    motion.kind = MotionKind::Light;
+    t.settings.lights[0].type = LightType::Point;
+    t.settings.lights[0].position = t.scene.bounds.center();
+    r = measureFlicker(t.meter, t.scene, t.settings, t.camera, kWidth, kHeight, motion);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("scene's centre"), std::string::npos) << r.error;
 }
 
 }  // namespace

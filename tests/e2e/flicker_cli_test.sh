@@ -23,6 +23,9 @@ grep -q "camera moved 0.02 world units per frame = 0.17.* texels .*sub-texel" ca
 [ "$(json_get camera.json "sum(p['shadowViewsRendered'] for p in j['pairs'])")" = "0" ] \
   && pass "camera motion re-renders no shadow view" || fail "camera motion re-rendered a view"
 [ "$(json_get camera.json "len(j['pairs'])")" = "3" ] && pass "4 frames = 3 pairs" || fail "pairs"
+expect_ok turn "$SHADOWLAB" measure "${coarse[@]}" --motion camera-turn --frames 3 --step 0.1 --json turn.json
+[ "$(json_get turn.json "(j['flickerPercent']['max'], j['motion'], j['stepUnit'])")" = "(0.0, 'camera-turn', 'degrees')" ] \
+  && pass "camera turn: flicker 0" || fail "camera turn: $(json_get turn.json "j['flickerPercent']")"
 
 expect_ok light "$SHADOWLAB" measure "${coarse[@]}" --motion light --frames 4 --step 0.4 --json light.json \
   --overlay light.png --frames-out pair
@@ -65,7 +68,7 @@ expect_error frames-one "--frames 1" "$SHADOWLAB" measure "${coarse[@]}" --motio
 expect_error step-nan "--step 'nan'" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step nan
 expect_error step-absurd "--step 720" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step 720
 expect_error step-missing "needs --step" "$SHADOWLAB" measure "${coarse[@]}" --motion camera
-expect_error motion-unknown "--motion 'sideways'" "$SHADOWLAB" measure "${coarse[@]}" --motion sideways --step 1
+expect_error motion-unknown "--motion 'sideways': unknown motion (camera, camera-turn or light)" "$SHADOWLAB" measure "${coarse[@]}" --motion sideways --step 1
 expect_error motion-missing "need --motion" "$SHADOWLAB" measure "${coarse[@]}" --frames 3 --step 1
 expect_error direction-bad "--direction" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step 0.1 \
   --direction 0,0
