@@ -2,6 +2,7 @@
 #include "cli/bench_command.h"
 #include "cli/bench_lights.h"
 #include "cli/export_command.h"
+#include "cli/hardcases_command.h"
 #include "cli/info_command.h"
 #include "cli/measure_command.h"
 #include "cli/probe_command.h"
@@ -165,6 +166,15 @@ int main(int argc, char** argv) {
     sweepCmd->add_option("--chart-height", sweep.chartHeight, "chart height")->capture_default_str()->check(
         CLI::Range(150, 8192));
 
+    cli::HardCasesOptions hard;
+    CLI::App* hardCmd = app.add_subcommand("hardcases", "Run the numerically hard cases of ../shared/HARD_CASES.md: "
+                                                        "each figure beside its threshold, pictures, exit 1 on a failure");
+    hardCmd->add_option("--case", hard.cases, "run only case N (1..17; repeatable)");
+    hardCmd->add_flag("--quick", hard.quick, "small maps and views, fewer sweep steps (ctest)");
+    hardCmd->add_option("--json", hard.json, "write every case's rows as JSON");
+    hardCmd->add_option("--out-dir", hard.outDir, "write the pictures (overlays, frame pairs) into this folder");
+    hardCmd->add_option("--scenes", hard.sharedScenes, "the ../shared/scenes folder (default: beside the source tree)");
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -184,6 +194,7 @@ int main(int argc, char** argv) {
     if (*probeCmd) return cli::runProbe(probe);
     if (*profileCmd) return cli::runProfile(profile);
     if (*sweepCmd) return cli::runSweep(sweep);
+    if (*hardCmd) return cli::runHardCases(hard);
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

@@ -128,10 +128,16 @@ float shadow2D(LightData L, vec3 lookup, vec3 ray, float texelWorld) {
 #else
     int map = int(L.shadow.x);
 #endif
+    // A lookup inside the map keeps its taps inside it (half a texel from the edge: a bilinear tap's footprint too),
+    // so a kernel near the edge reads the map's own border texels, not the address mode's "outside" (HARD_CASES 6).
+    // The pixel probe mirrors this (probe/pixel_probe.cpp).
+    bool inside = all(greaterThanEqual(lightTex.xy, vec2(0.0))) && all(lessThanEqual(lightTex.xy, vec2(1.0)));
+    vec2 lo = inside ? vec2(0.5 * L.shadow.z) : vec2(-1e30), hi = inside ? vec2(1.0 - 0.5 * L.shadow.z) : vec2(1e30);
     float sum = 0.0;
     FOR_EACH_TAP {
-        vec2 offset = TAP_OFFSET * uFilterScale;  // texels
+        vec2 tapTex = clamp(lightTex.xy + TAP_OFFSET * uFilterScale * L.shadow.z, lo, hi);
 #ifdef RECEIVER_PLANE
+        vec2 offset = (tapTex - lightTex.xy) / L.shadow.z;  // texels, to the tap actually read (after the clamp)
 #ifdef FILTER_NEAREST
         // A nearest tap reads one texel, whose stored depth is its caster's at the texel's centre: the plane there.
         vec2 lookupTexels = lightTex.xy / L.shadow.z;
@@ -143,7 +149,7 @@ float shadow2D(LightData L, vec3 lookup, vec3 ray, float texelWorld) {
 #else
         float tapRef = ref;
 #endif
-        sum += texture(uMaps2D[map], vec4(lightTex.xy + offset * L.shadow.z, L.shadow.y, tapRef));
+        sum += texture(uMaps2D[map], vec4(tapTex, L.shadow.y, tapRef));
     }
     return sum / float(FILTER_TAPS);
 }

@@ -224,6 +224,8 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         t.offsetTexels = tap.offsetTexels;
         t.bilinear = tap.bilinear;
         t.texelCoord = (glm::dvec2(r.lightTexture) + tap.offsetTexels * texelStep) * double(res);
+        // A lookup inside the map keeps its taps half a texel inside its edge (main.frag.glsl's shadow2D).
+        if (r.insideMap) t.texelCoord = glm::clamp(t.texelCoord, glm::dvec2(0.5), glm::dvec2(double(res) - 0.5));
         Candidate c;
         for (int axis = 0; axis < 2; ++axis) {
             auto& list = axis == 0 ? c.xs : c.ys;
@@ -270,7 +272,8 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         const Candidate& c = candidates[k];
         t.value = t.low = t.high = 0.0;
         // Receiver-plane bias: a nearest tap compares the plane at its texel's centre, a bilinear one at the tap.
-        const glm::dvec2 toPlane = t.bilinear ? t.offsetTexels
+        // (to the tap actually read: after the clamp inside the map's edge, as main.frag.glsl does)
+        const glm::dvec2 toPlane = t.bilinear ? t.texelCoord - r.texelCoord
                                               : glm::floor(t.texelCoord) + 0.5 - r.texelCoord;
         const double planeTerm = glm::dot(plane, toPlane);
         const double receiver = plane == glm::dvec2(0.0) ? r.receiverDepth : light.clampToFar(r.receiverDepth + planeTerm);

@@ -1,0 +1,57 @@
+#include "cli/hardcases_command.h"
+
+#include "accuracy/accuracy_meter.h"
+#include "cli/command_input.h"
+#include "context/headless_context.h"
+#include "frame/renderer.h"
+#include "hardcases/hard_case_runner.h"
+#include "settings/atomic_file.h"
+
+#include <filesystem>
+#include <iostream>
+
+namespace shadowlab::cli {
+
+int runHardCases(const HardCasesOptions& options) {
+    std::string error;
+    const std::vector<const hardcases::HardCase*> selected =
+        hardcases::selectCases(hardcases::hardCaseList(), options.cases, error);
+    if (!error.empty()) {
+        fail(error);
+        return 2;
+    }
+    if (!options.outDir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(options.outDir, ec);
+        if (!std::filesystem::is_directory(options.outDir))
+            return fail("--out-dir " + options.outDir + ": cannot create the folder" +
+                        (ec ? " (" + ec.message() + ")" : ""));
+    }
+    // After --out-dir, which may be the JSON's folder.
+    if (std::string e = checkOutputFolder(options.json, "--json"); !e.empty()) return fail(e);
+    hardcases::HardCaseOptions caseOptions;
+    caseOptions.quick = options.quick;
+    caseOptions.outDir = options.outDir;
+    caseOptions.sharedScenes = options.sharedScenes.empty() ? SHADOWLAB_SHARED_SCENES : options.sharedScenes;
+    try {
+        HeadlessContext context;
+        AccuracyMeter meter;
+        Renderer renderer;
+        hardcases::CaseContext caseContext(caseOptions, meter, renderer);
+        std::cout << "hard cases of ../shared/HARD_CASES.md" << (options.quick ? " (--quick: small maps and views)" : "")
+                  << " on " << renderer.glInfo().renderer << "\n";
+        const std::vector<hardcases::CaseResult> results = hardcases::runCases(selected, caseContext, &std::cout);
+        hardcases::printSummary(std::cout, results);
+        if (!options.json.empty()) {
+            const std::string text = hardcases::resultsToJson(results, options.quick).dump(2) + "\n";
+            if (std::string e = writeFileAtomically(options.json, text); !e.empty()) return fail(e);
+            std::cout << "wrote " << options.json << "\n";
+        }
+        if (!options.outDir.empty()) std::cout << "pictures in " << options.outDir << "\n";
+        return hardcases::exitCode(results);
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+}
+
+}  // namespace shadowlab::cli
