@@ -458,7 +458,9 @@ bool Editor::busy() const {
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
                         state_.showLightFrustum,   state_.showLightFrustum ? state_.selectedLight : 0};
-    return !(key == *lastRendered_) || mapPictureStale_ || abViewDue();
+    // A stale map picture matters only while the viewer shows it (its tab may be closed: it redraws when opened).
+    const bool mapPictureDue = mapPictureStale_ && state_.viewer.width >= 8;
+    return !(key == *lastRendered_) || mapPictureDue || abViewDue();
 }
 
 std::optional<std::string> Editor::takeWindowScreenshotRequest() {

@@ -35,7 +35,10 @@ void Editor::probeViewportInput(ImVec2 imagePos) {
     const bool held = ImGui::IsItemHovered() && io.KeysDown[keys::kP] && !io.WantTextInput;
     const ProbeState& p = state_.probe;
     const bool samePixel = p.report && p.report->x == x && p.report->y == y;
-    if (click || (held && !samePixel)) state_.probe.request = pixel;
+    if (click || (held && !samePixel)) {
+        state_.probe.request = pixel;
+        state_.showPanel = "Probe";  // its answer is in the Probe tab
+    }
 }
 
 void Editor::drawProbeMarker(ImVec2 imagePos) {

@@ -99,6 +99,8 @@ struct EditorState {
     ProbeState probe;        // the Probe panel: why the clicked pixel is lit or shadowed
     SweepPanelState sweep;   // the Cost vs accuracy panel
     AbState ab;              // A/B: the snapshot A beside the edited settings B
+    // A panel to bring forward: its sidebar tab is selected on the next frame (e.g. Probe after a click on the view).
+    std::string showPanel;
 
     // Scene panel
     std::optional<SceneLoadProgress> loading;  // while a scene loads

@@ -75,7 +75,7 @@ TEST_F(EditorAb, SnapshotEditDragSwapApply) {
     ASSERT_TRUE(ab.active);
     EXPECT_EQ(ab.renders, 1) << "A rendered once for its snapshot";
     EXPECT_TRUE(ab.haveStatsA);
-    EXPECT_TRUE(h.hasControl("ab.divider"));
+    EXPECT_TRUE(h.reveal("ab.divider"));
 
     // B: no bias at all (acne over the lit surfaces). A keeps its picture without a pass.
     const long bFrames = h.state().renderedFrames;

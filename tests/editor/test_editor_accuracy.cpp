@@ -96,7 +96,7 @@ TEST_F(EditorAccuracy, MeasureGivesNumbersWhileTheUiKeepsDrawing) {
     // The default preset is free of acne on the textbook; the numbers are shown, and they are current.
     EXPECT_LT(a.report->acnePercent, 0.1);
     EXPECT_EQ(a.stale, "");
-    EXPECT_TRUE(h.hasControl("accuracy.acne"));
+    EXPECT_TRUE(h.reveal("accuracy.acne"));
     EXPECT_FALSE(h.hasControl("accuracy.stale"));
     EXPECT_EQ(a.measurements, 1);
     h.saveWindow("accuracy-measured");
@@ -118,7 +118,7 @@ TEST_F(EditorAccuracy, AnEditOrACameraMoveMakesTheNumbersStale) {
     h.drag("shadow.depthBias", 60.0f, 0.0f);
     h.frame();
     EXPECT_NE(a.stale.find("shadow.depthBias changed"), std::string::npos) << a.stale;
-    EXPECT_TRUE(h.hasControl("accuracy.stale"));
+    EXPECT_TRUE(h.reveal("accuracy.stale"));
     h.drag("viewport.image", 60.0f, 10.0f);
     EXPECT_NE(a.stale.find("the camera moved"), std::string::npos) << a.stale;
     // The view mode is not part of what was measured.
@@ -201,7 +201,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
         EXPECT_EQ(a.measurements, 1);
         seen.push_back({slope, a.report->counts.acne});
         if (step == 2) {
-            EXPECT_TRUE(h.hasControl("accuracy.live"));
+            EXPECT_TRUE(h.reveal("accuracy.live"));
             h.saveWindow("accuracy-live-drag");
         }
     }
@@ -236,6 +236,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     EXPECT_EQ(a.report->counts.acne, live.acne);
     EXPECT_EQ(a.report->counts.wrong, live.wrong);
     EXPECT_EQ(a.report->counts.mismatched, live.mismatched);
+    ASSERT_TRUE(h.reveal("accuracy.measure"));
     EXPECT_FALSE(h.hasControl("accuracy.live"));
 
     // A camera move needs new rays: no live count, the full measure follows once still.
@@ -294,13 +295,13 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
     EXPECT_NE(h.editor().windowTitle().find(" *"), std::string::npos);
     EXPECT_EQ(a.stale, "") << "the numbers describe the applied settings";
-    EXPECT_TRUE(h.hasControl("accuracy.result"));
+    EXPECT_TRUE(h.reveal("accuracy.result"));
     h.saveWindow("accuracy-suggested");
 
     // Save as preset... opens the preset session's Save As, and the saved preset carries the bias.
     h.click("accuracy.saveAs");
     h.frame(2);
-    ASSERT_TRUE(h.hasControl("saveAs.name"));
+    ASSERT_TRUE(h.reveal("saveAs.name"));
     h.selectAllAndType("suggested");
     const std::filesystem::path saved = folder / "user-presets" / "suggested.json";
     ASSERT_TRUE(std::filesystem::exists(saved));
@@ -460,7 +461,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     EXPECT_EQ(a.report->mainCause(), MismatchCause::CasterCulled);
     h.click("accuracy.tab.causes");
     h.frame(2);
-    EXPECT_TRUE(h.hasControl("accuracy.causes"));
+    EXPECT_TRUE(h.reveal("accuracy.causes"));
     h.click("view");
     h.click("view=accuracy overlay by cause");
     h.frame(2);
@@ -502,8 +503,8 @@ TEST_F(EditorAccuracy, CoarseMapWarningShowsInTheNumbersTab) {
     EXPECT_NE(a.report->coarseMapWarning, "");
     h.click("accuracy.tab.numbers");
     h.frame(2);
-    EXPECT_TRUE(h.hasControl("accuracy.coarseMap"));
-    EXPECT_TRUE(h.hasControl("accuracy.wrong"));
+    EXPECT_TRUE(h.reveal("accuracy.coarseMap"));
+    EXPECT_TRUE(h.reveal("accuracy.wrong"));
 }
 
 }  // namespace shadowlab::editor::test

@@ -296,8 +296,10 @@ void drawAccuracyPanel(PanelContext& ctx) {
                           "then only the full measure runs.",
                           AccuracyState::kAutoDelaySeconds);
     if (a.report && a.report->live && a.stale.empty()) {
-        ImGui::TextDisabled("live: counted on the GPU in %.1f ms (%ld counts); causes and overlay once still",
-                            a.report->cost.totalMs, a.liveMeasurements);
+        char live[160];
+        std::snprintf(live, sizeof live, "live: counted on the GPU in %.1f ms (%ld counts); causes and overlay once still",
+                      a.report->cost.totalMs, a.liveMeasurements);
+        noteText(live);
         state.controls.recordLastItem("accuracy.live");
     }
 
@@ -320,7 +322,7 @@ void drawAccuracyPanel(PanelContext& ctx) {
         if (a.report)
             numbersTab(state, *a.report);
         else
-            ImGui::TextDisabled("Measure, or turn on Auto, to see how wrong the shadows are");
+            noteText("Measure, or turn on Auto, to see how wrong the shadows are");
         ImGui::EndTabItem();
     }
     if (tab("Causes", "accuracy.tab.causes")) {
