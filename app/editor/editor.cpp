@@ -513,7 +513,9 @@ std::string writeFramebufferPng(const std::string& path, int width, int height) 
     return writePng(path, width, height, 4, pixels.data(), true);
 }
 
-std::string windowScreenshotPath(const std::string& folder) {
+std::string windowScreenshotPath(const std::string& folder) { return stampedPath(folder, "window", ".png"); }
+
+std::string stampedPath(const std::string& folder, const std::string& kind, const std::string& extension) {
     std::error_code ec;
     fs::create_directories(folder, ec);
     const std::time_t t = std::time(nullptr);
@@ -521,9 +523,9 @@ std::string windowScreenshotPath(const std::string& folder) {
     localtime_r(&t, &local);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-    fs::path path = fs::path(folder) / (std::string("shadowlab-window-") + stamp + ".png");
-    for (int n = 2; fs::exists(path, ec); ++n)
-        path = fs::path(folder) / (std::string("shadowlab-window-") + stamp + "-" + std::to_string(n) + ".png");
+    const std::string base = "shadowlab-" + kind + "-" + stamp;
+    fs::path path = fs::path(folder) / (base + extension);
+    for (int n = 2; fs::exists(path, ec); ++n) path = fs::path(folder) / (base + "-" + std::to_string(n) + extension);
     return path.string();
 }
 

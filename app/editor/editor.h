@@ -76,6 +76,7 @@ public:
     void deletePreset() override;
     void requestScreenshot(bool withShadowMap) override;
     void frameScene() override;
+    void saveProbeJson() override;
     void measureAccuracy() override;
     void suggestBias() override;
     void cancelAccuracy() override;
@@ -201,5 +202,7 @@ std::string writeFramebufferPng(const std::string& path, int width, int height);
 
 // "shadowlab-window-YYYYMMDD-HHMMSS.png" in `folder` (created if missing); never an existing file.
 std::string windowScreenshotPath(const std::string& folder);
+// The same rule for any kind of file: "shadowlab-KIND-YYYYMMDD-HHMMSS.EXT".
+std::string stampedPath(const std::string& folder, const std::string& kind, const std::string& extension);
 
 }  // namespace shadowlab::editor

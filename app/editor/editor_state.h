@@ -158,6 +158,8 @@ public:
     virtual void deletePreset() = 0;
     virtual void requestScreenshot(bool withShadowMap) = 0;
     virtual void frameScene() = 0;
+    // The Probe panel's report as JSON (probe --json's format, with the scene and preset) in the screenshots folder.
+    virtual void saveProbeJson() = 0;
     // Accuracy: measure the current view, search for a bias (applied to the settings when done), cancel either.
     virtual void measureAccuracy() = 0;
     virtual void suggestBias() = 0;
