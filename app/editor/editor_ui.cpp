@@ -19,6 +19,9 @@ namespace shadowlab::editor {
 namespace {
 
 constexpr float kStatusHeight = 26.0f;
+// The view combo's two editor-only choices (the accuracy overlays); the second is its longest label.
+constexpr const char* kOverlay = "accuracy overlay";
+constexpr const char* kCauseOverlay = "accuracy overlay by cause";
 
 }  // namespace
 
@@ -98,7 +101,9 @@ void Editor::drawViewport() {
         }
     };
     ImGui::SetCursorPos(ImVec2(8, 6));
-    ImGui::SetNextItemWidth(150.0f);
+    // Wide enough for its longest choice ("accuracy overlay by cause") and the arrow.
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize(kCauseOverlay).x + 2.0f * style.FramePadding.x +
+                            ImGui::GetFrameHeight());
     viewModeCombo();
     flow(buttonWidth(state_.ab.active ? "A/B ..." : "A/B"));
     abToolbar();  // next to what the view shows: it splits the view
@@ -204,8 +209,6 @@ void Editor::viewportCameraInput(ImVec2 pos, ImVec2 size) {
 void Editor::viewModeCombo() {
     // lit / shadow / light-depth are the renderer's view setting (saved in presets); the accuracy overlay is the
     // editor's own view of the newest measurement and never a setting.
-    static constexpr const char* kOverlay = "accuracy overlay";
-    static constexpr const char* kCauseOverlay = "accuracy overlay by cause";
     AccuracyState& a = state_.accuracy;
     const SettingsField* field = findSettingsField("view");
     const std::string current = field->get(state_.settings).get<std::string>();

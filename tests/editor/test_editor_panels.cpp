@@ -6,7 +6,9 @@
 
 #include <imgui_internal.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -116,6 +118,39 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorLayout,
                          [](const auto& info) {
                              return std::to_string(info.param.first) + "x" + std::to_string(info.param.second);
                          });
+
+// With a measurement the Accuracy tab holds the most text (numbers, causes with remedies, counts, cost), and the view
+// combo its longest choice: still nothing cut at 1280x720.
+TEST(EditorLayoutMeasured, AccuracyTabsAndTheOverlayChoiceAreWholeAt1280x720) {
+    EditorOptions options = testOptions(testFolder("layout-measured"));
+    options.scene = "builtin:roof";
+    EditorHarness h(options, 1280, 720);
+    h.settle();
+    h.click("shadow.cullMode");
+    h.click("shadow.cullMode=back");  // the roof's caster is culled: a cause with a long name and remedy
+    h.click("accuracy.measure");
+    const auto start = std::chrono::steady_clock::now();
+    while (h.state().accuracy.running &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 240.0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        h.frame();
+    }
+    h.frame(2);
+    ASSERT_TRUE(h.state().accuracy.report.has_value()) << h.state().accuracy.error;
+    for (const std::string tab : {"numbers", "causes", "counts", "cost"}) {
+        h.click("accuracy.tab." + tab);
+        h.frame(2);
+        for (const std::string& cut : cutContent()) ADD_FAILURE() << "Accuracy, " << tab << ": " << cut;
+    }
+    h.click("view");
+    h.click("view=accuracy overlay by cause");
+    h.click("accuracy.tab.causes");
+    h.frame(2);
+    const ControlRect combo = h.rect("view");
+    EXPECT_GT(combo.w, ImGui::CalcTextSize("accuracy overlay by cause").x + ImGui::GetFrameHeight())
+        << "the combo cuts its choice";
+    h.saveWindow("layout-1280x720-roof-by-cause");
+}
 
 TEST_F(EditorPanels, DraggingDepthBiasRaisesItAndTheNextFrameRedrawsTheShadowMap) {
     EditorHarness& h = *harness;

@@ -30,7 +30,11 @@ void row(const char* name, const std::string& value, const char* tooltip = nullp
     ImGui::TextUnformatted(name);
     if (tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(value.c_str());
+    // A stretched value column (the numbers table) wraps at the sidebar's edge; a fixed-fit one sizes to its text.
+    if (ImGui::TableGetColumnFlags() & ImGuiTableColumnFlags_WidthStretch)
+        ImGui::TextWrapped("%s", value.c_str());
+    else
+        ImGui::TextUnformatted(value.c_str());
 }
 
 std::string format(const char* fmt, double a, double b = 0.0) {
@@ -46,6 +50,8 @@ void numbersTab(EditorState& state, const AccuracyReport& r) {
         state.controls.recordLastItem("accuracy.coarseMap");
     }
     if (ImGui::BeginTable("numbers", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
         row("acne", format("%.3f %%", r.acnePercent) + "  (" + grouped(c.acne) + " of " + grouped(c.lit) + " lit" +
                         (c.acne ? format(", mean 1-S %.2f)", r.acneSeverity) : ")"),
             "truly lit pixels the tool visibly darkens (S < 1 - 1/255) farther than k texels from the true shadow "
@@ -94,7 +100,7 @@ void causesTab(EditorState& state, const AccuracyReport& r) {
         ImGui::ColorButton(info.key, ImVec4(info.red / 255.0f, info.green / 255.0f, info.blue / 255.0f, 1.0f),
                            ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
         ImGui::SameLine();
-        ImGui::Text("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
+        ImGui::TextWrapped("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
         ImGui::Indent();
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("%s", info.remedy);
