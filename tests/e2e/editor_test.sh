@@ -74,9 +74,10 @@ else fail "no preset at $saved: $(tail -3 editor.err)"; fi
 click tab:Scene && wait_for has_control scene.path
 click scene.path
 xdotool key ctrl+a
-xdotool type --delay 20 "/nonexistent/missing-scene.gltf"
+# Typed at full speed: printable keys reach a text field without a frame each, and every character arrives in order.
+xdotool type --delay 0 "/nonexistent/Missing_Scene-2 (copy).gltf"
 xdotool key Return
-if wait_for grep -q "missing-scene.gltf" editor.err; then
+if wait_for grep -qF "/nonexistent/Missing_Scene-2 (copy).gltf: " editor.err; then
   sleep 0.5
   kill -0 "$app_pid" 2>/dev/null && pass "bad scene path: message, editor still running" || fail "editor died"
 else fail "no message for a bad scene path: $(tail -3 editor.err)"; fi
