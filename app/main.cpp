@@ -89,6 +89,16 @@ int main(int argc, char** argv) {
     measureCmd->add_option("--remeasure-bench", measure.remeasureBench,
                            "then time N live re-measures after a bias change (GPU count) against the CPU path")
         ->check(CLI::Range(1, 10000));
+    measureCmd->add_option("--motion", measure.motion,
+                           "measure flicker instead: camera (translate), camera-turn or light (rotate) every frame");
+    measureCmd->add_option("--frames", measure.frames, "with --motion: frames rendered (pairs = frames - 1; default 10)");
+    measureCmd->add_option("--step", measure.step,
+                           "with --motion: per frame, world units (camera, along its right vector) or degrees "
+                           "(camera-turn, light)");
+    measureCmd->add_option("--direction", measure.direction,
+                           "with --motion: x,y,z = the camera's direction of travel or the rotation axis");
+    measureCmd->add_option("--frames-out", measure.framesOut,
+                           "with --motion: write the worst pair's two frames as PNG into this folder");
 
     cli::TuneOptions tune;
     CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");

@@ -5,6 +5,7 @@
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = 0) uniform sampler2D uDepth;
+uniform bool uReversedZ;  // near 1, far 0: measured as 1 - stored, the unit the picture shows
 layout(std430, binding = 0) buffer Range {
     uint minBits;  // starts at 0xFFFFFFFF: still that when no caster wrote
     uint maxBits;  // starts at 0
@@ -27,6 +28,7 @@ void main() {
             ivec2 p = base + ivec2(x, y);
             if (p.x >= size.x || p.y >= size.y) continue;
             float d = texelFetch(uDepth, p, 0).r;
+            if (uReversedZ) d = 1.0 - d;
             if (d < 1.0) {
                 uint bits = floatBitsToUint(max(d, 0.0));
                 localMin = min(localMin, bits);

@@ -25,7 +25,8 @@ struct LightData {
     vec4 direction;       // xyz: unit direction the light travels; w: cos(half cone) (spot)
     vec4 radiance;        // rgb: colour; w: intensity
     vec4 shadow;          // x: map array, y: layer (2D) or cube index, z: 1 / resolution, w: normal offset (texels)
-    vec4 depth;           // x: near, y: far, z: texel world size (directional) or per unit of depth (spot, point)
+    vec4 depth;           // x: near, y: far, z: texel world size (directional) or per unit of depth (spot, point),
+                          // w: 1 = reversed-Z (the map stores near 1, far 0; its sampler compares GEQUAL), else 0
 };
 #if LIGHT_COUNT > 0
 layout(std140, binding = 0) uniform Lights { LightData uLights[LIGHT_COUNT]; };
@@ -61,11 +62,18 @@ const vec2 TAP_OFFSETS[FILTER_TAPS] = vec2[](FILTER_TAP_OFFSETS);
 #define TAP_OFFSET TAP_OFFSETS[ti]
 #endif
 
-vec3 toLightTexture(mat4 viewProjection, vec3 worldPosition) {
-    vec4 clip = viewProjection * vec4(worldPosition, 1.0);
+// Texture coordinates and window depth in the view's depth convention: GL's [-1, 1] clip depth, or reversed-Z's
+// zero-to-one depth (near 1, far 0). The CPU's copy is LightSpace::textureOf.
+bool reversedZ(LightData L) { return L.depth.w > 0.5; }
+
+vec3 toLightTexture(LightData L, vec3 worldPosition) {
+    vec4 clip = L.viewProjection * vec4(worldPosition, 1.0);
     vec3 ndc = clip.xyz / clip.w;
-    return ndc * 0.5 + 0.5;
+    return vec3(ndc.xy * 0.5 + 0.5, reversedZ(L) ? ndc.z : ndc.z * 0.5 + 0.5);
 }
+
+// Receivers beyond the far plane compare as if on it (far = 1, or 0 reversed).
+float clampToFar(LightData L, float depth) { return reversedZ(L) ? max(depth, 0.0) : min(depth, 1.0); }
 
 // glTF's range window (KHR_lights_punctual's recommended falloff, without the inverse square): 1 with no range.
 float rangeWindow(float distance, float range) {
@@ -75,10 +83,10 @@ float rangeWindow(float distance, float range) {
 }
 
 #if MAP_ARRAYS_2D > 0
-// Fraction of light reaching the point through a 2D view, 1 = lit. Receivers beyond the far plane compare as if on it.
+// Fraction of light reaching the point through a 2D view, 1 = lit.
 float shadow2D(LightData L, vec3 lookup) {
-    vec3 lightTex = toLightTexture(L.viewProjection, lookup);
-    float ref = min(lightTex.z, 1.0);
+    vec3 lightTex = toLightTexture(L, lookup);
+    float ref = clampToFar(L, lightTex.z);
 #if MAP_ARRAYS_2D == 1
     const int map = 0;  // one array: a constant index (a dynamic one is much slower on some drivers, llvmpipe 3x)
 #else
@@ -94,12 +102,14 @@ float shadow2D(LightData L, vec3 lookup) {
 #if MAP_ARRAYS_CUBE > 0
 // The stored value of a cube face is that face's perspective depth, so the reference is the receiver's depth in the
 // face the tap's direction selects: its distance along that face's axis, through the same near/far mapping.
-float faceDepth(vec3 fromLight, vec3 tapDirection, float near, float far) {
+float faceDepth(vec3 fromLight, vec3 tapDirection, LightData L) {
     vec3 a = abs(tapDirection);
     vec3 axis = a.x >= a.y && a.x >= a.z ? vec3(sign(tapDirection.x), 0.0, 0.0)
               : a.y >= a.z                ? vec3(0.0, sign(tapDirection.y), 0.0)
                                           : vec3(0.0, 0.0, sign(tapDirection.z));
+    float near = L.depth.x, far = L.depth.y;
     float z = max(dot(fromLight, axis), near);
+    if (reversedZ(L)) return near * (far - z) / (z * (far - near));  // zero-to-one, near 1, far 0
     return ((far + near) / (far - near) - 2.0 * far * near / ((far - near) * z)) * 0.5 + 0.5;
 }
 
@@ -120,7 +130,7 @@ float shadowCube(LightData L, vec3 lookup) {
     FOR_EACH_TAP {
         vec2 o = TAP_OFFSET * uFilterScale * texelAtMajor;
         vec3 d = v + o.x * s + o.y * t;
-        float ref = min(faceDepth(v, d, L.depth.x, L.depth.y), 1.0);
+        float ref = clampToFar(L, faceDepth(v, d, L));
         sum += texture(uMapsCube[map], vec4(d, L.shadow.y), ref);
     }
     return sum / float(FILTER_TAPS);
@@ -240,7 +250,8 @@ void main() {
 #if LIGHT_COUNT > 0
     LightData first = uLights[0];
     if (DIR_LIGHTS > 0) {
-        depth = toLightTexture(first.viewProjection, vWorldPosition).z;
+        depth = toLightTexture(first, vWorldPosition).z;
+        if (reversedZ(first)) depth = 1.0 - depth;  // near dark in both conventions
     } else {
         vec3 fromLight = vWorldPosition - first.position.xyz;
         float viewDepth = SPOT_LIGHTS > 0 ? dot(fromLight, first.direction.xyz) : length(fromLight);

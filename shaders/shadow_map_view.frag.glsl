@@ -9,6 +9,7 @@ uniform vec2 uViewSize;    // pixels
 uniform vec2 uRange;       // shown value at black, at white
 uniform bool uLinearize;   // perspective depth -> linear between near (0) and far (1)
 uniform vec2 uNearFar;
+uniform bool uReversedZ;   // the map stores near 1, far 0: shown as 1 - stored (near dark in both conventions)
 uniform float uGridTexelPixels;  // view pixels per texel when the grid is on, else 0
 
 layout(location = 0) out vec4 outColor;
@@ -33,6 +34,7 @@ void main() {
     ivec2 size = textureSize(uDepth, 0);
     vec2 texelPos = uv * vec2(size);
     float stored = texelFetch(uDepth, min(ivec2(texelPos), size - 1), 0).r;
+    if (uReversedZ) stored = 1.0 - stored;
     vec3 color;
     if (stored >= 1.0) {
         color = kNoCaster;

@@ -45,9 +45,11 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
     out.unsetf(std::ios::floatfield);
 }
 
-std::string legendText(OverlayKind kind) {
+std::string legendText(OverlayKind kind) { return legendText(kind == OverlayKind::Error ? errorLegend() : causeLegend()); }
+
+std::string legendText(const std::vector<LegendEntry>& legend) {
     std::string text;
-    for (const LegendEntry& e : kind == OverlayKind::Error ? errorLegend() : causeLegend()) {
+    for (const LegendEntry& e : legend) {
         char entry[120];
         std::snprintf(entry, sizeof entry, "%s#%02x%02x%02x = %s", text.empty() ? "" : ", ", e.red, e.green, e.blue,
                       e.name);
@@ -93,18 +95,11 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
         causes[causeInfo(cause).key] = {{"pixels", c.causePixels[std::size_t(cause)]},
                                         {"wrong", c.causeWrong[std::size_t(cause)]},
                                         {"percentOfWrong", r.causePercentOfWrong(cause)}};
-    return {
+    nlohmann::json json = numbersToJson(r);
+    json.update(nlohmann::json{
         {"metricsVersion", r.metricsVersion},
         {"width", r.width},
         {"height", r.height},
-        {"acnePercent", r.acnePercent},
-        {"acneSeverity", r.acneSeverity},
-        {"leakPercent", r.leakPercent},
-        {"wrongPixelsPercent", r.wrongPercent},
-        {"meanError", r.meanError},
-        {"edgeErrorP95Texels", r.edgeErrorP95Texels},
-        {"edgeErrorP95World", r.edgeErrorP95World},
-        {"edgeErrorP95ScreenPixels", r.edgeErrorP95ScreenPixels},
         {"coarseMap", !r.coarseMapWarning.empty()},
         {"coarseMapWarning", r.coarseMapWarning},
         {"causes", causes},
@@ -123,6 +118,20 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"raysPerSecond", k.raysPerSecond}, {"threads", k.threads}, {"boundaryMs", k.boundaryMs},
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
           {"toolFrameMs", k.toolFrameMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
+    });
+    return json;
+}
+
+nlohmann::json numbersToJson(const AccuracyNumbers& n) {
+    return {
+        {"acnePercent", n.acnePercent},
+        {"acneSeverity", n.acneSeverity},
+        {"leakPercent", n.leakPercent},
+        {"wrongPixelsPercent", n.wrongPercent},
+        {"meanError", n.meanError},
+        {"edgeErrorP95Texels", n.edgeErrorP95Texels},
+        {"edgeErrorP95World", n.edgeErrorP95World},
+        {"edgeErrorP95ScreenPixels", n.edgeErrorP95ScreenPixels},
     };
 }
 

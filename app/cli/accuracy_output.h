@@ -15,8 +15,11 @@ namespace shadowlab::cli {
 void printAccuracy(std::ostream& out, const AccuracyReport& report);
 // "red = acne, blue = leak, ..." for a legend (accuracy_overlay.h's colours).
 std::string legendText(OverlayKind kind);
+std::string legendText(const std::vector<LegendEntry>& legend);
 void printAccuracyCost(std::ostream& out, const AccuracyReport& report);
 nlohmann::json accuracyToJson(const AccuracyReport& report);
+// The headline numbers (acne, severity, leak, wrong pixels, mean error, edge error), as accuracyToJson names them.
+nlohmann::json numbersToJson(const AccuracyNumbers& numbers);
 
 // "lights.1 (spot)": how reports name a light.
 std::string lightLabel(std::size_t index, LightType type);

@@ -5,6 +5,7 @@
 #include "accuracy/light_isolation.h"
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
+#include "cli/measure_motion.h"
 #include "cli/remeasure_bench.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
@@ -18,6 +19,7 @@
 namespace shadowlab::cli {
 
 int runMeasure(const MeasureOptions& options) {
+    if (wantsMotion(options)) return runMeasureMotion(options);
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);

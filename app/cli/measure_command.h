@@ -2,7 +2,8 @@
 // `shadowlab measure`: how wrong one view's shadows are against the exact reference (acne %, leak %, edge error,
 // the counts behind them, the cause of every mismatched pixel, what the reference cost), optionally as JSON and as
 // overlay PNGs (by error, by cause). Every shadow-casting light is measured alone, then the whole picture
-// (renderer/accuracy/light_accuracy.h); --light N measures only light N.
+// (renderer/accuracy/light_accuracy.h); --light N measures only light N. With --motion, flicker instead
+// (measure_motion.h).
 #include <string>
 #include <vector>
 
@@ -19,6 +20,12 @@ struct MeasureOptions {
     std::string causeOverlay;  // optional PNG: every mismatched pixel in its cause's colour
     int light = -1;            // --light N: only light N (index into the effective lights); -1 = every casting one
     int remeasureBench = 0;    // > 0: time that many live re-measures after a bias change (remeasure_bench.h)
+    // Flicker (measure_motion.h): empty motion = an ordinary measurement; the others need --motion.
+    std::string motion;        // "camera" or "light"
+    int frames = -1;           // -1: not given (10)
+    std::string step;          // as typed: parsed by measure_motion so "nan" or "1e999" get a clear message
+    std::string direction;     // "x,y,z": camera's direction of travel / light's rotation axis
+    std::string framesOut;     // folder: the worst pair's two frames as PNG
 };
 
 // Exit code 0 unless it failed (bad input, no GL, a file that cannot be written).

@@ -5,6 +5,7 @@
 #include "accuracy/accuracy_meter.h"
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/bias_tuner.h"
+#include "accuracy/flicker.h"
 #include "frame/camera.h"
 #include "gl/gl_objects.h"
 #include "scene/scene.h"
@@ -67,6 +68,20 @@ struct AccuracyState {
     std::optional<TuneResult> tune;  // the newest finished search (its report is also `report`)
     double maxAcnePercent = 0.1;
     std::size_t stepsFollowed = 0;   // the path table scrolled to its newest row when it grew
+
+    // Flicker (the panel's Flicker tab): the motion to play, the newest result (its own, beside `report`) and its
+    // overlay on the GPU.
+    Motion flickerMotion = [] {
+        Motion m;
+        m.kind = MotionKind::Light;
+        m.step = motionInfo(m.kind).typicalStep;
+        m.frames = 8;
+        return m;
+    }();
+    bool runningFlicker = false;
+    std::optional<FlickerReport> flicker;
+    double flickerSeconds = 0.0;
+    gl::Texture flickerTexture;
 
     // The overlay picture on the GPU (uploaded once per report).
     gl::Texture overlayTexture;

@@ -128,6 +128,14 @@ AccuracyJobResult AccuracyWorker::run(const AccuracyJob& job, std::uint64_t id) 
     try {
         if (job.kind == AccuracyJobKind::Live) {
             result.report = gl_->meter.remeasure(*job.scene, job.settings, job.camera, job.width, job.height);
+        } else if (job.kind == AccuracyJobKind::Flicker) {
+            progress_.setStage("playing the motion");
+            FlickerReport flicker = measureFlicker(gl_->meter, *job.scene, job.settings, job.camera, job.width,
+                                                   job.height, job.motion, &progress_);
+            result.report.ok = flicker.ok;
+            result.report.cancelled = flicker.cancelled;
+            result.report.error = flicker.error;
+            result.flicker = std::move(flicker);
         } else if (job.kind == AccuracyJobKind::Measure) {
             progress_.setStage("measuring");
             result.report = gl_->meter.measure(*job.scene, job.settings, job.camera, job.width, job.height, &progress_);

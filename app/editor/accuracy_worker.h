@@ -6,6 +6,7 @@
 // the UI thread cannot free or change what the worker reads. Destruction cancels the job and joins the thread.
 #include "accuracy/accuracy_meter.h"
 #include "accuracy/bias_tuner.h"
+#include "accuracy/flicker.h"
 #include "frame/camera.h"
 #include "scene/scene.h"
 #include "settings/settings.h"
@@ -22,8 +23,8 @@
 namespace shadowlab::editor {
 
 // Live: the numbers alone, counted on the GPU against the reference an earlier Measure cached (AccuracyMeter::
-// remeasure): one tool frame, for Auto while a slider moves.
-enum class AccuracyJobKind { Measure, SuggestBias, Live };
+// remeasure): one tool frame, for Auto while a slider moves. Flicker: the view played under a motion (flicker.h).
+enum class AccuracyJobKind { Measure, SuggestBias, Live, Flicker };
 
 struct AccuracyJob {
     AccuracyJobKind kind = AccuracyJobKind::Measure;
@@ -32,6 +33,7 @@ struct AccuracyJob {
     Camera camera;
     int width = 0, height = 0;
     double maxAcnePercent = 0.1;  // SuggestBias: the acne limit
+    Motion motion;                // Flicker: what moves, by how much, for how many frames
 };
 
 struct AccuracyJobResult {
@@ -39,6 +41,7 @@ struct AccuracyJobResult {
     AccuracyJobKind kind = AccuracyJobKind::Measure;
     AccuracyReport report;            // Measure: the view; SuggestBias: the best setting's measurement
     std::optional<TuneResult> tune;   // SuggestBias only
+    std::optional<FlickerReport> flicker;  // Flicker only (report then carries only ok / error)
     double seconds = 0.0;             // wall time of the job on the worker
 };
 

@@ -79,6 +79,7 @@ public:
     void saveProbeJson() override;
     void measureAccuracy() override;
     void suggestBias() override;
+    void measureFlicker() override;
     void cancelAccuracy() override;
     std::optional<AccuracyViewKey> currentView() const override { return accuracyKey(); }
 
@@ -111,6 +112,7 @@ private:
     void startAccuracyJob(AccuracyJobKind kind);
     void pollAccuracy();
     void adoptAccuracyResult(AccuracyJobResult result);
+    void adoptFlickerResult(FlickerReport flicker, double seconds);
     void startLiveJob(const AccuracyViewKey& key);      // Auto's live count on the worker
     void adoptLiveResult(AccuracyJobResult result);
     void uploadAccuracyOverlay();

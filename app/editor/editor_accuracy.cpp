@@ -19,6 +19,7 @@ std::optional<AccuracyViewKey> Editor::accuracyKey() const {
 
 void Editor::measureAccuracy() { startAccuracyJob(AccuracyJobKind::Measure); }
 void Editor::suggestBias() { startAccuracyJob(AccuracyJobKind::SuggestBias); }
+void Editor::measureFlicker() { startAccuracyJob(AccuracyJobKind::Flicker); }
 
 void Editor::cancelAccuracy() {
     if (!accuracyWorker_->running()) return;
@@ -45,6 +46,7 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
     job.width = key->width;
     job.height = key->height;
     job.maxAcnePercent = a.maxAcnePercent;
+    job.motion = a.flickerMotion;
     if (accuracyWorker_->start(std::move(job)) == 0) {
         state_.say("accuracy: a job is still running (Cancel it first)", true);
         return;
@@ -52,6 +54,7 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
     accuracyJobKey_ = key;
     a.running = true;
     a.runningTune = kind == AccuracyJobKind::SuggestBias;
+    a.runningFlicker = kind == AccuracyJobKind::Flicker;
     a.progress = 0.0f;
     a.stage = "starting";
     a.error.clear();
@@ -150,6 +153,10 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
     }
     a.stage = "done";
     for (const std::string& w : result.report.warnings) state_.say("accuracy: " + w, true);
+    if (result.flicker) {
+        adoptFlickerResult(std::move(*result.flicker), result.seconds);
+        return;
+    }
 
     if (result.tune) {
         const TuneResult& tune = *result.tune;
@@ -201,6 +208,32 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
     a.reportFromSearch = result.kind == AccuracyJobKind::SuggestBias;
     ++a.measurements;
     uploadAccuracyOverlay();
+}
+
+void Editor::adoptFlickerResult(FlickerReport flicker, double seconds) {
+    AccuracyState& a = state_.accuracy;
+    for (const std::string& w : flicker.warnings) state_.say("flicker: " + w, true);
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "flicker: max %.3f %% (mean %.3f %%) beside V changed max %.3f %%, %s step %g = %.3g texels, %d "
+                  "frames (%.2f s)",
+                  flicker.maxFlickerPercent, flicker.meanFlickerPercent, flicker.maxVChangedPercent,
+                  motionName(flicker.motion.kind), flicker.motion.step, flicker.stepTexels, flicker.motion.frames,
+                  seconds);
+    state_.say(text);
+    const std::size_t bytes = std::size_t(flicker.width) * std::size_t(flicker.height) * 4;
+    if (flicker.width > 0 && flicker.height > 0 && flicker.overlayRgba.size() == bytes) {
+        a.flickerTexture = gl::createTexture(GL_TEXTURE_2D);
+        const GLuint id = a.flickerTexture.id();
+        glTextureStorage2D(id, 1, GL_RGBA8, flicker.width, flicker.height);
+        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTextureSubImage2D(id, 0, 0, 0, flicker.width, flicker.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                            flicker.overlayRgba.data());
+    }
+    a.flicker = std::move(flicker);
+    a.flickerSeconds = seconds;
 }
 
 void Editor::uploadAccuracyOverlay() {

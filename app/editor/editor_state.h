@@ -163,6 +163,7 @@ public:
     // Accuracy: measure the current view, search for a bias (applied to the settings when done), cancel either.
     virtual void measureAccuracy() = 0;
     virtual void suggestBias() = 0;
+    virtual void measureFlicker() = 0;  // plays accuracy.flickerMotion on the current view
     virtual void cancelAccuracy() = 0;
     // What a measurement now would be made for (settings, camera, scene, viewport size); none before a viewport.
     virtual std::optional<AccuracyViewKey> currentView() const = 0;

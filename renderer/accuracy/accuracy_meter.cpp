@@ -221,6 +221,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height);
     if (!stats.ok) return fail(stats.error);
     report.warnings = stats.warnings;
+    for (const ShadowViewStats& view : stats.views) report.shadowViewsRendered += view.ran ? 1 : 0;
     const std::size_t count = std::size_t(width) * std::size_t(height);
     std::vector<float> frame(count * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -372,6 +373,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
                         boundary, settings.ambient);
     report.pixelClass = m.visibility.classes;
     report.pixelShadow = shadowFactor;
+    report.pixelLambert = m.visibility.lambert;
     report.pixelCause = metrics.causes;
     report.pixelMark = metrics.marks;
     report.pixelMeasured = metrics.measured;

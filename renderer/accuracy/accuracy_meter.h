@@ -137,6 +137,10 @@ struct AccuracyReport : AccuracyNumbers {
     std::vector<PixelMark> pixelMark;          // for combining lights (light_accuracy.h)
     std::vector<std::uint8_t> pixelMeasured;   // 1 where the pixel is scored for this light
     std::vector<std::uint8_t> pixelOnBoundary; // 1 on the true boundary's thin line
+    std::vector<float> pixelLambert;           // max(n . l, 0): the overlays' dimmed picture (flicker.h draws one)
+
+    // Shadow views the tool frame's planner rendered (0: every map was reused; flicker.h checks it under camera motion).
+    std::size_t shadowViewsRendered = 0;
 
     double causePercentOfWrong(MismatchCause cause) const;  // share of wrong pixels this cause explains
     // The cause of the most mismatched pixels beyond k (else "within k of a true edge"; None when nothing mismatches).

@@ -33,6 +33,12 @@ OverlayRgb shadedColour(const LegendEntry& entry, float lambert);
 // Whether `rgb` is `entry`'s colour at some shading (for tests and tools that read an overlay picture back).
 bool isShadeOf(const LegendEntry& entry, const std::uint8_t* rgb);
 
+// The picture every overlay colours over, RGBA8, row 0 = top: background dark, every surface grey by the tool's
+// S x Lambert with the ambient term.
+std::vector<std::uint8_t> dimmedPicture(int width, int height, const std::vector<PixelClass>& classes,
+                                        const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
+                                        float ambient);
+
 // RGBA8, row 0 = top (the buffers' order).
 std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, const std::vector<PixelClass>& classes,
                                       const std::vector<float>& shadowFactor, const std::vector<float>& lambert,

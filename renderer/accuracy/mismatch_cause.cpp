@@ -39,7 +39,8 @@ bool outsideVolume(const ReferenceLight& reference, const LightSpace& light, con
     const glm::dvec4 clip = light.viewProjection() * glm::dvec4(p, 1.0);
     if (!(clip.w > 0.0)) return true;
     const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
-    return std::abs(ndc.x) > 1.0 || std::abs(ndc.y) > 1.0 || ndc.z > 1.0;
+    // Beyond the far plane in either depth convention (reversed-Z: far is depth 0).
+    return std::abs(ndc.x) > 1.0 || std::abs(ndc.y) > 1.0 || light.normalDepth(light.windowDepth(clip)) > 1.0;
 }
 
 }  // namespace

@@ -57,8 +57,17 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
                                                            : api == ExportFormat::Vulkan ? "Vulkan" : "OpenGL 4.5")
       << "\n";
     o << c << "Shadow map: " << s.resolution << "x" << s.resolution << ", " << formatName(e, api)
-      << "; depth test LESS, cleared to 1.0: NOT reversed-Z.\n";
-    if (api == ExportFormat::GL)
+      << (e.reversedZ ? "; depth test GREATER, cleared to 0.0: REVERSED-Z (near 1, far 0).\n"
+                      : "; depth test LESS, cleared to 1.0: NOT reversed-Z.\n");
+    if (e.reversedZ)
+        o << c << "Depth range: ShadowLab's reversed-Z light matrix is zero-to-one with near and far swapped (near -> 1,\n"
+          << c << "  far -> 0)" << (api == ExportFormat::GL ? ", drawn under glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)" : "")
+          << ": window depth = z_ndc. Use it as is.\n"
+          << c << "Bias sign: ShadowLab's DepthBias " << number(s.depthBias) << ", SlopeScaledDepthBias "
+          << number(s.slopeScaledDepthBias) << " and DepthBiasClamp " << number(s.depthBiasClamp)
+          << " push away from the light,\n"
+          << c << "  which is toward 0 here: the rasterizer values below are NEGATED (the same bias in depth steps).\n";
+    else if (api == ExportFormat::GL)
         o << c << "Depth range: ShadowLab's light matrix has GL clip depth [-1,1] (no glClipControl), glDepthRange(0,1):\n"
           << c << "  window depth = 0.5 * z_ndc + 0.5 in [0,1]. Polygon offset acts on window depth, so with\n"
           << c << "  glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) and a [0,1] matrix the same numbers give the same bias.\n";
@@ -100,7 +109,11 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
             o << "16 Poisson-disk bilinear comparisons within " << number(f.poissonRadius) << " texels, averaged";
             break;
     }
-    o << "; compare: lit when receiver depth <= stored depth (LEQUAL).\n";
+    o << (e.reversedZ ? "; compare: lit when receiver depth >= stored depth (GEQUAL).\n"
+                      : "; compare: lit when receiver depth <= stored depth (LEQUAL).\n");
+    if (e.reversedZ && e.sampler.addressMode == AddressMode::ClampToBorder)
+        o << c << "Border depth: ShadowLab's sampler.borderDepth " << number(e.sampler.borderDepth) << " (1 = lit outside) is stored as "
+          << number(e.borderStored) << " in reversed-Z.\n";
     return o.str();
 }
 
@@ -134,14 +147,13 @@ const char* addressName(AddressMode mode, ExportFormat api) {
 
 std::string d3d(const ShadowExport& e, ExportFormat api) {
     const bool d3d12 = api == ExportFormat::D3D12;
-    const ShadowMapSettings& s = e.shadow;
     const std::string p = d3d12 ? "D3D12_" : "D3D11_";
     std::ostringstream o;
     o << conventions(e, api, "// ");
     if (e.d3dDepthBiasError != 0.0)
-        o << "// DepthBias is an INT here: " << number(s.depthBias) << " rounds to " << e.d3dDepthBias << " (off by "
+        o << "// DepthBias is an INT here: " << number(e.rasterDepthBias) << " rounds to " << e.d3dDepthBias << " (off by "
           << number(e.d3dDepthBiasError) << " r)."
-          << (d3d12 ? " D3D12_RASTERIZER_DESC1/DESC2 (Agility SDK pipeline state streams) take FLOAT DepthBias = " + floatLiteral(s.depthBias) +
+          << (d3d12 ? " D3D12_RASTERIZER_DESC1/DESC2 (Agility SDK pipeline state streams) take FLOAT DepthBias = " + floatLiteral(e.rasterDepthBias) +
                           " exactly."
                     : std::string(" Use a format with a finer r, or scale SlopeScaledDepthBias instead."))
           << "\n";
@@ -150,20 +162,23 @@ std::string d3d(const ShadowExport& e, ExportFormat api) {
       << "shadowRaster.CullMode = " << d3dCull(e, d3d12) << ";\n"
       << "shadowRaster.FrontCounterClockwise = TRUE;\n"
       << "shadowRaster.DepthBias = " << e.d3dDepthBias << ";\n"
-      << "shadowRaster.DepthBiasClamp = " << floatLiteral(s.depthBiasClamp) << ";\n"
-      << "shadowRaster.SlopeScaledDepthBias = " << floatLiteral(s.slopeScaledDepthBias) << ";\n"
+      << "shadowRaster.DepthBiasClamp = " << floatLiteral(e.rasterDepthBiasClamp) << ";\n"
+      << "shadowRaster.SlopeScaledDepthBias = " << floatLiteral(e.rasterSlopeScaledDepthBias) << ";\n"
       << "shadowRaster.DepthClipEnable = " << (e.depthClamp ? "FALSE" : "TRUE") << ";  // FALSE = depth clamp\n"
       << (d3d12 ? "" : "shadowRaster.ScissorEnable = FALSE;\n") << "shadowRaster.MultisampleEnable = FALSE;\n"
       << "shadowRaster.AntialiasedLineEnable = FALSE;\n\n";
     const char* filter = e.linearCompare ? "FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT" : "FILTER_COMPARISON_MIN_MAG_MIP_POINT";
     const char* address = addressName(e.sampler.addressMode, api);
-    const std::string border = floatLiteral(e.sampler.borderDepth);
+    const std::string border = floatLiteral(e.borderStored);
     o << p << "SAMPLER_DESC shadowSampler = {};\n"
       << "shadowSampler.Filter = " << p << filter << ";\n"
       << "shadowSampler.AddressU = " << address << ";\n"
       << "shadowSampler.AddressV = " << address << ";\n"
       << "shadowSampler.AddressW = " << address << ";\n"
-      << "shadowSampler.ComparisonFunc = " << p << (d3d12 ? "COMPARISON_FUNC_LESS_EQUAL" : "COMPARISON_LESS_EQUAL") << ";\n"
+      << "shadowSampler.ComparisonFunc = " << p
+      << (e.reversedZ ? (d3d12 ? "COMPARISON_FUNC_GREATER_EQUAL" : "COMPARISON_GREATER_EQUAL")
+                      : (d3d12 ? "COMPARISON_FUNC_LESS_EQUAL" : "COMPARISON_LESS_EQUAL"))
+      << ";  // depth state: " << (e.reversedZ ? "GREATER, clear 0.0" : "LESS, clear 1.0") << "\n"
       << "shadowSampler.BorderColor[0] = shadowSampler.BorderColor[1] = shadowSampler.BorderColor[2] = "
          "shadowSampler.BorderColor[3] = " << border << ";\n"
       << "shadowSampler.MinLOD = 0.0f;\nshadowSampler.MaxLOD = 0.0f;\nshadowSampler.MaxAnisotropy = 1;\n";
@@ -194,18 +209,19 @@ std::string vulkan(const ShadowExport& e) {
       << "shadowRaster.cullMode = " << cull << ";\n"
       << "shadowRaster.frontFace = VK_FRONT_FACE_CLOCKWISE;\n"
       << "shadowRaster.depthBiasEnable = " << (bias ? "VK_TRUE" : "VK_FALSE") << ";\n"
-      << "shadowRaster.depthBiasConstantFactor = " << floatLiteral(s.depthBias) << ";\n"
-      << "shadowRaster.depthBiasClamp = " << floatLiteral(s.depthBiasClamp) << ";\n"
-      << "shadowRaster.depthBiasSlopeFactor = " << floatLiteral(s.slopeScaledDepthBias) << ";\n"
+      << "shadowRaster.depthBiasConstantFactor = " << floatLiteral(e.rasterDepthBias) << ";\n"
+      << "shadowRaster.depthBiasClamp = " << floatLiteral(e.rasterDepthBiasClamp) << ";\n"
+      << "shadowRaster.depthBiasSlopeFactor = " << floatLiteral(e.rasterSlopeScaledDepthBias) << ";\n"
       << "shadowRaster.lineWidth = 1.0f;\n"
-      << "// Depth-stencil state: depthTestEnable = VK_TRUE, depthWriteEnable = VK_TRUE, depthCompareOp = VK_COMPARE_OP_LESS.\n\n";
+      << "// Depth-stencil state: depthTestEnable = VK_TRUE, depthWriteEnable = VK_TRUE, depthCompareOp = "
+      << (e.reversedZ ? "VK_COMPARE_OP_GREATER; clear depth 0.0.\n\n" : "VK_COMPARE_OP_LESS; clear depth 1.0.\n\n");
     const char* filter = e.linearCompare ? "VK_FILTER_LINEAR" : "VK_FILTER_NEAREST";
     const char* address = addressName(e.sampler.addressMode, ExportFormat::Vulkan);
     std::string border = "VK_BORDER_COLOR_FLOAT_CUSTOM_EXT";
-    if (e.sampler.borderDepth == 1.0f) border = "VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE";
-    if (e.sampler.borderDepth == 0.0f) border = "VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK";
+    if (e.borderStored == 1.0f) border = "VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE";
+    if (e.borderStored == 0.0f) border = "VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK";
     if (border == "VK_BORDER_COLOR_FLOAT_CUSTOM_EXT")
-        o << "// Border depth " << floatLiteral(e.sampler.borderDepth)
+        o << "// Border depth " << floatLiteral(e.borderStored)
           << ": chain VkSamplerCustomBorderColorCreateInfoEXT (VK_EXT_custom_border_color) with that value.\n";
     o << "VkSamplerCreateInfo shadowSampler = {VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};\n"
       << "shadowSampler.magFilter = " << filter << ";\n"
@@ -215,7 +231,7 @@ std::string vulkan(const ShadowExport& e) {
       << "shadowSampler.addressModeV = " << address << ";\n"
       << "shadowSampler.addressModeW = " << address << ";\n"
       << "shadowSampler.compareEnable = VK_TRUE;\n"
-      << "shadowSampler.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;\n"
+      << "shadowSampler.compareOp = " << (e.reversedZ ? "VK_COMPARE_OP_GREATER_OR_EQUAL" : "VK_COMPARE_OP_LESS_OR_EQUAL") << ";\n"
       << "shadowSampler.borderColor = " << border << ";\n"
       << "shadowSampler.maxLod = 0.0f;\n";
     return o.str();
@@ -229,7 +245,11 @@ std::string gl(const ShadowExport& e) {
         o << "// GL leaves a UNORM format's r to the implementation; Mesa and the common drivers use 1/(2^n - 1).\n";
     o << "glTextureStorage2D(shadowMap, 1, " << formatName(e, ExportFormat::GL) << ", " << s.resolution << ", "
       << s.resolution << ");\n";
-    o << "glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_LESS);\nglClearDepth(1.0);\n";
+    if (e.reversedZ)
+        o << "glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // while drawing the map; restore GL_NEGATIVE_ONE_TO_ONE after\n"
+          << "glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_GREATER);\nglClearDepth(0.0);\n";
+    else
+        o << "glEnable(GL_DEPTH_TEST);\nglDepthFunc(GL_LESS);\nglClearDepth(1.0);\n";
     o << (e.depthClamp ? "glEnable(GL_DEPTH_CLAMP);\n" : "glDisable(GL_DEPTH_CLAMP);\n");
     if (s.cullMode == CullMode::None)
         o << "glDisable(GL_CULL_FACE);\n";
@@ -242,12 +262,12 @@ std::string gl(const ShadowExport& e) {
         o << "glEnable(GL_POLYGON_OFFSET_FILL);\n"
           << "// factor = SlopeScaledDepthBias, units = DepthBias, clamp = DepthBiasClamp (GL 4.6 or\n"
           << "// GL_EXT_polygon_offset_clamp; without either: glPolygonOffset(factor, units), no clamp).\n"
-          << "glPolygonOffsetClamp(" << floatLiteral(s.slopeScaledDepthBias) << ", " << floatLiteral(s.depthBias) << ", "
-          << floatLiteral(s.depthBiasClamp) << ");\n";
+          << "glPolygonOffsetClamp(" << floatLiteral(e.rasterSlopeScaledDepthBias) << ", "
+          << floatLiteral(e.rasterDepthBias) << ", " << floatLiteral(e.rasterDepthBiasClamp) << ");\n";
     }
     const char* filter = e.linearCompare ? "GL_LINEAR" : "GL_NEAREST";
     const char* address = addressName(e.sampler.addressMode, ExportFormat::GL);
-    const std::string border = floatLiteral(e.sampler.borderDepth);
+    const std::string border = floatLiteral(e.borderStored);
     o << "\nconst GLfloat shadowBorder[4] = {" << border << ", " << border << ", " << border << ", " << border << "};\n"
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_WRAP_S, " << address << ");\n"
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_WRAP_T, " << address << ");\n"
@@ -255,7 +275,7 @@ std::string gl(const ShadowExport& e) {
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_MIN_FILTER, " << filter << ");\n"
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_MAG_FILTER, " << filter << ");\n"
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);\n"
-      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);\n";
+      << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_FUNC, " << (e.reversedZ ? "GL_GEQUAL" : "GL_LEQUAL") << ");\n";
     return o.str();
 }
 
@@ -268,17 +288,21 @@ std::string json(const ShadowExport& e) {
                   {"float", e.floatDepth},
                   {"resolution", s.resolution},
                   {"windowDepthRange", {0, 1}},
-                  {"shadowLabClipDepthRange", {-1, 1}},
-                  {"reversedZ", false},
-                  {"compare", "LESS, cleared to 1"},
+                  {"shadowLabClipDepthRange", e.reversedZ ? nlohmann::json{0, 1} : nlohmann::json{-1, 1}},
+                  {"reversedZ", e.reversedZ},
+                  {"compare", e.reversedZ ? "GREATER, cleared to 0" : "LESS, cleared to 1"},
                   {"minimumResolvableDifference", e.depthStep},
                   {"minimumResolvableDifferenceRule",
                    e.floatDepth ? "2^(exponent(max depth of the primitive) - 23); the value is for depths in [0.5,1)"
                                 : "1/(2^bits - 1)"}};
-    j["rasterizer"] = {{"depthBias", s.depthBias},
+    // The API's values: ShadowLab's settings negated for reversed-Z (shadowLabBias keeps the settings).
+    j["rasterizer"] = {{"depthBias", e.rasterDepthBias},
                        {"d3dDepthBiasInt", e.d3dDepthBias},
-                       {"slopeScaledDepthBias", s.slopeScaledDepthBias},
-                       {"depthBiasClamp", s.depthBiasClamp},
+                       {"slopeScaledDepthBias", e.rasterSlopeScaledDepthBias},
+                       {"depthBiasClamp", e.rasterDepthBiasClamp},
+                       {"shadowLabBias", {{"depthBias", s.depthBias},
+                                          {"slopeScaledDepthBias", s.slopeScaledDepthBias},
+                                          {"depthBiasClamp", s.depthBiasClamp}}},
                        {"cullMode", s.cullMode == CullMode::Back ? "back" : s.cullMode == CullMode::Front ? "front" : "none"},
                        {"frontFace", "counter-clockwise"},
                        {"depthClamp", e.depthClamp}};
@@ -300,7 +324,8 @@ std::string json(const ShadowExport& e) {
                                                                               : "border";
     j["sampler"] = {{"addressMode", address},
                     {"borderDepth", e.sampler.borderDepth},
-                    {"compare", "LEQUAL"},
+                    {"borderStored", e.borderStored},  // what the sampler holds: 1 - borderDepth for reversed-Z
+                    {"compare", e.reversedZ ? "GEQUAL" : "LEQUAL"},
                     {"filter", e.linearCompare ? "linear" : "nearest"}};
     const char* kind = e.filter.kind == FilterKind::Point         ? "point"
                        : e.filter.kind == FilterKind::Hardware2x2 ? "hardware2x2"

@@ -26,6 +26,14 @@ ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light,
     e.filter = settings.filter;
     e.depthClamp = settings.lights[0].projection.depthClamp;
     e.perspective = light.perspective;
+    e.reversedZ = light.reversedZ;
+    const ShadowMapSettings& s = settings.lights[0].shadow;
+    e.biasSign = light.reversedZ ? -1.0f : 1.0f;
+    const auto signedValue = [&](float v) { return v == 0.0f ? 0.0f : e.biasSign * v; };  // no "-0.0f" in snippets
+    e.rasterDepthBias = signedValue(s.depthBias);
+    e.rasterSlopeScaledDepthBias = signedValue(s.slopeScaledDepthBias);
+    e.rasterDepthBiasClamp = signedValue(s.depthBiasClamp);
+    e.borderStored = conventionBorderDepth(settings.sampler.borderDepth, light.reversedZ);
     switch (settings.lights[0].shadow.format) {
         case DepthFormat::D16: e.depthBits = 16; e.floatDepth = false; break;
         case DepthFormat::D24: e.depthBits = 24; e.floatDepth = false; break;
@@ -33,8 +41,8 @@ ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light,
     }
     // UNORM: r = 1 / (2^n - 1). Float: r = 2^(exponent(max depth of the primitive) - 23), 2^-24 for depths in [0.5, 1).
     e.depthStep = depthStepAt(settings.lights[0].shadow.format, 0.75);  // D32F: the step for depths in [0.5, 1)
-    e.d3dDepthBias = int(std::lround(double(settings.lights[0].shadow.depthBias)));
-    e.d3dDepthBiasError = double(e.d3dDepthBias) - double(settings.lights[0].shadow.depthBias);
+    e.d3dDepthBias = int(std::lround(double(e.rasterDepthBias)));
+    e.d3dDepthBiasError = double(e.d3dDepthBias) - double(e.rasterDepthBias);
     e.texelWorldSize = light.texelWorldSize;
     e.normalOffsetWorld = double(settings.lights[0].shadow.normalOffset) * light.texelWorldSize;
     e.nearPlane = light.nearPlane;

@@ -132,7 +132,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     const glm::dmat4 view = camera.view(stats.renderOrigin);
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
-    // Each casting light's views, grouped into map arrays by (2D or cube, resolution, format).
+    // Each casting light's views, grouped into map arrays by (2D or cube, resolution, format, depth convention).
     struct PlannedView {
         std::size_t light;
         int face;
@@ -170,7 +170,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             light.shadow.resolution = previous->second.map.resolution();
             light.shadow.format = previous->second.map.format();
         }
-        const GroupKey group{cube, light.shadow.resolution, light.shadow.format};
+        const GroupKey group{cube, light.shadow.resolution, light.shadow.format, light.shadow.reversedZ};
         std::string error;
         if (cube) {
             const auto faces = buildCubeFaceSpaces(light, scene.bounds, stats.renderOrigin, error);
@@ -202,6 +202,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             stats.error = error;
             return stats;
         }
+        array.setReversedZ(group.reversedZ);
         stats.shadowMapReallocated = stats.shadowMapReallocated || array.generation() != before;
     }
     // Layers in light order within each array; unused arrays are freed.
@@ -245,12 +246,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         const std::string reason = viewReason(state.rendered, inputs);
         if (reason.empty()) {
             entry.reason = "unchanged: light, casters and shadow settings are the same";
-        } else if (!volumesOverlap(p.space.viewProjection(), stats.cameraViewProjection)) {
+        } else if (!volumesOverlap(p.space.volumeViewProjection(), stats.cameraViewProjection)) {
             // Its map is not read by any visible pixel: rendered once the camera sees its volume.
             entry.reason = "skipped: its volume misses the camera's view";
             anySkippedForOtherReason = true;
         } else if (inVolume == 0) {
-            clearShadowMap(state.map);  // read as lit everywhere; no draw
+            clearShadowMap(state.map, p.space.reversedZ);  // read as lit everywhere; no draw
             state.rendered = inputs;
             entry.reason = "skipped: no caster in its volume (map cleared)";
             anySkippedForOtherReason = true;
@@ -321,18 +322,19 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     // The main pass: every enabled light, each casting one with its map array and layer.
     sampler_.configure(settings.sampler, settings.filter.kind);
+    reversedSampler_.configure(settings.sampler, settings.filter.kind);
     MainPassInput in;
     in.scene = gpuScene_.get();
     in.settings = &settings;
     in.viewProjection = stats.cameraViewProjection;
     in.cameraPosition = camera.position - stats.renderOrigin;
     in.renderOrigin = stats.renderOrigin;
-    in.compareSampler = sampler_.id();
     std::map<GroupKey, int> arrayIndex;
     for (const auto& [group, array] : arrays_) {
         std::vector<GLuint>& list = group.cube ? in.mapsCube : in.maps2D;
         arrayIndex[group] = int(list.size());
         list.push_back(array.texture());
+        (group.cube ? in.samplersCube : in.samplers2D).push_back(group.reversedZ ? reversedSampler_.id() : sampler_.id());
     }
     for (std::size_t i = 0; i < settings.lights.size(); ++i) {
         if (!settings.lights[i].enabled) continue;

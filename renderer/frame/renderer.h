@@ -67,6 +67,7 @@ private:
         bool cube = false;
         int resolution = 0;
         DepthFormat format = DepthFormat::D32F;
+        bool reversedZ = false;  // an array holds maps of one convention: its sampler compares LEQUAL or GEQUAL
         auto operator<=>(const GroupKey&) const = default;
     };
     static std::string viewReason(const std::optional<ViewInputs>& last, const ViewInputs& now);
@@ -74,7 +75,8 @@ private:
     GlInfo info_;
     std::map<GroupKey, ShadowMapArray> arrays_;
     std::map<ViewKey, ViewState> views_;
-    ShadowSampler sampler_;
+    ShadowSampler sampler_{false};
+    ShadowSampler reversedSampler_{true};
     std::unique_ptr<ShadowPass> shadowPass_;
     MainPass mainPass_;
     PassTimer timer_;

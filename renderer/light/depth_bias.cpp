@@ -27,15 +27,20 @@ double depthStepAt(DepthFormat format, double depth) {
     return 0.0;
 }
 
-double clipDepthStepAt(double depth) {
+double clipDepthStepAt(double depth, bool reversedZ) {
+    if (reversedZ) {  // zero-to-one clip depth is the window depth itself: a float's step there
+        const float d = static_cast<float>(std::clamp(depth, 0.0, 1.0));
+        return double(std::nextafter(d, 2.0f) - d);
+    }
     const float ndc = std::abs(static_cast<float>(2.0 * std::clamp(depth, 0.0, 1.0) - 1.0));
     return 0.5 * double(std::nextafter(ndc, 2.0f) - ndc);
 }
 
 namespace {
 
-// View distance from the light at window depth d (spot: perspective depth; directional: linear).
-double viewDistanceAt(const LightSpace& light, double d) {
+// View distance from the light at window depth d (spot: perspective depth; directional: linear), either convention.
+double viewDistanceAt(const LightSpace& light, double stored) {
+    const double d = light.normalDepth(stored);
     const double n = light.nearPlane, f = light.farPlane;
     if (!light.perspective) return n + d * (f - n);
     return f * n / std::max(f - d * (f - n), 1e-300);
@@ -102,7 +107,8 @@ ReceiverDepths receiverDepths(const Scene& scene, const LightSpace& light, const
         std::vector<glm::dvec4> window(mesh.positions.size());  // x, y in texels, z window depth, w clip w
         for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
             const glm::dvec4 c = m * glm::dvec4(glm::dvec3(mesh.positions[i]), 1.0);
-            window[i] = {(c.x / c.w * 0.5 + 0.5) * res, (c.y / c.w * 0.5 + 0.5) * res, c.z / c.w * 0.5 + 0.5, c.w};
+            const glm::dvec3 t = light.textureOf(c);
+            window[i] = {t.x * res, t.y * res, t.z, c.w};
         }
         for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
             const glm::dvec4& a = window[mesh.indices[t]];
@@ -138,9 +144,12 @@ BiasReport biasReport(const ShadowMapSettings& shadow, DepthFormat format, const
     b.shadow = shadow;
     b.format = format;
     // Without receivers (an empty view) the light's far end stands in: the old [0.5, 1) assumption, said as such.
-    const double nearDepth = receivers.valid ? receivers.minDepth : 1.0;
-    const double farDepth = receivers.valid ? receivers.maxDepth : 1.0;
-    const double median = receivers.valid ? receivers.medianDepth : 1.0;
+    // Reversed-Z stores the nearest receivers at the largest depth.
+    const double lowest = receivers.valid ? receivers.minDepth : light.farDepth();
+    const double highest = receivers.valid ? receivers.maxDepth : light.farDepth();
+    const double nearDepth = light.reversedZ ? highest : lowest;
+    const double farDepth = light.reversedZ ? lowest : highest;
+    const double median = receivers.valid ? receivers.medianDepth : light.farDepth();
     b.receiverDepthMin = nearDepth;
     b.receiverDepthMax = farDepth;
     b.receiverDepthMedian = median;
@@ -153,9 +162,9 @@ BiasReport biasReport(const ShadowMapSettings& shadow, DepthFormat format, const
     b.clamp = biasTerm(light, double(shadow.depthBiasClamp), median);
     const double total = polygonOffsetDepth(shadow, format, median, receivers.medianSlope);
     b.total = biasTerm(light, total, median);
-    const bool nearCoarser = clipDepthStepAt(nearDepth) >= clipDepthStepAt(farDepth);
+    const bool nearCoarser = clipDepthStepAt(nearDepth, light.reversedZ) >= clipDepthStepAt(farDepth, light.reversedZ);
     const double coarsest = nearCoarser ? nearDepth : farDepth;
-    b.clipPrecision = biasTerm(light, clipDepthStepAt(coarsest), coarsest);
+    b.clipPrecision = biasTerm(light, clipDepthStepAt(coarsest, light.reversedZ), coarsest);
     b.texelWorldSize = light.texelSizeAt(viewDistanceAt(light, median));
     b.normalOffsetWorld = double(shadow.normalOffset) * b.texelWorldSize;
     return b;
@@ -185,7 +194,7 @@ std::string step(double r) {
 std::vector<std::string> describeBias(const BiasReport& b) {
     const ShadowMapSettings& shadow = b.shadow;
     std::vector<std::string> lines;
-    const std::string where = b.valid ? "" : " (no receiver in the light's volume: taken at depth 1)";
+    const std::string where = b.valid ? "" : " (no receiver in the light's volume: taken at the far depth)";
     // Two lines when the nearest and farthest receivers get different amounts (D32F's exponent, a spot's depth).
     const bool varies = b.stepNear != b.stepFar ||
                         std::abs(b.constantNear.world - b.constantFar.world) > 0.01 * std::abs(b.constantFar.world);
@@ -216,7 +225,7 @@ std::vector<std::string> describeBias(const BiasReport& b) {
 }
 
 double depthBiasUnitTexels(const LightSpace& light, DepthFormat format, const ReceiverDepths& receivers) {
-    const double median = receivers.valid ? receivers.medianDepth : 1.0;
+    const double median = receivers.valid ? receivers.medianDepth : light.farDepth();
     return biasTerm(light, depthStepAt(format, median), median).texels;
 }
 

@@ -24,8 +24,9 @@ struct BiasTerm {
     double texels = 0.0;  // world / one shadow-map texel's world size there
 };
 
-// One float step of clip-space depth at window depth `depth`, in window depth (see BiasReport::clipPrecision).
-double clipDepthStepAt(double depth);
+// One float step of clip-space depth at window depth `depth`, in window depth (see BiasReport::clipPrecision): GL's
+// [-1, 1] clip depth, or reversed-Z's zero-to-one clip depth (the window depth itself).
+double clipDepthStepAt(double depth, bool reversedZ = false);
 
 // r for a triangle whose largest window depth is `depth` (clamped into the format's range).
 double depthStepAt(DepthFormat format, double depth);
@@ -69,6 +70,7 @@ struct BiasReport {
     // depth 0 or 1 one float step of ndc is 2^-25 of depth however fine D32F's own step is). Caster and receiver
     // depths both carry this rounding: a bias below it cannot separate a surface from itself.
     BiasTerm clipPrecision;
+    // The nearest and farthest receivers' stored depths (reversed-Z: nearest = the largest) and the median's.
     double receiverDepthMin = 0.0, receiverDepthMax = 0.0, receiverDepthMedian = 0.0;
     double normalOffsetWorld = 0.0;
     double texelWorldSize = 0.0;  // at the median receiver

@@ -21,7 +21,8 @@ DepthFormatChange changeDepthFormat(const ShadowMapSettings& shadow, DepthFormat
     DepthFormatChange change{shadow, {}};
     change.shadow.format = to;
     if (to == shadow.format || shadow.depthBias == 0.0f) return change;
-    const double depth = receiverDepth.value_or(0.75);
+    // The stored depth decides D32F's r: reversed-Z stores the same receivers at 1 - d.
+    const double depth = receiverDepth.value_or(shadow.reversedZ ? 0.25 : 0.75);
     const double ratio = depthStepAt(shadow.format, depth) / depthStepAt(to, depth);
     change.shadow.depthBias = float(double(shadow.depthBias) * ratio);
     char text[160];

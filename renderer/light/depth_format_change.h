@@ -17,7 +17,8 @@ struct DepthFormatChange {
     std::string note;          // e.g. "DepthBias 2 (d32f) -> 0.0078 (d16), same world bias"; "" when unchanged
 };
 
-// `receiverDepth`: the receivers' median window depth (BiasReport::receiverDepthMedian); without one, depth 0.75.
+// `receiverDepth`: the receivers' median stored depth (BiasReport::receiverDepthMedian); without one, depth 0.75 (0.25
+// for reversed-Z, where the same receivers are stored at 1 - d).
 DepthFormatChange changeDepthFormat(const ShadowMapSettings& shadow, DepthFormat to,
                                     std::optional<double> receiverDepth);
 

@@ -33,6 +33,42 @@ double LightSpace::texelSizeAt(double viewDepth) const {
     return 2.0 * tanHalfFov * std::max(viewDepth, nearPlane) / resolution;
 }
 
+double LightSpace::windowDepth(const glm::dvec4& clip) const {
+    const double ndc = clip.z / clip.w;
+    return reversedZ ? ndc : ndc * 0.5 + 0.5;
+}
+
+glm::dvec3 LightSpace::textureOf(const glm::dvec4& clip) const {
+    return {clip.x / clip.w * 0.5 + 0.5, clip.y / clip.w * 0.5 + 0.5, windowDepth(clip)};
+}
+
+glm::dmat4 LightSpace::volumeViewProjection() const {
+    if (!reversedZ) return viewProjection();
+    // Reversed-Z's window depth d = z / w becomes GL's z' = w - 2 z (near -1, far 1).
+    glm::dmat4 toGl(1.0);
+    toGl[2][2] = -2.0;
+    toGl[3][2] = 1.0;
+    return toGl * viewProjection();
+}
+
+float conventionBorderDepth(float borderDepth, bool reversedZ) { return reversedZ ? 1.0f - borderDepth : borderDepth; }
+
+namespace {
+
+// The light's projections in its depth convention. Reversed-Z is the zero-to-one projection with near and far
+// swapped: near -> 1, far -> 0 (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) in the shadow pass).
+glm::dmat4 orthoProjection(double halfSize, double nearPlane, double farPlane, bool reversed) {
+    if (reversed) return glm::orthoRH_ZO(-halfSize, halfSize, -halfSize, halfSize, farPlane, nearPlane);
+    return glm::ortho(-halfSize, halfSize, -halfSize, halfSize, nearPlane, farPlane);
+}
+
+glm::dmat4 perspectiveProjection(double fovRadians, double nearPlane, double farPlane, bool reversed) {
+    if (reversed) return glm::perspectiveRH_ZO(fovRadians, 1.0, farPlane, nearPlane);
+    return glm::perspective(fovRadians, 1.0, nearPlane, farPlane);
+}
+
+}  // namespace
+
 glm::dmat3 lightBasis(const glm::dvec3& directionIn) {
     const glm::dvec3 d = glm::normalize(directionIn);
     const glm::dvec3 down(0.0, -1.0, 0.0);
@@ -92,6 +128,7 @@ std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Boun
         return std::nullopt;
     }
     LightSpace ls;
+    ls.reversedZ = light.shadow.reversedZ;
     ls.direction = dir / dirLength;
     ls.resolution = std::max(light.shadow.resolution, 1);
     const glm::dmat3 basis = lightBasis(ls.direction);
@@ -118,7 +155,7 @@ std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Boun
         ls.orthoSize = 2.0 * halfSize;
         ls.texelWorldSize = ls.orthoSize / ls.resolution;
         ls.view = viewFromBasis(basis, ls.position);
-        ls.projection = glm::ortho(-halfSize, halfSize, -halfSize, halfSize, ls.nearPlane, ls.farPlane);
+        ls.projection = orthoProjection(halfSize, ls.nearPlane, ls.farPlane, ls.reversedZ);
     } else {
         ls.perspective = true;
         ls.position = glm::dvec3(light.position) - origin;
@@ -135,7 +172,7 @@ std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Boun
         }
         ls.texelWorldSize = 2.0 * ls.tanHalfFov * std::max(distance, ls.nearPlane) / ls.resolution;
         ls.view = viewFromBasis(basis, ls.position);
-        ls.projection = glm::perspective(glm::radians(coneDeg), 1.0, ls.nearPlane, ls.farPlane);
+        ls.projection = perspectiveProjection(glm::radians(coneDeg), ls.nearPlane, ls.farPlane, ls.reversedZ);
     }
     if (!(ls.nearPlane < ls.farPlane)) {
         error = "projection: near (" + std::to_string(ls.nearPlane) + ") must be less than far (" +
@@ -188,6 +225,7 @@ std::optional<std::array<LightSpace, 6>> buildCubeFaceSpaces(const LightSettings
         LightSpace& ls = spaces[std::size_t(face)];
         ls.perspective = true;
         ls.cubeFace = face;
+        ls.reversedZ = light.shadow.reversedZ;
         ls.position = position;
         ls.direction = f.look;
         ls.resolution = std::max(light.shadow.resolution, 1);
@@ -200,7 +238,7 @@ std::optional<std::array<LightSpace, 6>> buildCubeFaceSpaces(const LightSettings
         const glm::dvec3 right = glm::normalize(glm::cross(f.up, back));
         const glm::dvec3 up = glm::cross(back, right);
         ls.view = viewFromBasis(glm::dmat3(right, up, back), position);
-        ls.projection = glm::perspective(glm::radians(90.0), 1.0, nearPlane, farPlane);
+        ls.projection = perspectiveProjection(glm::radians(90.0), nearPlane, farPlane, ls.reversedZ);
         if (!allFinite(ls.view) || !allFinite(ls.projection)) {
             error = "light: the point light's matrices are not finite (check position, near and far)";
             return std::nullopt;

@@ -9,6 +9,7 @@
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -29,9 +30,35 @@ struct LightSpace {
     double tanHalfFov = 0.0;       // spot
     double texelWorldSize = 0.0;   // directional: constant; spot: at the scene centre's distance
     int resolution = 1;
+    // The map's depth convention. Normal: GL clip depth [-1, 1] (no glClipControl), window depth = 0.5 ndc + 0.5,
+    // near 0, far 1, compared GL_LEQUAL. Reversed-Z: the projection maps near to 1 and far to 0 under
+    // glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE) (window depth = ndc), compared GL_GEQUAL.
+    bool reversedZ = false;
     // The world size of one shadow-map texel at distance `viewDepth` from the light (spot) or anywhere (directional).
     double texelSizeAt(double viewDepth) const;
+    // The stored (window) depth of a clip-space point, in this view's convention: the one CPU copy of the shader's
+    // toLightTexture depth (main.frag.glsl).
+    double windowDepth(const glm::dvec4& clip) const;
+    // Texture coordinates (x, y in [0, 1] inside the map) and window depth of a clip-space point.
+    glm::dvec3 textureOf(const glm::dvec4& clip) const;
+    // viewProjection() in GL's [-1, 1] clip convention whatever the depth convention: the same volume, for volume
+    // tests and drawings that take the clip cube's corners.
+    glm::dmat4 volumeViewProjection() const;
+    // The depth of the far plane / of "nothing drawn" (what the map is cleared to): 1, or 0 reversed.
+    double farDepth() const { return reversedZ ? 0.0 : 1.0; }
+    // A stored depth as the normal convention would store it (0 at near, 1 at far): 1 - d reversed. In double, exact
+    // for every stored float; for distances and orderings, never for the format's step r (that follows the stored
+    // value).
+    double normalDepth(double stored) const { return reversedZ ? 1.0 - stored : stored; }
+    // What the comparison says: a receiver at depth `receiver` is lit by a stored depth (LEQUAL, or GEQUAL).
+    bool litBy(double receiver, double stored) const { return reversedZ ? receiver >= stored : receiver <= stored; }
+    // The receiver depth the shader compares: beyond the far plane it compares as if on it.
+    double clampToFar(double depth) const { return reversedZ ? std::max(depth, 0.0) : std::min(depth, 1.0); }
 };
+
+// The border depth a sampler of this convention returns for the user's sampler.borderDepth (whose meaning, 1 = lit
+// outside, is the normal convention's): 1 - borderDepth reversed.
+float conventionBorderDepth(float borderDepth, bool reversedZ);
 
 // A rotation-minimal basis around `direction`: the frame that takes straight-down (0,-1,0) to `direction` with
 // the smallest rotation. Continuous everywhere except a tiny cap around straight up, where a fixed frame is used.

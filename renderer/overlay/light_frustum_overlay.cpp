@@ -26,7 +26,7 @@ void addLine(std::vector<glm::dvec3>& lines, const glm::dvec3& a, const glm::dve
 }  // namespace
 
 std::vector<glm::dvec3> lightVolumeCorners(const LightSpace& light) {
-    const glm::dmat4 inverse = glm::inverse(light.viewProjection());
+    const glm::dmat4 inverse = glm::inverse(light.volumeViewProjection());
     const double xy[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     std::vector<glm::dvec3> corners;
     for (double z : {-1.0, 1.0})

@@ -53,12 +53,14 @@ ShadowMapView::ShadowMapView()
     uniforms_.linearize = glGetUniformLocation(program, "uLinearize");
     uniforms_.nearFar = glGetUniformLocation(program, "uNearFar");
     uniforms_.gridTexelPixels = glGetUniformLocation(program, "uGridTexelPixels");
+    uniforms_.reversedZ = glGetUniformLocation(program, "uReversedZ");
 }
 
-void ShadowMapView::measureWrittenRange(const ShadowMap& map) {
+void ShadowMapView::measureWrittenRange(const ShadowMap& map, bool reversedZ) {
     const GLuint start[2] = {kNoCasterBits, 0u};
     glNamedBufferSubData(rangeBuffer_.id(), 0, sizeof start, start);
     glUseProgram(rangeProgram_.id());
+    glUniform1i(glGetUniformLocation(rangeProgram_.id(), "uReversedZ"), reversedZ ? 1 : 0);
     glBindTextureUnit(kDepthUnit, map.texture());
     glBindSampler(kDepthUnit, rawSampler_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rangeBuffer_.id());
@@ -79,6 +81,7 @@ void ShadowMapView::measureWrittenRange(const ShadowMap& map) {
         writtenMax_ = fromBits(result[1]);
     }
     measuredGeneration_ = map.generation();
+    measuredReversedZ_ = reversedZ;
     rangeStale_ = false;
 }
 
@@ -91,16 +94,17 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
     if (std::string error = target_.resize(width, height); !error.empty()) return "shadow map view: " + error;
 
     const Inputs inputs{options, width, height, map.texture(), map.generation(), light.perspective,
-                        light.nearPlane, light.farPlane};
+                        light.nearPlane, light.farPlane, light.reversedZ};
     redrawn_ = mapRedrawn || !drawn_ || !(*drawn_ == inputs);
     if (!redrawn_) return {};
 
-    if (mapRedrawn || measuredGeneration_ != map.generation()) rangeStale_ = true;
+    if (mapRedrawn || measuredGeneration_ != map.generation() || measuredReversedZ_ != light.reversedZ)
+        rangeStale_ = true;
     const bool linearize = options.linearize && light.perspective;
     ShownDepthRange shown;
     switch (options.contrast) {
         case DepthContrast::Auto: {
-            if (rangeStale_) measureWrittenRange(map);  // only when the map changed
+            if (rangeStale_) measureWrittenRange(map, light.reversedZ);  // only when the map changed
             shown.anyCaster = writtenMin_.has_value();
             if (shown.anyCaster) {
                 shown.min = float(linearize ? linearLightDepth(light, *writtenMin_) : *writtenMin_);
@@ -130,6 +134,7 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
     glUniform2f(u.range, shown.min, shown.max);
     glUniform1i(u.linearize, linearize ? 1 : 0);
     glUniform2f(u.nearFar, float(light.nearPlane), float(light.farPlane));
+    glUniform1i(u.reversedZ, light.reversedZ ? 1 : 0);
     glUniform1f(u.gridTexelPixels, gridShown_ ? float(pixelsPerTexel) : 0.0f);
     glBindTextureUnit(kDepthUnit, map.texture());
     glBindSampler(kDepthUnit, rawSampler_.id());

@@ -3,7 +3,9 @@
 // contrast control (auto: stretched over the depths casters wrote, measured on the GPU only when the map changed;
 // full [0,1]; manual min/max), optional linearization of a spot light's perspective depth, zoom and pan (a uv
 // rectangle, see map_zoom_pan.h), and a texel grid once a texel covers kGridMinTexelPixels view pixels.
-// Grey goes from black (near the light) to white (far); texels no caster wrote (depth 1) are shown in blue.
+// Grey goes from black (near the light) to white (far); texels no caster wrote (depth 1) are shown in blue. A
+// reversed-Z map (near 1, far 0) is shown as 1 - stored depth, so near is dark in both conventions and the contrast
+// range is in that unit.
 #include "frame/render_target.h"
 #include "gl/gl_objects.h"
 #include "light/light_space.h"
@@ -66,7 +68,7 @@ public:
     std::optional<float> depthAt(const ShadowMap& map, int texelX, int texelY) const;
 
 private:
-    void measureWrittenRange(const ShadowMap& map);
+    void measureWrittenRange(const ShadowMap& map, bool reversedZ);
 
     // Everything the picture depends on besides the map's contents.
     struct Inputs {
@@ -76,11 +78,13 @@ private:
         std::uint64_t mapGeneration = 0;
         bool perspective = false;
         double nearPlane = 0.0, farPlane = 0.0;
+        bool reversedZ = false;
         bool operator==(const Inputs&) const = default;
     };
 
     struct DisplayUniforms {
-        GLint uvMin = -1, uvMax = -1, viewSize = -1, range = -1, linearize = -1, nearFar = -1, gridTexelPixels = -1;
+        GLint uvMin = -1, uvMax = -1, viewSize = -1, range = -1, linearize = -1, nearFar = -1, gridTexelPixels = -1,
+              reversedZ = -1;
     };
 
     gl::Program displayProgram_;
@@ -93,6 +97,7 @@ private:
     std::optional<float> writtenMin_, writtenMax_;  // measured range; empty when no caster wrote
     bool rangeStale_ = true;                 // the map changed since the range was measured
     std::uint64_t measuredGeneration_ = 0;
+    bool measuredReversedZ_ = false;
     ShownDepthRange shown_;
     bool gridShown_ = false;
     std::optional<Inputs> drawn_;  // what the current picture shows

@@ -21,19 +21,21 @@ std::vector<glm::ivec2> profilePixels(glm::ivec2 from, glm::ivec2 to) {
 
 namespace {
 
-// Fills the sample's numbers from the probe's report at its pixel.
+// Fills the sample's numbers from the probe's report at its pixel. Depths are in the normal convention (0 near, 1 far)
+// whatever the map's: a reversed-Z map's stored d reads as 1 - d (exact in double), so the profile draws alike.
 void classify(const PixelProbeReport& r, ProfileSample& s) {
+    const auto normal = [&](double d) { return r.reversedZ ? 1.0 - d : d; };
     s.surface = true;
-    s.receiver = r.receiverDepth;
+    s.receiver = normal(r.receiverDepth);
     s.bias = r.bias.total.depth;
     s.threshold = s.receiver - s.bias;
     s.shadow = r.shadowGpu;
     // The stored depth at the texel the lookup falls in: the tap texel that is that texel (every filter's centre
     // tap reads it, nearest or bilinear); a filter without one leaves the first tap's first texel.
-    s.stored = r.taps.empty() || r.taps[0].texels.empty() ? 0.0 : r.taps[0].texels[0].stored;
+    s.stored = r.taps.empty() || r.taps[0].texels.empty() ? 0.0 : normal(r.taps[0].texels[0].stored);
     for (const ProbeTap& tap : r.taps)
         for (const ProbeTexel& texel : tap.texels)
-            if (!texel.border && texel.texel == r.texel) s.stored = texel.stored;
+            if (!texel.border && texel.texel == r.texel) s.stored = normal(texel.stored);
     // Each tap texel that compares "shadowed" is the surface itself when the receiver lies behind the texel's
     // unbiased depth by no more than the surface's own slope can carry it over the distance from that texel's
     // centre (plus the GPU's rounding); further behind, something else is in front.
@@ -45,7 +47,7 @@ void classify(const PixelProbeReport& r, ProfileSample& s) {
             const double distance = glm::length(r.texelCoord - centre) + 0.75;
             const double reach = r.bias.depthSlope * distance + r.depthUncertainty + r.bias.step;
             if (texel.texel == r.texel) reachAtLookup = reach;
-            const double gap = r.receiverDepth - (texel.stored - s.bias);  // > 0: receiver behind the caster
+            const double gap = s.receiver - (normal(texel.stored) - s.bias);  // > 0: receiver behind the caster
             if (!texel.lit && texel.weight > 0.0) (gap <= reach ? selfShadowed : otherCaster) = true;
         }
     s.selfReach = reachAtLookup;

@@ -14,11 +14,10 @@ namespace shadowlab {
 
 namespace {
 
-// Window-space texture coordinate (x, y in [0, 1]) and depth of a render-origin-relative point, as toLightTexture in
-// main.frag.glsl computes it (there in float).
+// Window-space texture coordinate (x, y in [0, 1]) and depth of a render-origin-relative point in the view's depth
+// convention, as toLightTexture in main.frag.glsl computes it (there in float).
 glm::dvec3 toLightTexture(const LightSpace& light, const glm::dvec3& p) {
-    const glm::dvec4 clip = light.viewProjection() * glm::dvec4(p, 1.0);
-    return glm::dvec3(clip) / clip.w * 0.5 + 0.5;
+    return light.textureOf(light.viewProjection() * glm::dvec4(p, 1.0));
 }
 
 // The texel GL reads for integer coordinate i under the address mode; nullopt = the border (clamp-to-border only).
@@ -178,8 +177,9 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         const glm::dvec3 toLight = glm::normalize(light.position - p);
         r.inCone = glm::dot(-toLight, light.direction) >= std::cos(std::atan(light.tanHalfFov));
     }
-    r.receiverDepth = std::min(r.lightTexture.z, 1.0);
-    if (r.format != DepthFormat::D32F) r.receiverDepth = std::max(r.receiverDepth, 0.0);  // fixed point clamps
+    r.reversedZ = light.reversedZ;
+    r.receiverDepth = light.clampToFar(r.lightTexture.z);
+    if (r.format != DepthFormat::D32F) r.receiverDepth = std::clamp(r.receiverDepth, 0.0, 1.0);  // fixed point clamps
     const auto [depthEps, texelEps] = lookupUncertainty(light, lookup, res);
     r.depthUncertainty = depthEps;
 
@@ -234,9 +234,9 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         const std::optional<int> ax = addressTexel(tx, res, r.addressMode), ay = addressTexel(ty, res, r.addressMode);
         texel.border = !ax || !ay;
         texel.texel = texel.border ? glm::ivec2(tx, ty) : glm::ivec2(*ax, *ay);
-        texel.stored = texel.border ? double(settings_.sampler.borderDepth)
+        texel.stored = texel.border ? double(conventionBorderDepth(settings_.sampler.borderDepth, light.reversedZ))
                                     : double(stored[std::size_t(*ay - minY) * std::size_t(rectW) + std::size_t(*ax - minX)]);
-        texel.lit = r.receiverDepth <= texel.stored;
+        texel.lit = light.litBy(r.receiverDepth, texel.stored);
         texel.uncertain = std::abs(r.receiverDepth - texel.stored) <= depthEps;
         return texel;
     };

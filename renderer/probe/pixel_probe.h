@@ -21,9 +21,10 @@ namespace shadowlab {
 struct ProbeTexel {
     glm::ivec2 texel{0};     // after the address mode (row 0 = the map's bottom, as GL stores it); see `border`
     bool border = false;     // outside the map with clamp-to-border: compared against sampler.borderDepth
-    double stored = 0.0;     // the depth the map holds there (bias of its caster included)
+                             // (1 - it for reversed-Z)
+    double stored = 0.0;     // the depth the map holds there (bias of its caster included), in the map's convention
     double weight = 1.0;     // bilinear weight inside its tap (1 for a nearest tap)
-    bool lit = false;        // receiver depth <= stored (GL_LEQUAL)
+    bool lit = false;        // receiver depth <= stored (GL_LEQUAL; reversed-Z: >=, GL_GEQUAL)
     bool uncertain = false;  // |receiver - stored| is within float rounding: the GPU may decide either way
 };
 
@@ -67,7 +68,8 @@ struct PixelProbeReport {
     glm::ivec2 texel{0};             // the texel it falls in
     bool insideMap = true;           // lightTexture.xy within [0, 1]
     bool inCone = true;              // spot: inside the cone (else S = 0)
-    double receiverDepth = 0.0;      // what each tap compares: min(z, 1) (fixed-point formats also clamp at 0)
+    bool reversedZ = false;          // the map's depth convention: near 1, far 0 (depths below are as stored)
+    double receiverDepth = 0.0;      // what each tap compares: z clamped to the far plane (fixed point: to [0, 1])
     double depthUncertainty = 0.0;   // float rounding of the GPU's receiver depth, in depth
 
     int resolution = 0;

@@ -28,6 +28,9 @@ struct ShadowMapSettings {
     // None: the map holds every caster, as the reference does. Back loses single-sided roofs lit from above (91 %
     // leak), front leaks at contacts (1.2-3.2 %); none is never worse than back on any scene (README, "Policies").
     CullMode cullMode = CullMode::None;
+    // Reversed-Z: the map stores near = 1, far = 0 (glClipControl zero-to-one, GEQUAL compare); the bias keys keep
+    // their meaning (toward the light). D32F's float steps then fall where perspective depth needs them.
+    bool reversedZ = false;
 
     bool operator==(const ShadowMapSettings&) const = default;
 };

@@ -323,6 +323,13 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                            at([](auto& l) -> auto& { return l.shadow.cullMode; })),
                        kView));
 
+    f.push_back(tagged(boolField(keyOf("shadow.reversedZ"),
+                                 "Reversed-Z: the map stores near as 1 and far as 0 (glClipControl zero-to-one, "
+                                 "cleared to 0, GEQUAL compare, polygon offset negated); the bias keys keep their "
+                                 "meaning. With d32f, precision where perspective depth needs it",
+                                 at([](auto& l) -> auto& { return l.shadow.reversedZ; })),
+                       kView | kVariant | kInvalidatesSampler));  // maps of each convention share an array and sampler
+
     // its projection
     f.push_back(tagged(boolField(keyOf("projection.autoFit"),
                                  "Fit ortho size, near and far (spot/point: near, far) to the scene's bounding sphere",

@@ -52,7 +52,7 @@ LightBlock blockOf(const MainPassLight& l, const glm::dvec3& origin) {
         // Directional: a texel's world size; spot and point: per unit of depth (the shader multiplies).
         const double texelWorld =
             space.perspective ? 2.0 * space.tanHalfFov / space.resolution : space.texelWorldSize;
-        b.depth = glm::vec4(float(space.nearPlane), float(space.farPlane), float(texelWorld), 0.0f);
+        b.depth = glm::vec4(float(space.nearPlane), float(space.farPlane), float(texelWorld), space.reversedZ ? 1.0f : 0.0f);
     }
     return b;
 }
@@ -106,14 +106,14 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     // Texture units: the 2D arrays, then the cube arrays, then the base colour texture.
     std::vector<GLint> units2D, unitsCube;
     GLuint unit = 0;
-    for (GLuint texture : in.maps2D) {
-        glBindTextureUnit(unit, texture);
-        glBindSampler(unit, in.compareSampler);
+    for (std::size_t a = 0; a < in.maps2D.size(); ++a) {
+        glBindTextureUnit(unit, in.maps2D[a]);
+        glBindSampler(unit, in.samplers2D.at(a));
         units2D.push_back(GLint(unit++));
     }
-    for (GLuint texture : in.mapsCube) {
-        glBindTextureUnit(unit, texture);
-        glBindSampler(unit, in.compareSampler);
+    for (std::size_t a = 0; a < in.mapsCube.size(); ++a) {
+        glBindTextureUnit(unit, in.mapsCube[a]);
+        glBindSampler(unit, in.samplersCube.at(a));
         unitsCube.push_back(GLint(unit++));
     }
     const GLuint baseColorUnit = unit;

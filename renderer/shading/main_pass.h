@@ -29,7 +29,8 @@ struct MainPassInput {
     std::vector<MainPassLight> lights;     // enabled lights; casting ones have a space and a map
     std::vector<GLuint> maps2D;            // sampler2DArrayShadow textures, in array-index order
     std::vector<GLuint> mapsCube;          // samplerCubeArrayShadow textures
-    GLuint compareSampler = 0;
+    std::vector<GLuint> samplers2D;        // each array's compare sampler (its depth convention's: LEQUAL or GEQUAL)
+    std::vector<GLuint> samplersCube;
     glm::dmat4 viewProjection{1.0};  // render-origin-relative
     glm::dvec3 cameraPosition{0.0};  // render-origin-relative
     glm::dvec3 renderOrigin{0.0};    // subtracted from light positions

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "gl/gl_errors.h"
+#include "light/light_space.h"
 #include "shading/filter_taps.h"
 
 namespace shadowlab {
@@ -94,6 +95,7 @@ std::string ShadowMap::ensure(int resolution, DepthFormat format, int maxTexture
 }
 
 std::string ShadowMap::attach(const ShadowMapArray& array, int layer) {
+    reversedZ_ = array.reversedZ();
     if (texture_ && arrayGeneration_ == array.generation() && layer_ == layer) return {};
     // A view must be a name that was never bound: glGenTextures, not glCreateTextures.
     GLuint id = 0;
@@ -131,14 +133,16 @@ void ShadowSampler::configure(const SamplerSettings& sampler, FilterKind filter)
     }
     glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
     glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
-    const float border[4] = {sampler.borderDepth, sampler.borderDepth, sampler.borderDepth, sampler.borderDepth};
+    // The user's border depth means the normal convention's depth (1 = lit outside); reversed-Z stores 1 - it.
+    const float depth = conventionBorderDepth(sampler.borderDepth, reversedZ_);
+    const float border[4] = {depth, depth, depth, depth};
     glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, border);
     // Hardware 2x2 and Poisson taps use the comparison's bilinear filter; point and grid PCF compare single texels.
     const bool linear = filterIsBilinear(filter);
     glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, linear ? GL_LINEAR : GL_NEAREST);
     glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, linear ? GL_LINEAR : GL_NEAREST);
     glSamplerParameteri(s, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    glSamplerParameteri(s, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    glSamplerParameteri(s, GL_TEXTURE_COMPARE_FUNC, reversedZ_ ? GL_GEQUAL : GL_LEQUAL);
 }
 
 std::vector<float> ShadowMap::readDepth() const {

@@ -28,6 +28,9 @@ public:
     // Returns "" on success (or when nothing changed), else why the new array could not be made.
     std::string ensure(bool cube, int resolution, DepthFormat format, int layers, int maxTextureSize,
                        int maxArrayLayers);
+    // The depth convention of the maps it holds (reversed-Z: near 1, far 0); a label, no storage change.
+    void setReversedZ(bool reversed) { reversedZ_ = reversed; }
+    bool reversedZ() const { return reversedZ_; }
 
     bool valid() const { return bool(texture_); }
     bool cube() const { return cube_; }
@@ -47,6 +50,7 @@ private:
     int layers_ = 0;
     DepthFormat format_ = DepthFormat::D32F;
     std::uint64_t generation_ = 0;
+    bool reversedZ_ = false;
 };
 
 // One shadow view's map: one layer of a ShadowMapArray seen as a plain 2D depth texture (a GL texture view, which
@@ -65,6 +69,7 @@ public:
     std::uint64_t generation() const { return generation_; }
     int resolution() const { return resolution_; }
     DepthFormat format() const { return format_; }
+    bool reversedZ() const { return reversedZ_; }  // its array's depth convention (near 1, far 0)
     int layer() const { return layer_; }
     GLuint framebuffer() const { return framebuffer_.id(); }
     GLuint texture() const { return texture_.id(); }
@@ -82,16 +87,21 @@ private:
     int layer_ = -1;
     int resolution_ = 0;
     DepthFormat format_ = DepthFormat::D32F;
+    bool reversedZ_ = false;
 };
 
-// The comparison sampler every shadow lookup goes through (address mode, border depth, the filter's bilinear or
-// nearest comparison); no GL calls when unchanged. Cube maps ignore the address mode (a direction is never outside).
+// The comparison sampler shadow lookups of one depth convention go through (address mode, border depth, the
+// filter's bilinear or nearest comparison, LEQUAL or reversed-Z's GEQUAL with the border depth mirrored); no GL calls
+// when unchanged. Cube maps ignore the address mode (a direction is never outside).
 class ShadowSampler {
 public:
+    explicit ShadowSampler(bool reversedZ = false) : reversedZ_(reversedZ) {}
     void configure(const SamplerSettings& sampler, FilterKind filter);
     GLuint id() const { return sampler_.id(); }
+    bool reversedZ() const { return reversedZ_; }
 
 private:
+    bool reversedZ_ = false;
     gl::Sampler sampler_;
     std::optional<std::pair<SamplerSettings, FilterKind>> state_;
 };

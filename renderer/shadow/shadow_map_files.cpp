@@ -7,16 +7,20 @@ namespace shadowlab {
 namespace {
 
 // Depth in GL order (row 0 at the bottom) as the files; files start with the top row.
+// Reversed-Z maps keep their stored depth in the EXR; the PNG shows 1 - stored, so near is dark in both conventions.
 ShadowMapFilesResult writeDepthFiles(int width, int height, const std::vector<float>& depth, const std::string& exrPath,
-                                     const std::string& pngPath) {
+                                     const std::string& pngPath, bool reversedZ) {
     ShadowMapFilesResult result;
     if (!exrPath.empty()) {
         result.error = writeExrDepth(exrPath, width, height, depth.data(), /*flipVertically=*/true);
         if (!result.ok()) return result;
     }
     if (!pngPath.empty()) {
-        result.pngRange = writtenDepthRange(depth);
-        const std::vector<std::uint8_t> gray = depthToGray(depth, result.pngRange);
+        std::vector<float> shown = depth;
+        if (reversedZ)
+            for (float& d : shown) d = 1.0f - d;
+        result.pngRange = writtenDepthRange(shown);
+        const std::vector<std::uint8_t> gray = depthToGray(shown, result.pngRange);
         result.error = writePng(pngPath, width, height, 1, gray.data(), /*flipVertically=*/true);
     }
     return result;
@@ -31,7 +35,7 @@ ShadowMapFilesResult writeShadowMapFiles(const ShadowMap& map, const std::string
         result.error = "there is no shadow map yet (no frame was rendered)";
         return result;
     }
-    return writeDepthFiles(map.resolution(), map.resolution(), map.readDepth(), exrPath, pngPath);
+    return writeDepthFiles(map.resolution(), map.resolution(), map.readDepth(), exrPath, pngPath, map.reversedZ());
 }
 
 const std::array<CrossCell, 6>& cubeCrossCells() {
@@ -50,8 +54,10 @@ ShadowMapFilesResult writeCubeShadowMapFiles(const std::array<const ShadowMap*, 
             return result;
         }
     const int n = faces[0]->resolution();
+    const bool reversedZ = faces[0]->reversedZ();
     const int width = 4 * n, height = 3 * n;
-    std::vector<float> cross(std::size_t(width) * std::size_t(height), 1.0f);  // empty cells read as "no caster"
+    // Empty cells read as "no caster": the far depth of the convention.
+    std::vector<float> cross(std::size_t(width) * std::size_t(height), reversedZ ? 0.0f : 1.0f);
     for (std::size_t f = 0; f < 6; ++f) {
         const std::vector<float> depth = faces[f]->readDepth();
         const CrossCell cell = cubeCrossCells()[f];
@@ -61,7 +67,7 @@ ShadowMapFilesResult writeCubeShadowMapFiles(const std::array<const ShadowMap*, 
                 cross[std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0 + x)] =
                     depth[std::size_t(y) * std::size_t(n) + std::size_t(x)];
     }
-    return writeDepthFiles(width, height, cross, exrPath, pngPath);
+    return writeDepthFiles(width, height, cross, exrPath, pngPath, reversedZ);
 }
 
 }  // namespace shadowlab

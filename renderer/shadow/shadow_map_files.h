@@ -1,6 +1,7 @@
 #pragma once
 // The shadow map as files: the raw stored depth as a 1-channel 32-bit float OpenEXR (channel "Z", first scanline =
-// top of the map), and a viewable grey PNG (depths stretched over their used range, white = no caster).
+// top of the map), and a viewable grey PNG (depths stretched over their used range, white = no caster). A reversed-Z
+// map's EXR holds its stored depth (near 1, far 0); its PNG shows 1 - stored, near dark as in the normal convention.
 // Used by `shadowlab render --shadow-map / --shadow-map-png` and by editor screenshots.
 #include "image/depth_visualization.h"
 #include "shadow/shadow_map.h"

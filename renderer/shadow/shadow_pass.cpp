@@ -13,7 +13,8 @@ namespace {
 
 void setPolygonOffset(float slopeScaled, float constant, float clamp, bool hasClamp) {
     // D3D: Bias = DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope, clamped to DepthBiasClamp. GL's polygon
-    // offset is the same formula: factor = slope scale, units = constant (in units of r).
+    // offset is the same formula: factor = slope scale, units = constant (in units of r). Callers negate all three
+    // for reversed-Z, where away from the light is toward 0 (a negative clamp bounds a negative offset).
     if (slopeScaled == 0.0f && constant == 0.0f) {
         glDisable(GL_POLYGON_OFFSET_FILL);
         return;
@@ -49,10 +50,10 @@ ShadowPass::ShadowPass()
           {"ALPHA_MASK", "BASE_COLOR_TEXTURE"})),
       hasOffsetClamp_(glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr) {}
 
-void clearShadowMap(const ShadowMap& map) {
+void clearShadowMap(const ShadowMap& map, bool reversedZ) {
     glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     glDepthMask(GL_TRUE);
-    glClearDepth(1.0);
+    glClearDepth(reversedZ ? 0.0 : 1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
 }
 
@@ -86,14 +87,19 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     glViewport(0, 0, map.resolution(), map.resolution());
     glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glClearDepth(1.0);
+    // Reversed-Z: the light's projection maps near to 1 and far to 0 in zero-to-one clip depth (light_space.cpp).
+    const bool reversed = light.reversedZ;
+    if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glDepthFunc(reversed ? GL_GREATER : GL_LESS);
+    glClearDepth(reversed ? 0.0 : 1.0);
     glClear(GL_DEPTH_BUFFER_BIT);
     if (depthClamp)
         glEnable(GL_DEPTH_CLAMP);
     else
         glDisable(GL_DEPTH_CLAMP);
-    setPolygonOffset(shadow.slopeScaledDepthBias, shadow.depthBias, shadow.depthBiasClamp, hasOffsetClamp_);
+    const float toward = reversed ? -1.0f : 1.0f;  // the bias keys push away from the light in both conventions
+    setPolygonOffset(toward * shadow.slopeScaledDepthBias, toward * shadow.depthBias, toward * shadow.depthBiasClamp,
+                     hasOffsetClamp_);
 
     const glm::mat4 lightViewProjection(light.viewProjection());
     std::set<GLuint> prepared;  // programs whose per-pass uniforms are set
@@ -130,6 +136,8 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     resetFaceCulling();
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
+    if (reversed) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    glDepthFunc(GL_LESS);
     return counts;
 }
 

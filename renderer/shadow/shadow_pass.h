@@ -16,8 +16,8 @@ namespace shadowlab {
 // a directional view still cast through depth clamp). Draws without finite bounds count as inside.
 bool casterInVolume(const GpuDraw& draw, const LightSpace& light);
 
-// Clears a map to the far depth: a view with no caster in its volume reads as lit everywhere.
-void clearShadowMap(const ShadowMap& map);
+// Clears a map to the far depth (1, or 0 reversed-Z): a view with no caster in its volume reads as lit everywhere.
+void clearShadowMap(const ShadowMap& map, bool reversedZ);
 
 struct ShadowPassCounts {
     int castersDrawn = 0;

@@ -507,4 +507,44 @@ TEST_F(EditorAccuracy, CoarseMapWarningShowsInTheNumbersTab) {
     EXPECT_TRUE(h.reveal("accuracy.wrong"));
 }
 
+// Flicker from the panel: a light turned by a sub-texel step on a point-filtered 256² map flickers at the shadow
+// edges and the tab shows the figures and the overlay; a camera moved by sub-texel steps flickers 0 with no shadow
+// view re-rendered.
+TEST_F(EditorAccuracy, FlickerTabPlaysAMotionAndShowsItsFigures) {
+    open();
+    EditorHarness& h = *harness;
+    ASSERT_TRUE(h.state().edit("filter.kind", "point"));
+    ASSERT_TRUE(h.state().edit("shadow.resolution", 256));
+    h.frame(2);
+    h.click("accuracy.tab.flicker");
+    const AccuracyState& a = h.state().accuracy;
+    EXPECT_EQ(a.flickerMotion.kind, MotionKind::Light) << "the tab starts with a light motion";
+    h.state().accuracy.flickerMotion.step = 0.4;
+    h.state().accuracy.flickerMotion.frames = 3;
+    h.click("accuracy.flicker.measure");
+    waitForJob();
+    ASSERT_TRUE(a.flicker.has_value()) << a.error;
+    EXPECT_TRUE(a.flicker->ok);
+    EXPECT_EQ(a.flicker->pairs.size(), 2u);
+    EXPECT_GT(a.flicker->maxFlickerPercent, 0.0);
+    EXPECT_LT(a.flicker->stepTexels, 1.0);
+    const ControlRect view = h.rect("viewport.image");
+    EXPECT_EQ(a.flicker->width, int(view.w));
+    h.frame(2);
+    EXPECT_TRUE(h.reveal("accuracy.flicker.figure"));
+    EXPECT_TRUE(h.reveal("accuracy.flicker.overlay"));
+    EXPECT_FALSE(a.report.has_value()) << "flicker keeps its own result; the Numbers tab is not overwritten";
+    h.saveWindow("accuracy-flicker-light");
+
+    h.state().accuracy.flickerMotion.kind = MotionKind::Camera;
+    h.state().accuracy.flickerMotion.step = 0.02;
+    h.state().accuracy.flickerMotion.frames = 4;
+    h.click("accuracy.flicker.measure");
+    waitForJob();
+    ASSERT_TRUE(a.flicker.has_value()) << a.error;
+    EXPECT_EQ(a.flicker->maxFlickerPercent, 0.0);
+    for (const FlickerPair& p : a.flicker->pairs) EXPECT_EQ(p.shadowViewsRendered, 0u);
+    h.saveWindow("accuracy-flicker-camera");
+}
+
 }  // namespace shadowlab::editor::test

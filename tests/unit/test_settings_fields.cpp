@@ -52,7 +52,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 33u);  // every tunable of Settings: 12 global, 21 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 34u);  // every tunable of Settings: 12 global, 22 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");

@@ -112,6 +112,42 @@ TEST(ShadowExport, NormalOffsetInWorldUnitsAndJsonCarryTheSameNumbers) {
     EXPECT_EQ(j["depth"]["reversedZ"], false);
 }
 
+TEST(ShadowExport, ReversedZSnippetsNegateTheBiasAndCompareGreater) {
+    Settings s = withBias(DepthFormat::D24, 3);
+    s.lights[0].shadow.reversedZ = true;
+    LightSpace light = orthoLight();
+    light.reversedZ = true;
+    const ShadowExport e = makeShadowExport(s, light, "t");
+    const std::string d3d = exportSnippet(e, ExportFormat::D3D12);
+    EXPECT_TRUE(contains(d3d, "REVERSED-Z (near 1, far 0)")) << d3d;
+    EXPECT_TRUE(contains(d3d, "shadowRaster.DepthBias = -3;"));
+    EXPECT_TRUE(contains(d3d, "shadowRaster.SlopeScaledDepthBias = -1.25f;"));
+    EXPECT_TRUE(contains(d3d, "shadowRaster.DepthBiasClamp = -0.001f;")) << "a negative clamp bounds a negative bias";
+    EXPECT_TRUE(contains(d3d, "COMPARISON_FUNC_GREATER_EQUAL"));
+    EXPECT_TRUE(contains(d3d, "BorderColor[3] = 0.0f;")) << "border depth 1 (lit outside) is stored as 0";
+    const std::string vk = exportSnippet(e, ExportFormat::Vulkan);
+    EXPECT_TRUE(contains(vk, "shadowRaster.depthBiasConstantFactor = -3.0f;")) << vk;
+    EXPECT_TRUE(contains(vk, "VK_COMPARE_OP_GREATER_OR_EQUAL"));
+    EXPECT_TRUE(contains(vk, "depthCompareOp = VK_COMPARE_OP_GREATER; clear depth 0.0"));
+    EXPECT_TRUE(contains(vk, "VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK"));
+    const std::string gl = exportSnippet(e, ExportFormat::GL);
+    EXPECT_TRUE(contains(gl, "glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)")) << gl;
+    EXPECT_TRUE(contains(gl, "glDepthFunc(GL_GREATER);\nglClearDepth(0.0);"));
+    EXPECT_TRUE(contains(gl, "glPolygonOffsetClamp(-1.25f, -3.0f, -0.001f);"));
+    EXPECT_TRUE(contains(gl, "GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL"));
+    const nlohmann::json j = nlohmann::json::parse(exportSnippet(e, ExportFormat::Json));
+    EXPECT_EQ(j["depth"]["reversedZ"], true);
+    EXPECT_EQ(j["rasterizer"]["depthBias"].get<float>(), -3.0f);
+    EXPECT_EQ(j["rasterizer"]["shadowLabBias"]["depthBias"].get<float>(), 3.0f);
+    EXPECT_EQ(j["sampler"]["compare"], "GEQUAL");
+    EXPECT_EQ(j["sampler"]["borderStored"].get<float>(), 0.0f);
+    // The normal convention is untouched: positive values, LEQUAL.
+    const std::string normal = exportSnippet(makeShadowExport(withBias(DepthFormat::D24, 3), orthoLight(), "t"),
+                                             ExportFormat::GL);
+    EXPECT_TRUE(contains(normal, "glPolygonOffsetClamp(1.25f, 3.0f, 0.001f);")) << normal;
+    EXPECT_FALSE(contains(normal, "GL_ZERO_TO_ONE);  // while drawing the map")) << "no clip control call";
+}
+
 TEST(ShadowExport, FormatNamesParse) {
     EXPECT_EQ(parseExportFormat("vulkan"), ExportFormat::Vulkan);
     EXPECT_EQ(parseExportFormat("d3d11"), ExportFormat::D3D11);
@@ -136,6 +172,11 @@ TEST(DepthFormatChange, D32fToD16KeepsTheDepthOffsetAtTheReceivers) {
     shadow.depthBias = 1.0f;
     EXPECT_NEAR(double(changeDepthFormat(shadow, DepthFormat::D32F, 0.3).shadow.depthBias), 33554432.0 / 65535.0, 1e-2);
     EXPECT_NEAR(double(changeDepthFormat(shadow, DepthFormat::D32F, 0.75).shadow.depthBias), 16777216.0 / 65535.0, 1e-2);
+    // Reversed-Z without known receivers: they are taken at stored depth 0.25 (the mirror of 0.75), where D32F's r
+    // is 2^-25, half of its step at 0.75: twice the units.
+    shadow.reversedZ = true;
+    EXPECT_NEAR(double(changeDepthFormat(shadow, DepthFormat::D32F, std::nullopt).shadow.depthBias),
+                2.0 * 16777216.0 / 65535.0, 1e-2);
 }
 
 TEST(DepthFormatChange, NoBiasOrSameFormatChangesNothingButTheFormat) {

@@ -3,7 +3,8 @@
 // causes of the wrong pixels with a remedy each, the counts behind them and what the reference cost), measured on
 // demand or automatically (Auto: live GPU counts while you edit, a full measure once the view is still); a stale
 // line when the numbers no longer describe the view; and Suggest bias: the search's path, its result applied to the
-// settings, and Save as preset.
+// settings, and Save as preset. Flicker: the view played under a camera or light motion (flicker.h), its figures
+// and its overlay.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
@@ -35,6 +36,12 @@ void row(const char* name, const std::string& value, const char* tooltip = nullp
         ImGui::TextWrapped("%s", value.c_str());
     else
         ImGui::TextUnformatted(value.c_str());
+}
+
+// Beside the previous control where an item of `width` fits, else on the next line (the sidebar is narrow).
+void sameLineIfFits(float width) {
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
 }
 
 std::string format(const char* fmt, double a, double b = 0.0) {
@@ -197,7 +204,7 @@ void biasSearchTab(PanelContext& ctx) {
         }
         ImGui::TextDisabled("%zu candidates, %.1f s", a.tune->path.size(), a.tune->seconds);
     } else if (a.steps.empty()) {
-        ImGui::TextDisabled("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent);
+        noteText(format("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent));
     }
 
     const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
@@ -240,6 +247,82 @@ void biasSearchTab(PanelContext& ctx) {
     state.controls.recordLastItem("accuracy.steps");
 }
 
+// Flicker: what moves, by how much, for how many frames; the figures beside the V-changed share; the overlay.
+void flickerTab(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    AccuracyState& a = state.accuracy;
+    Motion& m = a.flickerMotion;
+    ImGui::BeginDisabled(a.running);
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::BeginCombo("motion", motionName(m.kind))) {
+        for (const MotionInfo& info : motionKinds())
+            if (ImGui::Selectable(info.name, info.kind == m.kind) && info.kind != m.kind) {
+                m.kind = info.kind;
+                m.step = info.typicalStep;
+            }
+        ImGui::EndCombo();
+    }
+    state.controls.recordLastItem("accuracy.flicker.motion");
+    const std::string stepLabel = std::string(motionInfo(m.kind).unit) + " / frame";
+    const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
+    sameLineIfFits(90.0f + inner + ImGui::CalcTextSize("frames").x);
+    ImGui::SetNextItemWidth(90.0f);
+    ImGui::InputInt("frames", &m.frames);
+    m.frames = std::clamp(m.frames, 2, kMaxMotionFrames);
+    state.controls.recordLastItem("accuracy.flicker.frames");
+    sameLineIfFits(110.0f + inner + ImGui::CalcTextSize(stepLabel.c_str()).x);
+    ImGui::SetNextItemWidth(110.0f);
+    ImGui::InputDouble(stepLabel.c_str(), &m.step, 0.0, 0.0, "%.4g");
+    state.controls.recordLastItem("accuracy.flicker.step");
+    if (ImGui::Button("Measure flicker")) ctx.actions.measureFlicker();
+    state.controls.recordLastItem("accuracy.flicker.measure");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Play the motion on light %zu and compare S at the same surface points of consecutive "
+                          "frames: flicker = S flips across 0.5 while the true visibility V does not",
+                          m.light);
+    ImGui::EndDisabled();
+    if (!a.flicker) {
+        noteText("Measure flicker to see how much the shadow crawls under a sub-texel motion");
+        return;
+    }
+    const FlickerReport& f = *a.flicker;
+    if (ImGui::BeginTable("flicker", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);  // wraps (row())
+        row("flicker", format("max %.3f %%, mean %.3f %%", f.maxFlickerPercent, f.meanFlickerPercent),
+            "pixels whose S crosses 0.5 at the same surface point between consecutive frames while V does not");
+        state.controls.recordLastItem("accuracy.flicker.figure");
+        row("V changed", format("max %.3f %%, mean %.3f %%", f.maxVChangedPercent, f.meanVChangedPercent),
+            "pixels whose true visibility changed: the shadow really moved (not flicker)");
+        row("|dS| > 1/8", format("max %.3f %%, mean %.3f %%", f.maxVisibleDeltaPercent, f.meanVisibleDeltaPercent),
+            "a visible change of S while V does not, flips included");
+        row("mean |dS|", format("max %.5f, mean %.5f", f.maxMeanAbsDeltaS, f.meanMeanAbsDeltaS),
+            "over pixels whose V did not change");
+        row("step", format("%g ", f.motion.step) + motionInfo(f.motion.kind).unit +
+                        format(" = %.3g texels", f.stepTexels) + (f.stepTexels < 1.0 ? " (sub-texel)" : ""),
+            "per frame; in texels of the light's map");
+        std::size_t rerendered = 0;
+        for (const FlickerPair& p : f.pairs) rerendered += p.shadowViewsRendered;
+        row("frames", format("%.0f (", double(f.motion.frames)) + motionName(f.motion.kind) +
+                          format(" motion), %.0f shadow views re-rendered", double(rerendered)) +
+                          format(", %.2f s", a.flickerSeconds));
+        ImGui::EndTable();
+    }
+    if (a.flickerTexture && f.width > 0) {
+        // The overlay at the panel's width: flickering pixels and V changes over the last frame, dimmed.
+        const float w = std::max(1.0f, ImGui::GetContentRegionAvail().x);
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(a.flickerTexture.id())),
+                     ImVec2(w, w * float(f.height) / float(f.width)));
+        state.controls.recordLastItem("accuracy.flicker.overlay");
+        for (const LegendEntry& e : flickerLegend()) {
+            ImGui::ColorButton(e.name, ImVec4(e.red / 255.0f, e.green / 255.0f, e.blue / 255.0f, 1.0f),
+                               ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
+            ImGui::SameLine();
+            ImGui::TextUnformatted(e.name);
+        }
+    }
+}
+
 }  // namespace
 
 void drawAccuracyPanel(PanelContext& ctx) {
@@ -274,7 +357,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
     // Progress, or what the newest job did.
     char overlay[160];
     if (a.running)
-        std::snprintf(overlay, sizeof overlay, "%s %s (%.0f %%)", a.runningTune ? "bias search:" : "measure:",
+        std::snprintf(overlay, sizeof overlay, "%s %s (%.0f %%)",
+                      a.runningTune ? "bias search:" : a.runningFlicker ? "flicker:" : "measure:",
                       a.stage.c_str(), double(a.progress) * 100.0);
     else if (!a.error.empty())
         std::snprintf(overlay, sizeof overlay, "%s", a.stage.c_str());
@@ -343,8 +427,13 @@ void drawAccuracyPanel(PanelContext& ctx) {
         if (a.report) costTab(a, *a.report);
         ImGui::EndTabItem();
     }
-    if (tab("Bias search", "accuracy.tab.search", startedSearch ? ImGuiTabItemFlags_SetSelected : 0)) {
+    // "Tune" as `shadowlab tune`: with Flicker the six tabs fit the sidebar at 1280x720.
+    if (tab("Tune", "accuracy.tab.search", startedSearch ? ImGuiTabItemFlags_SetSelected : 0)) {
         biasSearchTab(ctx);
+        ImGui::EndTabItem();
+    }
+    if (tab("Flicker", "accuracy.tab.flicker")) {
+        flickerTab(ctx);
         ImGui::EndTabItem();
     }
     ImGui::EndTabBar();

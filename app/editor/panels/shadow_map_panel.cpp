@@ -1,4 +1,4 @@
-// Shadow map: resolution (quick picks + custom, capped at GL_MAX_TEXTURE_SIZE), depth format, the three D3D bias
+// Shadow map: resolution (quick picks + custom, capped at GL_MAX_TEXTURE_SIZE), depth format, reversed-Z, the three D3D bias
 // values, normal offset and cull mode; beside the bias, what it amounts to in depth steps, texels and world units.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
@@ -99,6 +99,7 @@ void drawShadowMapPanel(PanelContext& ctx) {
     resolutionControls(state);
     ImGui::PushItemWidth(-175.0f);
     comboField(state, key("shadow.depthFormat").c_str(), "depth format");
+    checkboxField(state, key("shadow.reversedZ").c_str(), "Reversed-Z");
     ImGui::Separator();
     dragFloatField(state, key("shadow.depthBias").c_str(), "DepthBias (units)", 1.0f, "%.4g");  // d16 after a format change: 0.0078
     sliderFloatField(state, key("shadow.slopeScaledDepthBias").c_str(), "SlopeScaledDepthBias", 0.0f, 10.0f, "%.2f");

@@ -1,0 +1,16 @@
+#pragma once
+// `shadowlab measure --motion camera|light --frames N --step S`: flicker (renderer/accuracy/flicker.h) of one light
+// while the camera translates or the light turns by S per frame; prints it beside the share of pixels whose true
+// visibility changed, optionally as JSON, as an overlay PNG marking the flickering pixels, and as the worst pair's two
+// frames (--frames-out DIR).
+#include "cli/measure_command.h"
+
+namespace shadowlab::cli {
+
+// Any of --motion, --frames, --step, --direction, --frames-out given.
+bool wantsMotion(const MeasureOptions& options);
+
+// Exit code 0 unless it failed (bad option, no GL, a file that cannot be written).
+int runMeasureMotion(const MeasureOptions& options);
+
+}  // namespace shadowlab::cli
