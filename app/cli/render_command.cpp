@@ -22,19 +22,6 @@
 
 namespace shadowlab::cli {
 
-namespace {
-
-std::vector<std::uint8_t> topRowFirst(const std::vector<std::uint8_t>& glRows, int width, int height) {
-    std::vector<std::uint8_t> out(glRows.size());
-    const std::size_t stride = std::size_t(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::copy_n(glRows.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * stride), stride,
-                    out.begin() + std::ptrdiff_t(std::size_t(y) * stride));
-    return out;
-}
-
-}  // namespace
-
 int runRender(const RenderOptions& options) {
     std::vector<std::string> overrides = options.overrides;
     if (!options.view.empty()) overrides.push_back("view=" + options.view);

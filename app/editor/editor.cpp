@@ -4,6 +4,7 @@
 #include "editor/panels/panel_registry.h"
 #include "frame/screenshot.h"
 #include "image/image_io.h"
+#include "image/split_view.h"
 #include "scene/builtin_scenes.h"
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
@@ -274,19 +275,39 @@ void Editor::takeScreenshot() {
         state_.say(state_.lastScreenshot, true);
         return;
     }
-    const ScreenshotResult result =
-        writeScreenshot(target_, state_.screenshotDir, screenshotWithMap_ ? &renderer_->shadowMap() : nullptr,
-                        std::chrono::system_clock::now(), presetPngText(settingsToSave(), state_.sceneSpec));
+    const ShadowMap* map = screenshotWithMap_ ? &renderer_->shadowMap() : nullptr;
+    const auto now = std::chrono::system_clock::now();
+    PngText text = presetPngText(settingsToSave(), state_.sceneSpec);
+    // While comparing, the picture is what the view shows: A left of the divider, B right of it, both labelled. It
+    // carries B's preset (the one being edited; --preset shot.png loads it) and A's under its own keyword.
+    const RenderTarget& a = abRenderer_.target();
+    const bool split = state_.ab.active && state_.ab.haveStatsA && a.width() == target_.width() &&
+                       a.height() == target_.height() && !(state_.accuracy.showOverlay && state_.accuracy.overlayTexture);
+    ScreenshotResult result;
+    if (split) {
+        Settings settingsA = abSettingsA(state_);
+        settingsA.camera = settingsToSave().camera;
+        text.emplace_back(kPresetAPngKeyword, presetPngText(settingsA, state_.sceneSpec).front().second);
+        const int w = target_.width(), h = target_.height();
+        const std::optional<AccuracyViewKey> view = accuracyKey();
+        const std::vector<std::uint8_t> picture =
+            composeSplitView(topRowFirst(a.readColor(), w, h), topRowFirst(target_.readColor(), w, h), w, h,
+                             double(state_.ab.divider), abLabel(state_, true, view), abLabel(state_, false, view));
+        result = writeScreenshot(picture, w, h, state_.screenshotDir, map, now, text);
+    } else {
+        result = writeScreenshot(target_, state_.screenshotDir, map, now, text);
+    }
     if (!result.ok()) {
         state_.lastScreenshot = "screenshot failed: " + result.error;
         state_.say(state_.lastScreenshot, true);
         return;
     }
     state_.lastScreenshot = result.viewPng;
-    std::string text = "screenshot: " + result.viewPng;
-    if (!result.shadowMapExr.empty()) text += " + " + result.shadowMapExr;
-    if (!result.shadowMapPng.empty()) text += " + " + result.shadowMapPng;
-    state_.say(text);
+    std::string said = "screenshot: " + result.viewPng;
+    if (split) said += " (A/B as shown; it carries B's preset, A's as " + std::string(kPresetAPngKeyword) + ")";
+    if (!result.shadowMapExr.empty()) said += " + " + result.shadowMapExr;
+    if (!result.shadowMapPng.empty()) said += " + " + result.shadowMapPng;
+    state_.say(said);
 }
 
 void Editor::refreshPresetList() {
@@ -458,7 +479,9 @@ bool Editor::busy() const {
     const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
                         state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
                         state_.showLightFrustum,   state_.showLightFrustum ? state_.selectedLight : 0};
-    return !(key == *lastRendered_) || mapPictureStale_ || abViewDue();
+    // A stale map picture matters only while the viewer shows it (its tab may be closed: it redraws when opened).
+    const bool mapPictureDue = mapPictureStale_ && state_.viewer.width >= 8;
+    return !(key == *lastRendered_) || mapPictureDue || abViewDue();
 }
 
 std::optional<std::string> Editor::takeWindowScreenshotRequest() {
@@ -490,7 +513,9 @@ std::string writeFramebufferPng(const std::string& path, int width, int height) 
     return writePng(path, width, height, 4, pixels.data(), true);
 }
 
-std::string windowScreenshotPath(const std::string& folder) {
+std::string windowScreenshotPath(const std::string& folder) { return stampedPath(folder, "window", ".png"); }
+
+std::string stampedPath(const std::string& folder, const std::string& kind, const std::string& extension) {
     std::error_code ec;
     fs::create_directories(folder, ec);
     const std::time_t t = std::time(nullptr);
@@ -498,9 +523,9 @@ std::string windowScreenshotPath(const std::string& folder) {
     localtime_r(&t, &local);
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-    fs::path path = fs::path(folder) / (std::string("shadowlab-window-") + stamp + ".png");
-    for (int n = 2; fs::exists(path, ec); ++n)
-        path = fs::path(folder) / (std::string("shadowlab-window-") + stamp + "-" + std::to_string(n) + ".png");
+    const std::string base = "shadowlab-" + kind + "-" + stamp;
+    fs::path path = fs::path(folder) / (base + extension);
+    for (int n = 2; fs::exists(path, ec); ++n) path = fs::path(folder) / (base + "-" + std::to_string(n) + extension);
     return path.string();
 }
 

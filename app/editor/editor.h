@@ -6,6 +6,7 @@
 // Rendering before the UI keeps every texture the UI shows valid for the frame that draws it.
 #include "editor/accuracy_worker.h"
 #include "editor/editor_state.h"
+#include "editor/panels/panel_registry.h"
 #include "frame/orbit_camera.h"
 #include "frame/render_target.h"
 #include "frame/renderer.h"
@@ -75,6 +76,7 @@ public:
     void deletePreset() override;
     void requestScreenshot(bool withShadowMap) override;
     void frameScene() override;
+    void saveProbeJson() override;
     void measureAccuracy() override;
     void suggestBias() override;
     void measureFlicker() override;
@@ -135,6 +137,7 @@ private:
     void viewportCameraInput(ImVec2 pos, ImVec2 size);
     void closePopupOnEscape();
     void drawPanels();
+    void drawSidebar(Sidebar side, PanelContext& ctx, const Panel* wanted);
     void drawUnsavedChangesDialog();
     void drawSaveAsDialog();
     void drawStatusBar();
@@ -165,7 +168,6 @@ private:
     // The settings a save writes: the view camera actually shown (autoFrame kept only while the user has not moved
     // the camera away from the preset's).
     Settings settingsToSave() const;
-    std::vector<ImVec4> panelRects_;   // last frame's panel windows (x, y, w, h): the viewport fills the rest
 
     std::optional<PendingSwitch> pendingSwitch_;  // waiting for the unsaved-changes answer
     bool openUnsavedDialog_ = false;
@@ -202,5 +204,7 @@ std::string writeFramebufferPng(const std::string& path, int width, int height);
 
 // "shadowlab-window-YYYYMMDD-HHMMSS.png" in `folder` (created if missing); never an existing file.
 std::string windowScreenshotPath(const std::string& folder);
+// The same rule for any kind of file: "shadowlab-KIND-YYYYMMDD-HHMMSS.EXT".
+std::string stampedPath(const std::string& folder, const std::string& kind, const std::string& extension);
 
 }  // namespace shadowlab::editor

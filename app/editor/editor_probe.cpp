@@ -4,6 +4,8 @@
 // draws a line whose depth profile the Probe panel plots.
 #include "editor/editor.h"
 #include "editor/editor_keys.h"
+#include "probe/probe_description.h"
+#include "settings/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +37,10 @@ void Editor::probeViewportInput(ImVec2 imagePos) {
     const bool held = ImGui::IsItemHovered() && io.KeysDown[keys::kP] && !io.WantTextInput;
     const ProbeState& p = state_.probe;
     const bool samePixel = p.report && p.report->x == x && p.report->y == y;
-    if (click || (held && !samePixel)) state_.probe.request = pixel;
+    if (click || (held && !samePixel)) {
+        state_.probe.request = pixel;
+        state_.showPanel = "Probe";  // its answer is in the Probe tab
+    }
 }
 
 void Editor::drawProbeMarker(ImVec2 imagePos) {
@@ -104,6 +109,23 @@ void Editor::runProbe() {
     p.report = std::move(report);
     p.key = key;
     p.withMeasurement = measuredHere;
+}
+
+void Editor::saveProbeJson() {
+    const ProbeState& p = state_.probe;
+    if (!p.report) {
+        state_.say("probe: nothing to save yet (click a pixel in the view)", true);
+        return;
+    }
+    nlohmann::json json = probeToJson(*p.report);
+    json["scene"] = state_.sceneSpec;
+    json["preset"] = state_.preset.name();
+    const std::string path = stampedPath(state_.screenshotDir, "probe", ".json");
+    if (std::string error = writeFileAtomically(path, json.dump(2) + "\n"); !error.empty()) {
+        state_.say("probe not saved: " + error, true);
+        return;
+    }
+    state_.say("probe: " + path);
 }
 
 }  // namespace shadowlab::editor

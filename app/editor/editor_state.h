@@ -99,6 +99,8 @@ struct EditorState {
     ProbeState probe;        // the Probe panel: why the clicked pixel is lit or shadowed
     SweepPanelState sweep;   // the Cost vs accuracy panel
     AbState ab;              // A/B: the snapshot A beside the edited settings B
+    // A panel to bring forward: its sidebar tab is selected on the next frame (e.g. Probe after a click on the view).
+    std::string showPanel;
 
     // Scene panel
     std::optional<SceneLoadProgress> loading;  // while a scene loads
@@ -156,6 +158,8 @@ public:
     virtual void deletePreset() = 0;
     virtual void requestScreenshot(bool withShadowMap) = 0;
     virtual void frameScene() = 0;
+    // The Probe panel's report as JSON (probe --json's format, with the scene and preset) in the screenshots folder.
+    virtual void saveProbeJson() = 0;
     // Accuracy: measure the current view, search for a bias (applied to the settings when done), cancel either.
     virtual void measureAccuracy() = 0;
     virtual void suggestBias() = 0;

@@ -18,8 +18,10 @@ namespace shadowlab::editor {
 
 namespace {
 
-constexpr float kToolbarHeight = 34.0f;
 constexpr float kStatusHeight = 26.0f;
+// The view combo's two editor-only choices (the accuracy overlays); the second is its longest label.
+constexpr const char* kOverlay = "accuracy overlay";
+constexpr const char* kCauseOverlay = "accuracy overlay by cause";
 
 }  // namespace
 
@@ -63,27 +65,12 @@ void Editor::closePopupOnEscape() {
 }
 
 ImVec4 Editor::viewportWindowRect() const {
+    // Between the two sidebars, the window's whole height.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    float left = 0.0f, right = display.x, top = 0.0f, bottom = display.y;
-    if (panelRects_.empty()) {  // first frame: the first-run layout
-        left = leftColumnWidth(display);
-        right = display.x - rightColumnWidth(display);
-        bottom = display.y - bottomStripHeight(display);
-    }
-    // Panels near a side push that side in; panels in the middle push the top or bottom.
-    for (const ImVec4& r : panelRects_) {
-        const float cx = r.x + r.z * 0.5f, cy = r.y + r.w * 0.5f;
-        if (cx < display.x * 0.3f)
-            left = std::max(left, r.x + r.z);
-        else if (cx > display.x * 0.7f)
-            right = std::min(right, r.x);
-        else if (cy > display.y * 0.5f)
-            bottom = std::min(bottom, r.y);
-        else
-            top = std::max(top, r.y + r.w);
-    }
-    if (right - left < 160.0f || bottom - top < 120.0f) return ImVec4(0, 0, display.x, display.y);
-    return ImVec4(left, top, right - left, bottom - top);
+    const float left = sidebarWidth(Sidebar::Left, display);
+    const float right = display.x - sidebarWidth(Sidebar::Right, display);
+    if (right - left < 160.0f || display.y < 120.0f) return ImVec4(0, 0, display.x, display.y);
+    return ImVec4(left, 0.0f, right - left, display.y);
 }
 
 void Editor::drawViewport() {
@@ -99,33 +86,48 @@ void Editor::drawViewport() {
     ImGui::Begin("Viewport", nullptr, flags);
     ImGui::PopStyleVar(3);
 
-    // Toolbar: what the view shows, the light's frustum, screenshots, framing.
+    // Toolbar: what the view shows, the light's frustum, screenshots, framing. It flows onto a second row when the
+    // view is narrow (1280x720), so no control is cut at the view's edge.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const auto buttonWidth = [&](const char* label) { return ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x; };
+    const auto checkboxWidth = [&](const char* label) {
+        return ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+    };
+    const auto flow = [&](float itemWidth) {
+        ImGui::SameLine();
+        if (ImGui::GetContentRegionAvail().x < itemWidth + 8.0f) {
+            ImGui::NewLine();
+            ImGui::SetCursorPosX(8.0f);
+        }
+    };
     ImGui::SetCursorPos(ImVec2(8, 6));
-    ImGui::SetNextItemWidth(150.0f);
+    // Wide enough for its longest choice ("accuracy overlay by cause") and the arrow.
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize(kCauseOverlay).x + 2.0f * style.FramePadding.x +
+                            ImGui::GetFrameHeight());
     viewModeCombo();
-    ImGui::SameLine();
+    flow(buttonWidth(state_.ab.active ? "A/B ..." : "A/B"));
     abToolbar();  // next to what the view shows: it splits the view
-    ImGui::SameLine();
+    flow(checkboxWidth("light frustum"));
     ImGui::Checkbox("light frustum", &state_.showLightFrustum);
     state_.controls.recordLastItem("viewport.frustum");
-    ImGui::SameLine();
+    flow(buttonWidth("Frame (F)"));
     if (ImGui::Button("Frame (F)")) frameScene();
     state_.controls.recordLastItem("viewport.frame");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Frame the scene (F). In the view: left drag orbits, middle or Shift+left drag pans, the "
                           "wheel zooms");
-    ImGui::SameLine();
+    flow(buttonWidth("Reset view"));
     if (ImGui::Button("Reset view")) resetCameraFromSettings();
     state_.controls.recordLastItem("viewport.resetView");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Back to the preset's camera (the view it was tuned from; auto-framed when it has none)");
-    ImGui::SameLine();
+    flow(buttonWidth("Screenshot (F12)"));
     if (ImGui::Button("Screenshot (F12)")) requestScreenshot(state_.screenshotWithShadowMap);
     state_.controls.recordLastItem("viewport.screenshot");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Writes the viewport as PNG into %s/ (Ctrl+F12: the whole window)",
                           state_.screenshotDir.c_str());
-    ImGui::SameLine();
+    flow(checkboxWidth("+ shadow map"));
     ImGui::Checkbox("+ shadow map", &state_.screenshotWithShadowMap);
     state_.controls.recordLastItem("viewport.screenshotWithMap");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Screenshots also write the shadow map as float EXR and PNG");
@@ -136,12 +138,15 @@ void Editor::drawViewport() {
     if (ImGui::GetContentRegionAvail().x > helpWidth + 12.0f) {
         ImGui::SetCursorPosX(rect.z - helpWidth - 10.0f);
         ImGui::TextDisabled("%s", help);
+    } else {
+        ImGui::NewLine();
     }
+    const float toolbarHeight = ImGui::GetCursorPosY();
 
     // The image: the renderer draws at exactly this size.
     const ImVec2 origin = ImGui::GetWindowPos();
-    const ImVec2 imagePos(origin.x, origin.y + kToolbarHeight);
-    const ImVec2 imageSize(rect.z, std::max(0.0f, rect.w - kToolbarHeight - kStatusHeight));
+    const ImVec2 imagePos(origin.x, origin.y + toolbarHeight);
+    const ImVec2 imageSize(rect.z, std::max(0.0f, rect.w - toolbarHeight - kStatusHeight));
     viewportRect_ = ImVec4(imagePos.x, imagePos.y, std::floor(imageSize.x), std::floor(imageSize.y));
     abDividerInput(imagePos, imageSize);
     ImGui::SetCursorScreenPos(imagePos);
@@ -204,8 +209,6 @@ void Editor::viewportCameraInput(ImVec2 pos, ImVec2 size) {
 void Editor::viewModeCombo() {
     // lit / shadow / light-depth are the renderer's view setting (saved in presets); the accuracy overlay is the
     // editor's own view of the newest measurement and never a setting.
-    static constexpr const char* kOverlay = "accuracy overlay";
-    static constexpr const char* kCauseOverlay = "accuracy overlay by cause";
     AccuracyState& a = state_.accuracy;
     const SettingsField* field = findSettingsField("view");
     const std::string current = field->get(state_.settings).get<std::string>();
@@ -324,28 +327,66 @@ void Editor::drawStatusBar() {
 }
 
 void Editor::drawPanels() {
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    panelRects_.clear();
     PanelContext ctx{state_, *this};
-    for (const Panel& panel : panels()) {
-        const PanelRect first = firstRunRect(panel, display);
-        ImGui::SetNextWindowPos(first.pos, ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSize(first.size, ImGuiCond_FirstUseEver);
-        // The title may carry the unsaved marker; "###" keeps the window's identity (and imgui.ini entry) stable.
-        std::string title = panel.title;
-        if (std::string(panel.title) == "Presets" && state_.preset.dirty(state_.settings)) title += " *";
-        if (panel.editsSelectedLight && state_.selected())
-            title += ": " + std::to_string(state_.selectedLight) + " " +
-                     lightTypeText(state_.settings, state_.selectedLight);
-        title += std::string("###") + panel.title;
-        const bool open = ImGui::Begin(title.c_str());
-        const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-        panelRects_.emplace_back(pos.x, pos.y, size.x, size.y);
-        state_.controls.record(std::string("panel:") + panel.title, ControlRect{pos.x, pos.y, size.x, size.y});
-        if (open) panel.draw(ctx);
-        ImGui::End();
-    }
+    // A panel asked for (the Probe after a click on the view) selects its tab this frame.
+    const Panel* wanted = findPanel(state_.showPanel);
+    state_.showPanel.clear();
+    for (const Sidebar side : {Sidebar::Left, Sidebar::Right}) drawSidebar(side, ctx, wanted);
     drawSweepWindow(ctx);
+}
+
+// One sidebar: a window along the window's left or right edge with a tab per group of panels; the panels of the
+// open tab stack under headers that carry what the old window titles did (the light edited, the preset's "*").
+void Editor::drawSidebar(Sidebar side, PanelContext& ctx, const Panel* wanted) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float width = sidebarWidth(side, display);
+    const bool left = side == Sidebar::Left;
+    ImGui::SetNextWindowPos(ImVec2(left ? 0.0f : display.x - width, 0.0f));
+    ImGui::SetNextWindowSize(ImVec2(width, display.y));
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGui::Begin(left ? "##leftSidebar" : "##rightSidebar", nullptr, flags);
+    state_.controls.record(left ? "sidebar:left" : "sidebar:right",
+                           ControlRect{ImGui::GetWindowPos().x, 0.0f, width, display.y});
+    if (ImGui::BeginTabBar("##tabs", ImGuiTabBarFlags_FittingPolicyScroll)) {
+        const bool dirty = state_.preset.dirty(state_.settings);
+        for (const std::string& tab : sidebarTabs(side)) {
+            const bool select = wanted && wanted->sidebar == side && tab == wanted->tab;
+            // The Presets panel's tab carries the unsaved marker too (it shows while another tab is open).
+            bool presets = false;
+            for (const Panel* p : tabPanels(side, tab)) presets = presets || std::string(p->title) == "Presets";
+            const std::string label = tab + (presets && dirty ? " *" : "") + "###" + tab;
+            const bool open = ImGui::BeginTabItem(label.c_str(), nullptr, select ? ImGuiTabItemFlags_SetSelected : 0);
+            state_.controls.recordLastItem("tab:" + tab);
+            if (!open) continue;
+            state_.controls.recordLastItem("tabOpen:" + tab);  // which tab a sidebar shows (scripts, tests)
+            const std::vector<const Panel*> shown = tabPanels(side, tab);
+            for (const Panel* panel : shown) {
+                const ImVec2 start = ImGui::GetCursorScreenPos();
+                std::string header = panel->title;
+                if (std::string(panel->title) == "Presets" && state_.preset.dirty(state_.settings)) header += " *";
+                if (panel->editsSelectedLight && state_.selected())
+                    header += ": " + std::to_string(state_.selectedLight) + " " +
+                              lightTypeText(state_.settings, state_.selectedLight);
+                if (shown.size() > 1 || header != tab) {  // a lone panel named like its tab needs no header
+                    if (panel != shown.front()) ImGui::Spacing();
+                    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+                    ImGui::TextUnformatted(header.c_str());
+                    ImGui::PopStyleColor();
+                    ImGui::Separator();
+                }
+                ImGui::PushID(panel->title);
+                panel->draw(ctx);
+                ImGui::PopID();
+                const float bottom = ImGui::GetCursorScreenPos().y;
+                state_.controls.record(std::string("panel:") + panel->title,
+                                       ControlRect{start.x, start.y, ImGui::GetContentRegionAvail().x, bottom - start.y});
+            }
+            ImGui::EndTabItem();
+        }
+        ImGui::EndTabBar();
+    }
+    ImGui::End();
 }
 
 void Editor::drawUnsavedChangesDialog() {

@@ -32,8 +32,9 @@ bool lightHeader(EditorState& state);
 void fieldHelp(const EditorState& state, const char* key);
 void showFieldError(const EditorState& state, const char* key);
 
-// Text in the theme's warning / error colours.
+// Text in the theme's warning / error / disabled colours, wrapped at the panel's edge (nothing cut in a sidebar).
 void warningText(const std::string& text);
+void noteText(const std::string& text);
 void errorText(const std::string& text);
 
 }  // namespace shadowlab::editor

@@ -2,7 +2,8 @@
 // ImGui 1.86 reads the keyboard once per frame (io.KeysDown), so a key pressed and released between two frames -
 // which is how xdotool and fast typists send them - is lost, and Ctrl can be released before S is seen. GLFW's key
 // and character events are queued here and handed to ImGui at most one key event per frame, in order (the input
-// queue ImGui 1.87 added does the same).
+// queue ImGui 1.87 added does the same). While a text field has the keyboard, printable keys (which then only bring
+// their characters) are handed over without waiting for a frame each.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 

@@ -33,6 +33,25 @@ const std::vector<LegendEntry>& causeLegend() {
     return legend;
 }
 
+OverlayRgb shadedColour(const LegendEntry& entry, float lambert) {
+    const float l = std::isfinite(lambert) ? std::clamp(lambert, 0.0f, 1.0f) : 0.0f;
+    const float f = kOverlayMinShade + (1.0f - kOverlayMinShade) * l;
+    const auto scale = [f](std::uint8_t c) { return std::uint8_t(std::lround(float(c) * f)); };
+    return {scale(entry.red), scale(entry.green), scale(entry.blue)};
+}
+
+bool isShadeOf(const LegendEntry& entry, const std::uint8_t* rgb) {
+    // The factor from the brightest channel; every channel must then agree within rounding.
+    const std::uint8_t c[3] = {entry.red, entry.green, entry.blue};
+    const int top = int(std::max_element(c, c + 3) - c);
+    if (c[top] == 0) return rgb[0] == 0 && rgb[1] == 0 && rgb[2] == 0;
+    const float f = float(rgb[top]) / float(c[top]);
+    if (f < kOverlayMinShade - 1.0f / float(c[top]) || f > 1.0f + 0.5f / float(c[top])) return false;
+    for (int k = 0; k < 3; ++k)
+        if (std::abs(float(rgb[k]) - float(c[k]) * f) > 1.5f) return false;
+    return true;
+}
+
 std::vector<std::uint8_t> dimmedPicture(int width, int height, const std::vector<PixelClass>& classes,
                                         const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
                                         float ambient) {
@@ -60,20 +79,24 @@ std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, c
         rgba[i * 4 + 1] = e.green;
         rgba[i * 4 + 2] = e.blue;
     };
+    auto shade = [&](std::size_t i, const LegendEntry& e) {
+        const OverlayRgb c = shadedColour(e, lambert[i]);
+        put(i, {"", c.red, c.green, c.blue});
+    };
     for (std::size_t i = 0; i < count; ++i) {
         if (classes[i] == PixelClass::Background) continue;
         const PixelMark mark = metrics.marks[i];
         bool counted = mark == PixelMark::Acne || mark == PixelMark::Leak;
         if (kind == OverlayKind::Cause && metrics.causes[i] != MismatchCause::None) {
             const CauseInfo& info = causeInfo(metrics.causes[i]);
-            put(i, {"", info.red, info.green, info.blue});
+            shade(i, {"", info.red, info.green, info.blue});
             counted = metrics.causes[i] != MismatchCause::NearEdge;
         } else {
             switch (mark) {
-                case PixelMark::Acne: put(i, kAcne); break;
-                case PixelMark::AcneNearEdge: put(i, kAcneNearEdge); break;
-                case PixelMark::Leak: put(i, kLeak); break;
-                case PixelMark::LeakNearEdge: put(i, kLeakNearEdge); break;
+                case PixelMark::Acne: shade(i, kAcne); break;
+                case PixelMark::AcneNearEdge: shade(i, kAcneNearEdge); break;
+                case PixelMark::Leak: shade(i, kLeak); break;
+                case PixelMark::LeakNearEdge: shade(i, kLeakNearEdge); break;
                 case PixelMark::None: break;  // the dimmed picture
             }
         }

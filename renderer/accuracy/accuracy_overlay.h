@@ -2,7 +2,8 @@
 // The accuracy overlays. Error: red = acne (a truly lit receiver visibly darkened), blue = leak (light where the
 // reference is in shadow), both darker within k texels of a true boundary (the filter's blur, not counted), yellow =
 // the true shadow boundary as a thin line; everything else dimmed (grey: the tool's S x Lambert). Cause: every
-// mismatched pixel in its cause's colour (mismatch_cause.h), the rest as in the error overlay.
+// mismatched pixel in its cause's colour (mismatch_cause.h), the rest as in the error overlay. A coloured pixel keeps
+// the surface's shading (its colour times a factor from its Lambert term), so shapes read under the colours.
 // The legends are the one source of these colours for the CLI and the editor.
 #include "accuracy/accuracy_metrics.h"
 #include "accuracy/shadow_boundary.h"
@@ -20,6 +21,17 @@ const std::vector<LegendEntry>& errorLegend();
 const std::vector<LegendEntry>& causeLegend();  // every cause, then the true boundary
 
 enum class OverlayKind { Error, Cause };
+
+// A coloured pixel is its legend colour times kOverlayMinShade + (1 - kOverlayMinShade) x Lambert: the surface's
+// shading without its shadow (an acne pixel stays red however dark the tool drew it). The floor keeps each colour
+// apart from the others' shades (acne's darkest red is brighter than "acne within k" at full light).
+constexpr float kOverlayMinShade = 0.55f;
+struct OverlayRgb {
+    std::uint8_t red, green, blue;
+};
+OverlayRgb shadedColour(const LegendEntry& entry, float lambert);
+// Whether `rgb` is `entry`'s colour at some shading (for tests and tools that read an overlay picture back).
+bool isShadeOf(const LegendEntry& entry, const std::uint8_t* rgb);
 
 // The picture every overlay colours over, RGBA8, row 0 = top: background dark, every surface grey by the tool's
 // S x Lambert with the ambient term.

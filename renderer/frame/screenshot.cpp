@@ -57,13 +57,13 @@ ReservedNames reserveNames(const fs::path& folder, const std::string& base, bool
     return names;
 }
 
-}  // namespace
-
-ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& folder, const ShadowMap* shadowMap,
-                                 std::chrono::system_clock::time_point when, const PngText& text) {
+// The picture's rows: GL's (bottom first) when `glRows`, else top first.
+ScreenshotResult writePicture(const std::vector<std::uint8_t>& pixels, int width, int height, bool glRows,
+                              const std::string& folder, const ShadowMap* shadowMap,
+                              std::chrono::system_clock::time_point when, const PngText& text) {
     ScreenshotResult result;
     const std::string failed = "screenshot not saved: ";
-    if (target.width() < 1 || target.height() < 1) {
+    if (width < 1 || height < 1 || pixels.size() < std::size_t(width) * std::size_t(height) * 4) {
         result.error = failed + "the view has not been rendered yet";
         return result;
     }
@@ -79,8 +79,7 @@ ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& 
         return result;
     }
 
-    const std::vector<std::uint8_t> pixels = target.readColor();
-    if (std::string error = writePng(names.view.string(), target.width(), target.height(), 4, pixels.data(), true, text);
+    if (std::string error = writePng(names.view.string(), width, height, 4, pixels.data(), glRows, text);
         !error.empty()) {
         std::error_code ec;
         fs::remove(names.view, ec);  // the reserved (empty or partial) file is not a screenshot
@@ -106,6 +105,21 @@ ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& 
         result.shadowMapPng = names.mapPng.string();
     }
     return result;
+}
+
+}  // namespace
+
+ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& folder, const ShadowMap* shadowMap,
+                                 std::chrono::system_clock::time_point when, const PngText& text) {
+    const std::vector<std::uint8_t> pixels =
+        target.width() > 0 && target.height() > 0 ? target.readColor() : std::vector<std::uint8_t>{};
+    return writePicture(pixels, target.width(), target.height(), true, folder, shadowMap, when, text);
+}
+
+ScreenshotResult writeScreenshot(const std::vector<std::uint8_t>& rgbaTopFirst, int width, int height,
+                                 const std::string& folder, const ShadowMap* shadowMap,
+                                 std::chrono::system_clock::time_point when, const PngText& text) {
+    return writePicture(rgbaTopFirst, width, height, false, folder, shadowMap, when, text);
 }
 
 }  // namespace shadowlab

@@ -7,7 +7,9 @@
 #include "shadow/shadow_map.h"
 
 #include <chrono>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
@@ -23,6 +25,13 @@ struct ScreenshotResult {
 // complete and keep their paths in the result.
 ScreenshotResult writeScreenshot(const RenderTarget& target, const std::string& folder,
                                  const ShadowMap* shadowMap = nullptr,
+                                 std::chrono::system_clock::time_point when = std::chrono::system_clock::now(),
+                                 const PngText& text = {});
+
+// As above with the picture the user saw instead of a target's (e.g. A/B's split view): RGBA8, width x height, row 0
+// at the top.
+ScreenshotResult writeScreenshot(const std::vector<std::uint8_t>& rgbaTopFirst, int width, int height,
+                                 const std::string& folder, const ShadowMap* shadowMap = nullptr,
                                  std::chrono::system_clock::time_point when = std::chrono::system_clock::now(),
                                  const PngText& text = {});
 

@@ -7,6 +7,15 @@
 
 namespace shadowlab {
 
+std::vector<std::uint8_t> topRowFirst(const std::vector<std::uint8_t>& glRows, int width, int height) {
+    std::vector<std::uint8_t> out(glRows.size());
+    const std::size_t stride = std::size_t(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(glRows.begin() + std::ptrdiff_t(std::size_t(height - 1 - y) * stride), stride,
+                    out.begin() + std::ptrdiff_t(std::size_t(y) * stride));
+    return out;
+}
+
 int splitColumn(int width, double split) {
     const double f = std::isfinite(split) ? std::clamp(split, 0.0, 1.0) : 0.5;
     return std::clamp(int(std::lround(f * width)), 0, width);

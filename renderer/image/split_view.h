@@ -12,6 +12,9 @@ std::vector<std::uint8_t> composeSplitView(const std::vector<std::uint8_t>& a, c
                                            int width, int height, double split, const std::vector<std::string>& labelA,
                                            const std::vector<std::string>& labelB);
 
+// GL's rows (bottom first, as RenderTarget::readColor gives them) in the order the split view takes (top first).
+std::vector<std::uint8_t> topRowFirst(const std::vector<std::uint8_t>& glRows, int width, int height);
+
 // The divider's column for a split fraction (clamped into the picture).
 int splitColumn(int width, double split);
 

@@ -51,6 +51,8 @@ inline constexpr std::size_t kMaxPresetBytes = 16u << 20;
 
 // The PNG text chunk a screenshot carries its preset in (the preset's JSON, its "scene" included).
 inline constexpr const char* kPresetPngKeyword = "shadowlab.preset";
+// An A/B screenshot's other side (A; the picture's own preset, kPresetPngKeyword, is B's, the one being edited).
+inline constexpr const char* kPresetAPngKeyword = "shadowlab.presetA";
 PngText presetPngText(const Settings& settings, const std::string& scene);
 
 // As presetFromText, plus file errors (missing, unreadable, JSON syntax error at path:line:column). A PNG is read

@@ -1,5 +1,6 @@
 // AccuracyMeter on the built-in scenes: the shipped presets measure as their names promise, the reference is reused
 // when only the tool's settings change, and bad input or a cancel leave a clear answer.
+#include "accuracy/accuracy_overlay.h"
 #include "context/headless_context.h"
 #include "gl_fixture.h"
 #include "light/depth_bias.h"
@@ -26,10 +27,11 @@ AccuracyReport measurePreset(AccuracyMeter& meter, const Scene& scene, const std
     return report;
 }
 
+// Pixels in a legend colour at any shading (the overlay keeps the surface's Lambert shading under its colours).
 long countColour(const AccuracyReport& r, std::uint8_t red, std::uint8_t green, std::uint8_t blue) {
     long n = 0;
     for (std::size_t i = 0; i + 3 < r.overlayRgba.size(); i += 4)
-        n += r.overlayRgba[i] == red && r.overlayRgba[i + 1] == green && r.overlayRgba[i + 2] == blue;
+        n += isShadeOf({"", red, green, blue}, &r.overlayRgba[i]);
     return n;
 }
 

@@ -17,53 +17,11 @@ rc=$?
 if [ $rc -ne 0 ] && grep -q "needs a display" nodisplay.out; then pass "no display: exit $rc with a message"
 else fail "no display: exit $rc: $(cat nodisplay.out)"; fi
 
-for tool in Xvfb xdotool python3; do
-  command -v $tool >/dev/null || { echo "FAIL: $tool is not installed (scripts/install-deps)"; exit 1; }
-done
-
-xvfb_pid="" app_pid=""
-cleanup() {
-  [ -n "$app_pid" ] && kill "$app_pid" 2>/dev/null
-  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null
-  wait 2>/dev/null
-}
-trap cleanup EXIT
-trap "exit 1" TERM INT  # so the EXIT trap runs when the timeout stops us
-
-# Xvfb picks a free display number and writes it to fd 3.
-Xvfb -displayfd 3 -screen 0 1600x900x24 -nolisten tcp 3>display.txt 2>xvfb.err &
-xvfb_pid=$!
-for _ in $(seq 100); do [ -s display.txt ] && break; sleep 0.1; done
-[ -s display.txt ] || { echo "FAIL: Xvfb did not start: $(cat xvfb.err)"; exit 1; }
-export DISPLAY=":$(cat display.txt)"
-
-export SHADOWLAB_CONFIG_DIR="$OUT_DIR/config" SHADOWLAB_USER_PRESETS="$OUT_DIR/user-presets"
-export SHADOWLAB_EDITOR_CONTROLS="$OUT_DIR/controls.json"
-"$SHADOWLAB" edit --scene builtin:textbook --width 1600 --height 900 --screenshot-dir shots >editor.out 2>editor.err &
-app_pid=$!
-
-# control NAME -> "cx cy w h" (centre and size, window pixels) from the controls file; empty if not drawn.
-control() {
-  python3 - "$1" <<'PY' 2>/dev/null
-import json, sys
-r = json.load(open("controls.json")).get(sys.argv[1])
-if r: print(int(r[0] + r[2] / 2), int(r[1] + r[3] / 2), int(r[2]), int(r[3]))
-PY
-}
-# wait_for CONDITION-COMMAND... (up to ~30 s)
-wait_for() { for _ in $(seq 300); do "$@" && return 0; kill -0 "$app_pid" 2>/dev/null || return 1; sleep 0.1; done; return 1; }
-has_control() { [ -f controls.json ] && [ -n "$(control "$1")" ]; }
-click() {
-  local c; c=$(control "$1") || true
-  [ -n "$c" ] || { fail "control $1 not drawn"; return 1; }
-  set -- $c
-  xdotool mousemove --window "$wid" "$1" "$2" sleep 0.15 click 1 sleep 0.2
-}
-
-wid=$(timeout 30 xdotool search --sync --name "ShadowLab" | head -1)
-[ -n "$wid" ] || { echo "FAIL: no editor window: $(cat editor.err)"; exit 1; }
+. "$SOURCE_DIR/tests/e2e/editor_lib.sh"
+start_editor 1600 900 --scene builtin:textbook --screenshot-dir shots
+# The panels live in the sidebars' tabs: Stats shows once its tab is clicked.
+wait_for has_control tab:Stats && click tab:Stats
 wait_for has_control stats.frames && pass "editor window up, a frame rendered" || fail "no frame: $(cat editor.err)"
-xdotool windowfocus --sync "$wid" 2>/dev/null || xdotool windowfocus "$wid"
 xdotool mousemove --window "$wid" 800 450 sleep 0.3
 
 # F12: the viewport as PNG.
@@ -82,6 +40,7 @@ if [ -z "$shot" ]; then fail "F12 wrote no screenshot: $(tail -3 editor.err)"; e
 fi
 
 # "1K", then Ctrl+S on the shipped default preset: Save As opens with "default-tuned"; Enter saves it.
+click "tab:Shadow map" && wait_for has_control shadow.resolution=1K
 click shadow.resolution=1K
 xdotool key ctrl+s
 wait_for has_control saveAs.name && pass "Ctrl+S on a shipped preset asks for a name" || fail "no Save As dialog"
@@ -112,16 +71,19 @@ PY
 else fail "no preset at $saved: $(tail -3 editor.err)"; fi
 
 # A bad scene path: a message, the editor keeps running on its scene.
+click tab:Scene && wait_for has_control scene.path
 click scene.path
 xdotool key ctrl+a
-xdotool type --delay 20 "/nonexistent/missing-scene.gltf"
+# Typed at full speed: printable keys reach a text field without a frame each, and every character arrives in order.
+xdotool type --delay 0 "/nonexistent/Missing_Scene-2 (copy).gltf"
 xdotool key Return
-if wait_for grep -q "missing-scene.gltf" editor.err; then
+if wait_for grep -qF "/nonexistent/Missing_Scene-2 (copy).gltf: " editor.err; then
   sleep 0.5
   kill -0 "$app_pid" 2>/dev/null && pass "bad scene path: message, editor still running" || fail "editor died"
 else fail "no message for a bad scene path: $(tail -3 editor.err)"; fi
 
 # Measure in the Accuracy panel: the worker's numbers arrive while the window keeps running.
+click tab:Accuracy && wait_for has_control accuracy.measure
 click accuracy.measure
 if wait_for grep -q "accuracy: acne" editor.out; then
   pass "Accuracy: Measure printed $(grep -m1 -o 'acne [0-9.]* %' editor.out)"

@@ -187,7 +187,31 @@ void EditorHarness::selectAllAndType(const std::string& text) {
     pressKey(kGlfwEnter);
 }
 
-ControlRect EditorHarness::rect(const std::string& name) const {
+bool EditorHarness::reveal(const std::string& name) {
+    if (hasControl(name)) return true;
+    // As a user would: try one sidebar's tabs until the control shows; a sidebar that does not have it goes back to
+    // the tab it showed (so a panel open on the other side stays open).
+    for (const bool left : {true, false}) {
+        std::vector<std::string> tabs;
+        std::string open;
+        for (const auto& [control, r] : state().controls.all()) {
+            if ((r.x < float(width_) * 0.5f) != left) continue;
+            if (control.rfind("tab:", 0) == 0) tabs.push_back(control);
+            if (control.rfind("tabOpen:", 0) == 0) open = "tab:" + control.substr(8);
+        }
+        for (const std::string& tab : tabs) {
+            const ControlRect* r = state().controls.find(tab);
+            if (!r) continue;
+            clickAt(r->centerX(), r->centerY());
+            if (hasControl(name)) return true;
+        }
+        if (const ControlRect* r = state().controls.find(open)) clickAt(r->centerX(), r->centerY());
+    }
+    return false;
+}
+
+ControlRect EditorHarness::rect(const std::string& name) {
+    reveal(name);
     const ControlRect* r = state().controls.find(name);
     if (!r) {
         ADD_FAILURE() << "control " << name << " was not drawn";

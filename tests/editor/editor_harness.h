@@ -46,7 +46,10 @@ public:
     static constexpr int kEnterKey = 257;  // GLFW_KEY_ENTER
 
     bool hasControl(const std::string& name) const { return state().controls.find(name) != nullptr; }
-    ControlRect rect(const std::string& name) const;  // fails the test if the control was not drawn
+    // A control's rectangle; a control in a sidebar tab that is not open is shown first by clicking the tabs (as a
+    // user would). Fails the test if the control is drawn nowhere.
+    ControlRect rect(const std::string& name);
+    bool reveal(const std::string& name);  // true once the control is drawn
 
     // The whole window as drawn (RGBA, top row first) and as a PNG under the test output (look at it).
     std::vector<std::uint8_t> readWindow() const;

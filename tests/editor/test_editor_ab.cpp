@@ -3,9 +3,15 @@
 #include "editor_harness.h"
 
 #include "accuracy/compare_label.h"
+#include "image/image_io.h"
+#include "image/png_text.h"
+#include "image/split_view.h"
+#include "settings/preset_io.h"
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 namespace shadowlab::editor::test {
@@ -75,7 +81,7 @@ TEST_F(EditorAb, SnapshotEditDragSwapApply) {
     ASSERT_TRUE(ab.active);
     EXPECT_EQ(ab.renders, 1) << "A rendered once for its snapshot";
     EXPECT_TRUE(ab.haveStatsA);
-    EXPECT_TRUE(h.hasControl("ab.divider"));
+    EXPECT_TRUE(h.reveal("ab.divider"));
 
     // B: no bias at all (acne over the lit surfaces). A keeps its picture without a pass.
     const long bFrames = h.state().renderedFrames;
@@ -189,6 +195,69 @@ TEST_F(EditorAb, EachSideShowsTheAccuracyMeasuredForIt) {
     h.drag("viewport.image", 60.0f, 0.0f);
     EXPECT_EQ(abLabel(h.state(), true, h.editor().currentView()).size(), 2u);
     EXPECT_EQ(abLabel(h.state(), false, h.editor().currentView()).size(), 2u);
+}
+
+}  // namespace shadowlab::editor::test
+
+namespace shadowlab::editor::test {
+
+// F12 while comparing saves what the view shows: A left of the divider, B right of it, both labelled; the picture
+// carries B's preset (the one being edited), and A's under its own keyword.
+TEST_F(EditorAb, F12SavesTheSplitPictureWithBothPresets) {
+    EditorHarness& h = *harness;
+    h.click("ab.start");
+    h.settle();
+    type("shadow.depthBias", "0");
+    type("shadow.slopeScaledDepthBias", "0");
+    type("shadow.normalOffset", "0");
+    h.pressKey(keys::kF12);
+    h.settle();
+    std::vector<std::filesystem::path> shots;
+    for (const auto& e : std::filesystem::directory_iterator(folder / "screenshots"))
+        if (e.path().extension() == ".png") shots.push_back(e.path());
+    ASSERT_EQ(shots.size(), 1u);
+    const std::optional<PngImage> png = readPng(shots[0].string());
+    ASSERT_TRUE(png.has_value());
+    const RenderTarget& b = h.editor().viewportTarget();
+    ASSERT_EQ(png->width, b.width());
+    ASSERT_EQ(png->height, b.height());
+    ASSERT_EQ(png->channels, 4);
+    // Rows in the lower half (below the labels): left of the divider differs from B's own picture, right equals it.
+    const std::vector<std::uint8_t> bTop = topRowFirst(b.readColor(), b.width(), b.height());
+    const int split = splitColumn(b.width(), h.state().ab.divider);
+    long leftDiffer = 0, rightDiffer = 0, leftTotal = 0, rightTotal = 0;
+    for (int y = b.height() / 2; y < b.height() * 9 / 10; ++y)
+        for (int x = 4; x < b.width() - 4; ++x) {
+            if (std::abs(x - split) < 4) continue;
+            const std::size_t i = (std::size_t(y) * std::size_t(b.width()) + std::size_t(x)) * 4;
+            int d = 0;
+            for (std::size_t c = 0; c < 3; ++c) d = std::max(d, std::abs(int(png->pixels[i + c]) - int(bTop[i + c])));
+            (x < split ? leftDiffer : rightDiffer) += d > 3;
+            ++(x < split ? leftTotal : rightTotal);
+        }
+    EXPECT_GT(double(leftDiffer) / double(leftTotal), 0.02) << "the left part is not A's picture";
+    EXPECT_LT(double(rightDiffer) / double(rightTotal), 0.001) << "the right part is not B's picture";
+    // The labels' boxes darken both top corners.
+    auto luma = [&](int x, int y) {
+        const std::size_t i = (std::size_t(y) * std::size_t(b.width()) + std::size_t(x)) * 4;
+        return int(png->pixels[i]) + int(png->pixels[i + 1]) + int(png->pixels[i + 2]);
+    };
+    EXPECT_LT(luma(12, 12), 150);
+    EXPECT_LT(luma(b.width() - 12, 12), 150);
+    // B's preset loads back from the picture; A's rides along.
+    const PresetLoadResult loaded = loadPresetFile(shots[0].string());
+    ASSERT_TRUE(loaded.settings.has_value()) << (loaded.errors.empty() ? "" : loaded.errors.front());
+    EXPECT_EQ(loaded.settings->lights[0].shadow.depthBias, 0.0f);
+    std::ifstream in(shots[0], std::ios::binary);
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::optional<std::string> a = findPngText(bytes.data(), bytes.size(), kPresetAPngKeyword);
+    ASSERT_TRUE(a.has_value()) << "A's preset is not in the picture";
+    const PresetLoadResult loadedA = presetFromText(*a);
+    ASSERT_TRUE(loadedA.settings.has_value()) << (loadedA.errors.empty() ? "" : loadedA.errors.front());
+    EXPECT_EQ(loadedA.settings->lights[0].shadow.depthBias, h.state().ab.a.lights[0].shadow.depthBias);
+    const Message* said = h.state().lastMessage();
+    ASSERT_NE(said, nullptr);
+    EXPECT_NE(said->text.find("A/B as shown"), std::string::npos) << said->text;
 }
 
 }  // namespace shadowlab::editor::test

@@ -2,6 +2,7 @@
 // built (the work runs on the editor's accuracy worker, in its own EGL context), an edit makes them stale, Auto
 // measures once after the view is still, Suggest bias finds and applies a bias, the overlay view shows acne in red,
 // Cancel stops a job, and a scene switch during a measurement is safe.
+#include "accuracy/accuracy_overlay.h"
 #include "editor_harness.h"
 #include "settings/preset_io.h"
 #include "settings/settings_fields.h"
@@ -95,7 +96,7 @@ TEST_F(EditorAccuracy, MeasureGivesNumbersWhileTheUiKeepsDrawing) {
     // The default preset is free of acne on the textbook; the numbers are shown, and they are current.
     EXPECT_LT(a.report->acnePercent, 0.1);
     EXPECT_EQ(a.stale, "");
-    EXPECT_TRUE(h.hasControl("accuracy.acne"));
+    EXPECT_TRUE(h.reveal("accuracy.acne"));
     EXPECT_FALSE(h.hasControl("accuracy.stale"));
     EXPECT_EQ(a.measurements, 1);
     h.saveWindow("accuracy-measured");
@@ -117,7 +118,7 @@ TEST_F(EditorAccuracy, AnEditOrACameraMoveMakesTheNumbersStale) {
     h.drag("shadow.depthBias", 60.0f, 0.0f);
     h.frame();
     EXPECT_NE(a.stale.find("shadow.depthBias changed"), std::string::npos) << a.stale;
-    EXPECT_TRUE(h.hasControl("accuracy.stale"));
+    EXPECT_TRUE(h.reveal("accuracy.stale"));
     h.drag("viewport.image", 60.0f, 10.0f);
     EXPECT_NE(a.stale.find("the camera moved"), std::string::npos) << a.stale;
     // The view mode is not part of what was measured.
@@ -200,7 +201,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
         EXPECT_EQ(a.measurements, 1);
         seen.push_back({slope, a.report->counts.acne});
         if (step == 2) {
-            EXPECT_TRUE(h.hasControl("accuracy.live"));
+            EXPECT_TRUE(h.reveal("accuracy.live"));
             h.saveWindow("accuracy-live-drag");
         }
     }
@@ -235,6 +236,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     EXPECT_EQ(a.report->counts.acne, live.acne);
     EXPECT_EQ(a.report->counts.wrong, live.wrong);
     EXPECT_EQ(a.report->counts.mismatched, live.mismatched);
+    ASSERT_TRUE(h.reveal("accuracy.measure"));
     EXPECT_FALSE(h.hasControl("accuracy.live"));
 
     // A camera move needs new rays: no live count, the full measure follows once still.
@@ -293,13 +295,13 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
     EXPECT_NE(h.editor().windowTitle().find(" *"), std::string::npos);
     EXPECT_EQ(a.stale, "") << "the numbers describe the applied settings";
-    EXPECT_TRUE(h.hasControl("accuracy.result"));
+    EXPECT_TRUE(h.reveal("accuracy.result"));
     h.saveWindow("accuracy-suggested");
 
     // Save as preset... opens the preset session's Save As, and the saved preset carries the bias.
     h.click("accuracy.saveAs");
     h.frame(2);
-    ASSERT_TRUE(h.hasControl("saveAs.name"));
+    ASSERT_TRUE(h.reveal("saveAs.name"));
     h.selectAllAndType("suggested");
     const std::filesystem::path saved = folder / "user-presets" / "suggested.json";
     ASSERT_TRUE(std::filesystem::exists(saved));
@@ -459,7 +461,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     EXPECT_EQ(a.report->mainCause(), MismatchCause::CasterCulled);
     h.click("accuracy.tab.causes");
     h.frame(2);
-    EXPECT_TRUE(h.hasControl("accuracy.causes"));
+    EXPECT_TRUE(h.reveal("accuracy.causes"));
     h.click("view");
     h.click("view=accuracy overlay by cause");
     h.frame(2);
@@ -472,7 +474,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     for (int y = int(view.y); y < int(view.y + view.h); ++y)
         for (int x = int(view.x); x < int(view.x + view.w); ++x) {
             const std::uint8_t* p = &window[(std::size_t(y) * h.width() + x) * 4];
-            painted += p[0] == culled.red && p[1] == culled.green && p[2] == culled.blue;
+            painted += isShadeOf({"", culled.red, culled.green, culled.blue}, p);  // at the surface's shading
         }
     EXPECT_GT(painted, 500) << "the culled caster's leak is painted in its cause colour";
     h.saveWindow("accuracy-roof-by-cause");
@@ -501,8 +503,8 @@ TEST_F(EditorAccuracy, CoarseMapWarningShowsInTheNumbersTab) {
     EXPECT_NE(a.report->coarseMapWarning, "");
     h.click("accuracy.tab.numbers");
     h.frame(2);
-    EXPECT_TRUE(h.hasControl("accuracy.coarseMap"));
-    EXPECT_TRUE(h.hasControl("accuracy.wrong"));
+    EXPECT_TRUE(h.reveal("accuracy.coarseMap"));
+    EXPECT_TRUE(h.reveal("accuracy.wrong"));
 }
 
 // Flicker from the panel: a light turned by a sub-texel step on a point-filtered 256² map flickers at the shadow
@@ -529,8 +531,8 @@ TEST_F(EditorAccuracy, FlickerTabPlaysAMotionAndShowsItsFigures) {
     const ControlRect view = h.rect("viewport.image");
     EXPECT_EQ(a.flicker->width, int(view.w));
     h.frame(2);
-    EXPECT_TRUE(h.hasControl("accuracy.flicker.figure"));
-    EXPECT_TRUE(h.hasControl("accuracy.flicker.overlay"));
+    EXPECT_TRUE(h.reveal("accuracy.flicker.figure"));
+    EXPECT_TRUE(h.reveal("accuracy.flicker.overlay"));
     EXPECT_FALSE(a.report.has_value()) << "flicker keeps its own result; the Numbers tab is not overwritten";
     h.saveWindow("accuracy-flicker-light");
 

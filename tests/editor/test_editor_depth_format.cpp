@@ -38,7 +38,7 @@ TEST(EditorDepthFormat, D32fToD16ReexpressesDepthBiasAndUndoRestoresIt) {
     // An edit made after the change survives the undo.
     ASSERT_TRUE(h.state().edit("shadow.slopeScaledDepthBias", 3.5));
     h.frame();
-    ASSERT_TRUE(h.hasControl("status.undo"));
+    ASSERT_TRUE(h.reveal("status.undo"));
     h.click("status.undo");
     EXPECT_EQ(h.state().settings.lights[0].shadow.slopeScaledDepthBias, 3.5f);
     EXPECT_EQ(h.state().settings.lights[0].shadow.format, DepthFormat::D32F);

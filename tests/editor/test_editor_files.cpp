@@ -130,7 +130,7 @@ TEST_F(EditorFiles, ABigSceneLoadsOnAThreadWhileFramesKeepComing) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
         h.frame();
         ++framesBeforeAdopted;
-        if (h.state().loading) EXPECT_TRUE(h.hasControl("scene.progress"));
+        if (h.state().loading) EXPECT_TRUE(h.reveal("scene.progress"));
     }
     EXPECT_EQ(h.state().sceneSpec, helmet);
     EXPECT_GT(framesBeforeAdopted, 0);

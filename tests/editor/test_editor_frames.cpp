@@ -3,6 +3,9 @@
 #include "frame/camera.h"
 #include "frame/orbit_camera.h"
 
+#include <chrono>
+#include <cstdio>
+
 namespace shadowlab::editor::test {
 
 namespace {
@@ -90,6 +93,46 @@ TEST_F(EditorFrames, LightAnimationPreviewsWithoutChangingThePreset) {
     EXPECT_GE(h.state().renderedFrames, rendered + 4);
     EXPECT_TRUE(h.state().stats.shadowPass.ran);
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
+}
+
+}  // namespace shadowlab::editor::test
+
+namespace shadowlab::editor::test {
+
+// Typing a path, hovering and opening a combo change only the UI: the viewport keeps its last picture and the
+// renderer runs no pass (on llvmpipe a pass per key made typing lag by a frame per key). The per-frame time of such
+// frames is printed (the README quotes it).
+TEST_F(EditorFrames, UiOnlyFramesRunNoPass) {
+    EditorHarness& h = *harness;
+    h.click("scene.path");
+    h.pressKey('A', /*ctrl=*/true);
+    h.pressKey(259);  // GLFW_KEY_BACKSPACE: the field is empty
+    h.frame(2);
+    ASSERT_EQ(h.state().scenePathInput, "");
+    const long rendered = h.state().renderedFrames;
+    const long idle = h.state().idleFrames;
+    const std::string typed = "/tmp/some/scene/file-name.gltf";
+    const auto start = std::chrono::steady_clock::now();
+    for (char c : typed) h.typeText(std::string(1, c));  // one frame per key, as a typist's events arrive
+    const double perKeyMs =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / double(typed.size());
+    EXPECT_EQ(h.state().scenePathInput, typed);
+    EXPECT_EQ(h.state().renderedFrames, rendered) << "a key typed into a text field rendered the scene";
+    EXPECT_EQ(h.state().idleFrames, idle + long(typed.size()));
+    // Hover the toolbar, open the view combo and close it with Escape: still no pass.
+    h.moveMouse(h.rect("viewport.frame").centerX(), h.rect("viewport.frame").centerY());
+    h.click("view");
+    ASSERT_TRUE(h.hasControl("view=lit"));
+    h.pressKey(256);  // GLFW_KEY_ESCAPE
+    EXPECT_EQ(h.state().renderedFrames, rendered);
+    // For scale: a frame that does render (the camera moved).
+    const auto moved = std::chrono::steady_clock::now();
+    h.drag("viewport.image", 40.0f, 0.0f, 0, 4);
+    const long passes = h.state().renderedFrames - rendered;
+    const double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - moved).count() / 8.0;  // drag: 8 frames
+    EXPECT_GT(passes, 0);
+    std::printf("per key: %.1f ms (no pass); a frame while orbiting: %.1f ms (%ld passes) at %dx%d\n", perKeyMs,
+                frameMs, passes, h.width(), h.height());
 }
 
 }  // namespace shadowlab::editor::test

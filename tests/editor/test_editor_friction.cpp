@@ -80,7 +80,7 @@ TEST_F(EditorFriction, EscapeClosesAnOpenCombo) {
     EditorHarness& h = *harness;
     h.click("view");
     h.frame();
-    ASSERT_TRUE(h.hasControl("view=lit")) << "the view combo opened";
+    ASSERT_TRUE(h.reveal("view=lit")) << "the view combo opened";
     h.pressKey(kEscape);
     h.frame();
     EXPECT_FALSE(h.hasControl("view=lit")) << "Escape left the combo open";

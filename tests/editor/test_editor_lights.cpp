@@ -47,8 +47,8 @@ TEST_F(EditorLights, AddingALightAppendsItSelectsItAndTheFrameListsItsView) {
     ASSERT_NE(viewOf(h.state().stats, 1), nullptr) << "the frame has no shadow view of the new light";
     EXPECT_NE(h.editor().renderer().viewMap(1, -1), nullptr);
     // Stats shows the table of views, and the panels editing the selected light name it.
-    EXPECT_TRUE(h.hasControl("stats.views"));
-    EXPECT_TRUE(h.hasControl("lights.select.1"));
+    EXPECT_TRUE(h.reveal("stats.views"));
+    EXPECT_TRUE(h.reveal("lights.select.1"));
 }
 
 TEST_F(EditorLights, DraggingTheSelectedLightsBiasChangesOnlyThatLightAndRerendersOnlyItsView) {
@@ -120,6 +120,7 @@ TEST_F(EditorLights, RemovingLightsKeepsTheOthersAndZeroLightsRenderAmbientOnly)
     h.frame(2);
     EXPECT_TRUE(h.state().stats.ok) << h.state().stats.error;
     EXPECT_EQ(h.state().stats.lightCount, 0u);
+    ASSERT_TRUE(h.reveal("panel:Shadow map"));
     EXPECT_FALSE(h.hasControl("shadow.depthBias")) << "a bias control with no light to edit";
     h.click("lights.add.point");
     ASSERT_EQ(h.state().settings.lights.size(), 1u);

@@ -1,10 +1,14 @@
-// Every panel is there, the first-run layout does not overlap, and moving a control (through ImGui's IO, at the
+// Every panel is in a sidebar tab and readable whole at 1280x720 .. 1920x1080, and moving a control (through ImGui's IO, at the
 // widget's real rectangle) changes the renderer's Settings; refusals keep the previous value.
 #include "editor/panels/panel_registry.h"
 #include "editor_harness.h"
 #include "settings/settings_fields.h"
 
+#include <imgui_internal.h>
+
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -27,32 +31,92 @@ protected:
 
 }  // namespace
 
+// What the user cannot read: ImGui windows drawn this frame (the sidebars, their child regions) whose content
+// reaches past their visible area, a label cut at the edge or content below the bottom that needs scrolling; and
+// table cells whose text is wider than their column (a stretched column clips it).
+std::vector<std::string> cutContent() {
+    std::vector<std::string> cut;
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    for (ImGuiWindow* w : g.Windows) {
+        if (!w->Active || w->Hidden || (w->Flags & (ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup)) ||
+            std::string(w->Name).rfind("Debug##", 0) == 0 || std::string(w->Name) == "Viewport")
+            continue;
+        // A child with a horizontal scroll bar (a wide table's) shows its columns by scrolling: nothing is lost.
+        const float overX = w->ScrollbarX ? 0.0f : w->DC.CursorMaxPos.x - w->InnerClipRect.Max.x;
+        const float overY = w->DC.CursorMaxPos.y - w->InnerClipRect.Max.y;
+        if (overX > 1.0f || overY > 1.0f)
+            cut.push_back(std::string(w->Name) + " needs " + std::to_string(int(std::ceil(std::max(0.0f, overX)))) +
+                          " px more width, " + std::to_string(int(std::ceil(std::max(0.0f, overY)))) + " px more height");
+    }
+    // A tab bar too narrow for its tabs, or a tab squeezed narrower than its label (ImGui cuts it with an ellipsis).
+    for (int n = 0; n < g.TabBars.GetMapSize(); ++n) {
+        const ImGuiTabBar* bar = g.TabBars.TryGetMapData(n);
+        if (!bar || bar->CurrFrameVisible != g.FrameCount) continue;
+        if (bar->WidthAllTabsIdeal > bar->BarRect.GetWidth() + 0.5f)
+            cut.push_back("a tab bar needs " + std::to_string(int(bar->WidthAllTabsIdeal - bar->BarRect.GetWidth())) +
+                          " px more for its tabs");
+        for (const ImGuiTabItem& tab : bar->Tabs)
+            if (tab.Width + 0.5f < tab.ContentWidth)  // ContentWidth: the label with its padding
+                cut.push_back("a tab is " +
+                              std::to_string(int(tab.ContentWidth - tab.Width)) +
+                              " px narrower than its label");
+    }
+    for (int n = 0; n < g.Tables.GetMapSize(); ++n) {
+        const ImGuiTable* t = g.Tables.TryGetMapData(n);
+        if (!t || t->LastFrameActive != g.FrameCount || (t->Flags & ImGuiTableFlags_ScrollX)) continue;
+        for (int c = 0; c < t->ColumnsCount; ++c) {
+            const ImGuiTableColumn& col = t->Columns[c];
+            if (col.IsEnabled && col.IsVisibleX && col.ContentMaxXUnfrozen > col.ClipRect.Max.x + 1.0f)
+                cut.push_back(std::string(t->OuterWindow->Name) + ": a table column cuts its text by " +
+                              std::to_string(int(col.ContentMaxXUnfrozen - col.ClipRect.Max.x)) + " px");
+        }
+    }
+    return cut;
+}
+
 class EditorLayout : public ::testing::TestWithParam<std::pair<int, int>> {};
 
-TEST_P(EditorLayout, EveryPanelIsDrawnWithoutOverlapAroundAViewportThatShowsTheScene) {
+// Every sidebar tab, opened as a user would: its panels are drawn inside its sidebar, beside the viewport, with
+// every label whole and nothing to scroll; the toolbar's controls lie inside the view.
+TEST_P(EditorLayout, EveryTabShowsItsPanelsWholeBesideAViewportThatShowsTheScene) {
     const auto [width, height] = GetParam();
     const std::string name = "layout-" + std::to_string(width) + "x" + std::to_string(height);
     EditorHarness h(testOptions(testFolder(name)), width, height);
     h.settle();
-    const std::vector<std::string> expected = {"Scene", "Presets", "Lights", "Light", "Projection", "Shadow map",
-                                               "Sampling", "Shadow map viewer", "Stats", "Accuracy", "Probe"};
-    ASSERT_EQ(panels().size(), expected.size());
-    std::vector<ControlRect> rects;
-    for (const std::string& title : expected) {
-        ASSERT_TRUE(h.hasControl("panel:" + title)) << title;
-        rects.push_back(h.rect("panel:" + title));
-    }
     const ControlRect view = h.rect("viewport.image");
-    EXPECT_GT(view.w, 0.4f * float(width));
-    EXPECT_GT(view.h, 0.5f * float(height));
-    for (std::size_t i = 0; i < rects.size(); ++i) {
-        EXPECT_FALSE(overlap(rects[i], view)) << expected[i] << " covers the viewport";
-        EXPECT_LE(rects[i].x + rects[i].w, float(h.width()) + 0.5f) << expected[i];
-        EXPECT_LE(rects[i].y + rects[i].h, float(h.height()) + 0.5f) << expected[i];
-        for (std::size_t j = i + 1; j < rects.size(); ++j)
-            EXPECT_FALSE(overlap(rects[i], rects[j])) << expected[i] << " overlaps " << expected[j];
+    EXPECT_GT(view.w, 0.42f * float(width));
+    EXPECT_GT(view.h, 0.8f * float(height));
+    for (const std::string control : {"view", "ab.start", "viewport.frustum", "viewport.frame", "viewport.resetView",
+                                      "viewport.screenshot", "viewport.screenshotWithMap"}) {
+        const ControlRect r = h.rect(control);
+        EXPECT_GE(r.x, view.x) << control;
+        EXPECT_LE(r.x + r.w, view.x + view.w) << control << " is cut at the view's edge";
+        EXPECT_LT(r.y + r.h, view.y) << control << " is not above the image";
     }
+    std::vector<std::string> seen;
+    for (const Sidebar side : {Sidebar::Left, Sidebar::Right}) {
+        const ControlRect bar = h.rect(side == Sidebar::Left ? "sidebar:left" : "sidebar:right");
+        EXPECT_FALSE(overlap(bar, view));
+        for (const std::string& tab : sidebarTabs(side)) {
+            h.click("tab:" + tab);
+            h.frame(2);
+            for (const Panel* panel : tabPanels(side, tab)) {
+                seen.emplace_back(panel->title);
+                ASSERT_TRUE(h.reveal(std::string("panel:") + panel->title)) << panel->title;
+                const ControlRect r = h.rect(std::string("panel:") + panel->title);
+                EXPECT_GE(r.x, bar.x) << panel->title;
+                EXPECT_LE(r.x + r.w, bar.x + bar.w) << panel->title;
+                EXPECT_LE(r.y + r.h, float(height) + 0.5f) << panel->title;
+            }
+            for (const std::string& cut : cutContent()) ADD_FAILURE() << name << ", tab " << tab << ": " << cut;
+            h.saveWindow(name + "-" + tab);
+        }
+    }
+    EXPECT_EQ(seen.size(), panels().size()) << "every panel is in a tab";
+
     // The renderer draws at the viewport's size, and the window shows a scene there, and a map in the viewer.
+    h.click("tab:Map");
+    h.frame(2);
     EXPECT_EQ(h.editor().viewportTarget().width(), int(view.w));
     EXPECT_EQ(h.editor().viewportTarget().height(), int(view.h));
     const std::vector<std::uint8_t> window = h.readWindow();
@@ -68,6 +132,39 @@ INSTANTIATE_TEST_SUITE_P(WindowSizes, EditorLayout,
                          [](const auto& info) {
                              return std::to_string(info.param.first) + "x" + std::to_string(info.param.second);
                          });
+
+// With a measurement the Accuracy tab holds the most text (numbers, causes with remedies, counts, cost), and the view
+// combo its longest choice: still nothing cut at 1280x720.
+TEST(EditorLayoutMeasured, AccuracyTabsAndTheOverlayChoiceAreWholeAt1280x720) {
+    EditorOptions options = testOptions(testFolder("layout-measured"));
+    options.scene = "builtin:roof";
+    EditorHarness h(options, 1280, 720);
+    h.settle();
+    h.click("shadow.cullMode");
+    h.click("shadow.cullMode=back");  // the roof's caster is culled: a cause with a long name and remedy
+    h.click("accuracy.measure");
+    const auto start = std::chrono::steady_clock::now();
+    while (h.state().accuracy.running &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 240.0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        h.frame();
+    }
+    h.frame(2);
+    ASSERT_TRUE(h.state().accuracy.report.has_value()) << h.state().accuracy.error;
+    for (const std::string tab : {"numbers", "causes", "counts", "cost", "search", "flicker"}) {
+        h.click("accuracy.tab." + tab);
+        h.frame(2);
+        for (const std::string& cut : cutContent()) ADD_FAILURE() << "Accuracy, " << tab << ": " << cut;
+    }
+    h.click("view");
+    h.click("view=accuracy overlay by cause");
+    h.click("accuracy.tab.causes");
+    h.frame(2);
+    const ControlRect combo = h.rect("view");
+    EXPECT_GT(combo.w, ImGui::CalcTextSize("accuracy overlay by cause").x + ImGui::GetFrameHeight())
+        << "the combo cuts its choice";
+    h.saveWindow("layout-1280x720-roof-by-cause");
+}
 
 TEST_F(EditorPanels, DraggingDepthBiasRaisesItAndTheNextFrameRedrawsTheShadowMap) {
     EditorHarness& h = *harness;
@@ -112,11 +209,12 @@ TEST_F(EditorPanels, TypedSlopeOutsideItsRangeIsRefusedAndThePreviousValueKept) 
 
 TEST_F(EditorPanels, FilterComboSwitchesToPoissonAndShowsItsRadius) {
     EditorHarness& h = *harness;
+    ASSERT_TRUE(h.reveal("filter.kind"));
     EXPECT_FALSE(h.hasControl("filter.poissonRadius"));
     h.click("filter.kind");
     h.click("filter.kind=poisson");
     EXPECT_EQ(h.state().settings.filter.kind, FilterKind::Poisson);
-    EXPECT_TRUE(h.hasControl("filter.poissonRadius"));
+    EXPECT_TRUE(h.reveal("filter.poissonRadius"));
     h.click("sampler.addressMode");
     h.click("sampler.addressMode=wrap");
     EXPECT_EQ(h.state().settings.sampler.addressMode, AddressMode::Wrap);
@@ -161,7 +259,7 @@ TEST_F(EditorPanels, LightAnglesAndProjectionControlsReachTheSettings) {
     h.click("light.type");
     h.click("light.type=spot");
     EXPECT_EQ(h.state().settings.lights[0].type, LightType::Spot);
-    EXPECT_TRUE(h.hasControl("light.spotConeDeg"));
+    EXPECT_TRUE(h.reveal("light.spotConeDeg"));
 
     EXPECT_TRUE(h.state().settings.lights[0].projection.autoFit);
     h.click("projection.autoFit");

@@ -39,12 +39,13 @@ TEST_F(EditorPresets, ClickingAShippedPresetLoadsIt) {
 TEST_F(EditorPresets, AnEditMarksThePresetUnsavedAndRevertUndoesIt) {
     EditorHarness& h = *harness;
     EXPECT_EQ(h.editor().windowTitle().find('*'), std::string::npos);
+    const float cleanTab = h.rect("tab:Scene").w;
     h.click("shadow.resolution=1K");
     EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
     EXPECT_NE(h.editor().windowTitle().find('*'), std::string::npos);
     h.frame();
-    const std::string current = h.state().controls.find("preset.current") ? "drawn" : "";
-    EXPECT_EQ(current, "drawn");
+    EXPECT_GT(h.rect("tab:Scene").w, cleanTab) << "the Presets panel's tab shows the unsaved marker";
+    EXPECT_TRUE(h.reveal("preset.current"));
     h.click("preset.revert");
     EXPECT_EQ(h.state().settings, shipped("default"));
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
@@ -54,7 +55,7 @@ TEST_F(EditorPresets, CtrlSOnAShippedPresetSavesACopyInTheUserFolderThatLoadsBac
     EditorHarness& h = *harness;
     h.click("shadow.resolution=1K");
     h.pressKey(keys::kS, /*ctrl=*/true);
-    ASSERT_TRUE(h.hasControl("saveAs.name")) << "Ctrl+S on a shipped preset opens Save As";
+    ASSERT_TRUE(h.reveal("saveAs.name")) << "Ctrl+S on a shipped preset opens Save As";
     h.selectAllAndType("my-tuned");
     const std::filesystem::path saved = folder / "user-presets" / "my-tuned.json";
     ASSERT_TRUE(std::filesystem::exists(saved));
@@ -67,7 +68,7 @@ TEST_F(EditorPresets, CtrlSOnAShippedPresetSavesACopyInTheUserFolderThatLoadsBac
     // The shipped file is untouched, and the user's copy is listed.
     EXPECT_EQ(shipped("default").lights[0].shadow.resolution, 2048);
     h.frame();
-    EXPECT_TRUE(h.hasControl("preset.user=my-tuned"));
+    EXPECT_TRUE(h.reveal("preset.user=my-tuned"));
 
     // Now a user preset: Ctrl+S saves in place, without asking.
     h.click("shadow.resolution=512");
@@ -92,7 +93,7 @@ TEST_F(EditorPresets, YourOwnPresetsCanBeRenamedAndDeletedShippedOnesCannot) {
     }();
 
     h.click("preset.rename");
-    ASSERT_TRUE(h.hasControl("rename.name"));
+    ASSERT_TRUE(h.reveal("rename.name"));
     h.selectAllAndType("second-name");
     EXPECT_FALSE(std::filesystem::exists(users / "first-name.json"));
     ASSERT_TRUE(std::filesystem::exists(users / "second-name.json"));
@@ -100,7 +101,7 @@ TEST_F(EditorPresets, YourOwnPresetsCanBeRenamedAndDeletedShippedOnesCannot) {
     std::ifstream renamed(users / "second-name.json");
     EXPECT_EQ(std::string(std::istreambuf_iterator<char>(renamed), {}), text) << "a rename rewrites nothing";
     h.frame();
-    EXPECT_TRUE(h.hasControl("preset.user=second-name"));
+    EXPECT_TRUE(h.reveal("preset.user=second-name"));
 
     // Delete moves the file into deleted/ (nothing the user saved is lost); the settings stay.
     const Settings before = h.state().settings;
@@ -111,6 +112,7 @@ TEST_F(EditorPresets, YourOwnPresetsCanBeRenamedAndDeletedShippedOnesCannot) {
     EXPECT_EQ(h.state().settings, before);
     EXPECT_FALSE(h.state().preset.canSaveInPlace());
     h.frame();
+    ASSERT_TRUE(h.reveal("preset.save"));
     EXPECT_FALSE(h.hasControl("preset.user=second-name"));
 }
 
@@ -119,7 +121,7 @@ TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
     h.click("shadow.resolution=1K");
     h.wheel("preset.shipped=default", -5.0f);  // "soft" sorts last: scroll the list down to it, as a user would
     h.click("preset.shipped=soft");
-    ASSERT_TRUE(h.hasControl("dialog.cancel")) << "the unsaved-changes question was not asked";
+    ASSERT_TRUE(h.reveal("dialog.cancel")) << "the unsaved-changes question was not asked";
     h.click("dialog.cancel");
     EXPECT_EQ(h.state().settings.lights[0].shadow.resolution, 1024) << "Cancel keeps the edits";
     EXPECT_EQ(h.state().preset.name(), "default");
@@ -134,7 +136,7 @@ TEST_F(EditorPresets, SwitchingPresetWithUnsavedChangesAsksFirst) {
     h.wheel("preset.shipped=soft", 5.0f);  // back up to "acne", the first
     h.click("preset.shipped=acne");
     h.click("dialog.save");
-    ASSERT_TRUE(h.hasControl("saveAs.name"));
+    ASSERT_TRUE(h.reveal("saveAs.name"));
     h.selectAllAndType("soft-1k");
     EXPECT_TRUE(std::filesystem::exists(folder / "user-presets" / "soft-1k.json"));
     EXPECT_EQ(h.state().preset.name(), "acne");
@@ -151,7 +153,7 @@ TEST_F(EditorPresets, QuittingWithUnsavedChangesAsksAndCancelKeepsTheEditorOpen)
     h.click("shadow.resolution=4K");
     h.editor().requestQuit();  // what the window's close button does
     h.frame();
-    ASSERT_TRUE(h.hasControl("dialog.cancel"));
+    ASSERT_TRUE(h.reveal("dialog.cancel"));
     h.click("dialog.cancel");
     EXPECT_FALSE(h.editor().quitConfirmed());
     h.pressKey(keys::kQ, /*ctrl=*/true);
@@ -167,7 +169,7 @@ TEST_F(EditorPresets, SaveAsRefusesToReplaceAnExistingFileUnlessAsked) {
     h.click("shadow.resolution=4K");
     h.click("preset.saveAs");
     h.selectAllAndType("mine");
-    ASSERT_TRUE(h.hasControl("saveAs.replace")) << "an existing name must be confirmed";
+    ASSERT_TRUE(h.reveal("saveAs.replace")) << "an existing name must be confirmed";
     EXPECT_EQ(loadPresetFile((folder / "user-presets" / "mine.json").string()).settings->lights[0].shadow.resolution, 2048);
     h.click("saveAs.replace");
     EXPECT_EQ(loadPresetFile((folder / "user-presets" / "mine.json").string()).settings->lights[0].shadow.resolution, 4096);

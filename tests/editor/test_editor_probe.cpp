@@ -34,7 +34,7 @@ bool nearColour(const std::uint8_t* p, int r, int g, int b) {
 
 TEST_F(EditorProbe, ClickingAPixelExplainsItAndTheViewerOutlinesItsTaps) {
     EditorHarness& h = *harness;
-    EXPECT_TRUE(h.hasControl("probe.hint")) << "the Probe panel says how to use it before the first probe";
+    EXPECT_TRUE(h.reveal("probe.hint")) << "the Probe panel says how to use it before the first probe";
     const ImVec4 view = h.editor().viewportRect();
     const int px = int(view.z / 2), py = int(view.w / 2);
     const ImVec2 at = windowPoint(px, py);
@@ -47,15 +47,15 @@ TEST_F(EditorProbe, ClickingAPixelExplainsItAndTheViewerOutlinesItsTaps) {
     EXPECT_EQ(p.report->y, py);
     EXPECT_TRUE(p.report->agrees) << p.report->shadowCpu << " vs GPU " << p.report->shadowGpu;
     EXPECT_EQ(p.report->taps.size(), 9u) << "the default preset's PCF 3x3";
-    EXPECT_TRUE(h.hasControl("probe.summary"));
-    EXPECT_TRUE(h.hasControl("probe.lines"));
+    EXPECT_TRUE(h.reveal("probe.summary"));
+    EXPECT_TRUE(h.reveal("probe.lines"));
     EXPECT_FALSE(h.hasControl("probe.hint"));
 
     // The viewer: zoom to the probe, the lookup's yellow cross and the taps' outlines are drawn over the map.
     h.click("viewer.zoomToProbe");
     h.frame(3);
     EXPECT_GT(h.state().viewer.zoomPan.zoom(), 10.0);
-    ASSERT_TRUE(h.hasControl("viewer.probeLookup"));
+    ASSERT_TRUE(h.reveal("viewer.probeLookup"));
     const ControlRect cross = h.rect("viewer.probeLookup");
     const ControlRect image = h.rect("viewer.image");
     EXPECT_GT(cross.centerX(), image.x);
@@ -111,7 +111,7 @@ TEST_F(EditorProbe, HoldingPProbesUnderTheCursorAndADragDoesNot) {
     ASSERT_TRUE(h.state().probe.report.has_value());
     EXPECT_FALSE(h.state().probe.report->ok);
     EXPECT_NE(h.state().probe.report->error.find("background"), std::string::npos) << h.state().probe.report->error;
-    EXPECT_TRUE(h.hasControl("probe.summary"));
+    EXPECT_TRUE(h.reveal("probe.summary"));
 }
 
 TEST_F(EditorProbe, AMeasurementOfTheSameViewAddsTheExactVerdict) {
@@ -164,8 +164,8 @@ TEST_F(EditorProbe, CtrlDragDrawsALineWhoseDepthProfileThePanelPlots) {
     EXPECT_EQ(p.profile->samples.size(), 81u);
     EXPECT_GT(p.profile->surfaces, 40) << "the line crosses the scene";
     EXPECT_EQ(p.profile->acne, 0) << "the default preset";
-    EXPECT_TRUE(h.hasControl("probe.profile"));
-    EXPECT_TRUE(h.hasControl("probe.profilePlot"));
+    EXPECT_TRUE(h.reveal("probe.profile"));
+    EXPECT_TRUE(h.reveal("probe.profilePlot"));
     EXPECT_FALSE(p.report.has_value()) << "the drag probed no pixel";
     h.saveWindow("profile-editor");
 

@@ -44,7 +44,7 @@ TEST_F(EditorStatusLog, HoverShowsTheWholeMessage) {
     const ControlRect status = h.rect("status");
     h.moveMouse(status.x + 20.0f, status.centerY());
     h.frame(2);
-    ASSERT_TRUE(h.hasControl("status.tooltip")) << "no tooltip over the status line";
+    ASSERT_TRUE(h.reveal("status.tooltip")) << "no tooltip over the status line";
     const ControlRect tip = h.rect("status.tooltip");
     // The tooltip wraps the text over several lines inside the window (the status line shows one, cut).
     EXPECT_GT(tip.h, 2.5f * ImGui::GetTextLineHeight());
@@ -66,8 +66,8 @@ TEST_F(EditorStatusLog, TheLogKeepsTheLast50WithErrorsInRed) {
     ASSERT_FALSE(h.hasControl("log"));
     h.click("status.log");
     h.frame(2);
-    ASSERT_TRUE(h.hasControl("log")) << "the Log button opened nothing";
-    EXPECT_TRUE(h.hasControl("log.49"));
+    ASSERT_TRUE(h.reveal("log")) << "the Log button opened nothing";
+    EXPECT_TRUE(h.reveal("log.49"));
     EXPECT_FALSE(h.hasControl("log.50"));
     h.saveWindow("message-log");
     // Opened at the newest: the error (message 57, line 47) is in view, in red; its neighbours are not red.

@@ -16,7 +16,7 @@ TEST(EditorSweep, RunHoverAndApplyAPoint) {
     EXPECT_FALSE(h.hasControl("sweep.run"));
     h.click("accuracy.costVsAccuracy");
     h.frame(2);
-    ASSERT_TRUE(h.hasControl("sweep.run"));
+    ASSERT_TRUE(h.reveal("sweep.run"));
 
     // A value the key table refuses: nothing starts, the message names the key.
     h.click("sweep.values0");

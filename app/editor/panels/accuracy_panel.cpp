@@ -31,7 +31,17 @@ void row(const char* name, const std::string& value, const char* tooltip = nullp
     ImGui::TextUnformatted(name);
     if (tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
     ImGui::TableNextColumn();
-    ImGui::TextUnformatted(value.c_str());
+    // A stretched value column (the numbers table) wraps at the sidebar's edge; a fixed-fit one sizes to its text.
+    if (ImGui::TableGetColumnFlags() & ImGuiTableColumnFlags_WidthStretch)
+        ImGui::TextWrapped("%s", value.c_str());
+    else
+        ImGui::TextUnformatted(value.c_str());
+}
+
+// Beside the previous control where an item of `width` fits, else on the next line (the sidebar is narrow).
+void sameLineIfFits(float width) {
+    ImGui::SameLine();
+    if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
 }
 
 std::string format(const char* fmt, double a, double b = 0.0) {
@@ -47,6 +57,8 @@ void numbersTab(EditorState& state, const AccuracyReport& r) {
         state.controls.recordLastItem("accuracy.coarseMap");
     }
     if (ImGui::BeginTable("numbers", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
         row("acne", format("%.3f %%", r.acnePercent) + "  (" + grouped(c.acne) + " of " + grouped(c.lit) + " lit" +
                         (c.acne ? format(", mean 1-S %.2f)", r.acneSeverity) : ")"),
             "truly lit pixels the tool visibly darkens (S < 1 - 1/255) farther than k texels from the true shadow "
@@ -95,7 +107,7 @@ void causesTab(EditorState& state, const AccuracyReport& r) {
         ImGui::ColorButton(info.key, ImVec4(info.red / 255.0f, info.green / 255.0f, info.blue / 255.0f, 1.0f),
                            ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
         ImGui::SameLine();
-        ImGui::Text("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
+        ImGui::TextWrapped("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
         ImGui::Indent();
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("%s", info.remedy);
@@ -192,7 +204,7 @@ void biasSearchTab(PanelContext& ctx) {
         }
         ImGui::TextDisabled("%zu candidates, %.1f s", a.tune->path.size(), a.tune->seconds);
     } else if (a.steps.empty()) {
-        ImGui::TextDisabled("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent);
+        noteText(format("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent));
     }
 
     const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
@@ -251,14 +263,16 @@ void flickerTab(PanelContext& ctx) {
         ImGui::EndCombo();
     }
     state.controls.recordLastItem("accuracy.flicker.motion");
-    ImGui::SameLine();
+    const std::string stepLabel = std::string(motionInfo(m.kind).unit) + " / frame";
+    const float inner = ImGui::GetStyle().ItemInnerSpacing.x;
+    sameLineIfFits(90.0f + inner + ImGui::CalcTextSize("frames").x);
     ImGui::SetNextItemWidth(90.0f);
     ImGui::InputInt("frames", &m.frames);
     m.frames = std::clamp(m.frames, 2, kMaxMotionFrames);
     state.controls.recordLastItem("accuracy.flicker.frames");
-    ImGui::SameLine();
+    sameLineIfFits(110.0f + inner + ImGui::CalcTextSize(stepLabel.c_str()).x);
     ImGui::SetNextItemWidth(110.0f);
-    ImGui::InputDouble((std::string(motionInfo(m.kind).unit) + " / frame").c_str(), &m.step, 0.0, 0.0, "%.4g");
+    ImGui::InputDouble(stepLabel.c_str(), &m.step, 0.0, 0.0, "%.4g");
     state.controls.recordLastItem("accuracy.flicker.step");
     if (ImGui::Button("Measure flicker")) ctx.actions.measureFlicker();
     state.controls.recordLastItem("accuracy.flicker.measure");
@@ -268,11 +282,13 @@ void flickerTab(PanelContext& ctx) {
                           m.light);
     ImGui::EndDisabled();
     if (!a.flicker) {
-        ImGui::TextDisabled("Measure flicker to see how much the shadow crawls under a sub-texel motion");
+        noteText("Measure flicker to see how much the shadow crawls under a sub-texel motion");
         return;
     }
     const FlickerReport& f = *a.flicker;
     if (ImGui::BeginTable("flicker", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);  // wraps (row())
         row("flicker", format("max %.3f %%, mean %.3f %%", f.maxFlickerPercent, f.meanFlickerPercent),
             "pixels whose S crosses 0.5 at the same surface point between consecutive frames while V does not");
         state.controls.recordLastItem("accuracy.flicker.figure");
@@ -370,8 +386,10 @@ void drawAccuracyPanel(PanelContext& ctx) {
                           "then only the full measure runs.",
                           AccuracyState::kAutoDelaySeconds);
     if (a.report && a.report->live && a.stale.empty()) {
-        ImGui::TextDisabled("live: counted on the GPU in %.1f ms (%ld counts); causes and overlay once still",
-                            a.report->cost.totalMs, a.liveMeasurements);
+        char live[160];
+        std::snprintf(live, sizeof live, "live: counted on the GPU in %.1f ms (%ld counts); causes and overlay once still",
+                      a.report->cost.totalMs, a.liveMeasurements);
+        noteText(live);
         state.controls.recordLastItem("accuracy.live");
     }
 
@@ -394,7 +412,7 @@ void drawAccuracyPanel(PanelContext& ctx) {
         if (a.report)
             numbersTab(state, *a.report);
         else
-            ImGui::TextDisabled("Measure, or turn on Auto, to see how wrong the shadows are");
+            noteText("Measure, or turn on Auto, to see how wrong the shadows are");
         ImGui::EndTabItem();
     }
     if (tab("Causes", "accuracy.tab.causes")) {
@@ -409,7 +427,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
         if (a.report) costTab(a, *a.report);
         ImGui::EndTabItem();
     }
-    if (tab("Bias search", "accuracy.tab.search", startedSearch ? ImGuiTabItemFlags_SetSelected : 0)) {
+    // "Tune" as `shadowlab tune`: with Flicker the six tabs fit the sidebar at 1280x720.
+    if (tab("Tune", "accuracy.tab.search", startedSearch ? ImGuiTabItemFlags_SetSelected : 0)) {
         biasSearchTab(ctx);
         ImGui::EndTabItem();
     }

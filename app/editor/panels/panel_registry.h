@@ -1,11 +1,12 @@
 #pragma once
-// Every editor panel, listed once. A panel is one ImGui window drawn by one function in its own file; its first-run
-// place is a slot in a column around the viewport (later places come from imgui.ini). Adding a panel = one file plus
-// one line in panel_registry.cpp.
+// Every editor panel, listed once. A panel is drawn by one function in its own file; the editor hosts it in a tab of
+// one of the two sidebars beside the viewport (panels sharing a tab stack in registry order, the last one gets the
+// height left). Adding a panel = one file plus one line in panel_registry.cpp.
 #include "editor/editor_state.h"
 
 #include <imgui.h>
 
+#include <string>
 #include <vector>
 
 namespace shadowlab::editor {
@@ -15,29 +16,25 @@ struct PanelContext {
     EditorActions& actions;
 };
 
-enum class PanelColumn { Left, Right, Bottom };
+enum class Sidebar { Left, Right };
 
 struct Panel {
-    const char* title;      // the window's name: unique, and its imgui.ini key
-    PanelColumn column;     // where it starts on first run
-    float share;            // its part of the column's height (Left / Right) or of the bottom strip's width (Bottom);
-                            // a column's shares add up to 1
-    void (*draw)(PanelContext&);  // the window's contents (Begin/End are done by the editor)
-    bool editsSelectedLight = false;  // its title names the light it edits ("Light: 1 spot")
+    const char* title;      // unique; its section's header (and the "panel:TITLE" control rect)
+    Sidebar sidebar;        // which side of the viewport
+    const char* tab;        // the sidebar tab that shows it
+    void (*draw)(PanelContext&);  // the section's contents (the header is drawn by the editor)
+    bool editsSelectedLight = false;  // its header names the light it edits ("Light: 1 spot")
 };
 
 const std::vector<Panel>& panels();
+// A sidebar's tabs, in registry order, each once.
+std::vector<std::string> sidebarTabs(Sidebar side);
+// The panels one tab shows, in registry order.
+std::vector<const Panel*> tabPanels(Sidebar side, const std::string& tab);
+const Panel* findPanel(const std::string& title);
 
-// Where a panel starts on first run, for a window of `display` size: columns that never overlap.
-struct PanelRect {
-    ImVec2 pos, size;
-};
-PanelRect firstRunRect(const Panel& panel, ImVec2 display);
-
-// Column widths and the bottom strip's height for the first-run layout.
-float leftColumnWidth(ImVec2 display);
-float rightColumnWidth(ImVec2 display);
-float bottomStripHeight(ImVec2 display);
+// A sidebar's width for a window of `display` size: wide enough that its panels' labels fit at 1280x720.
+float sidebarWidth(Sidebar side, ImVec2 display);
 
 // One function per panel, each in its own file.
 void drawScenePanel(PanelContext&);
@@ -51,7 +48,7 @@ void drawShadowMapViewerPanel(PanelContext&);
 void drawStatsPanel(PanelContext&);
 void drawAccuracyPanel(PanelContext&);
 void drawProbePanel(PanelContext&);
-// Not a column panel: a window over the viewport, opened from the Accuracy panel ("Cost vs accuracy..."). Called
+// Not a sidebar panel: a window over the viewport, opened from the Accuracy panel ("Cost vs accuracy..."). Called
 // every frame (it polls its sweep); it draws only while open.
 void drawSweepWindow(PanelContext&);
 

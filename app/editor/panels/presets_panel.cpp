@@ -16,7 +16,10 @@ void drawPresetsPanel(PanelContext& ctx) {
         ImGui::TextDisabled(dirty ? "(unsaved changes)" : "(shipped, read-only)");
     }
 
-    const float buttonsHeight = ImGui::GetFrameHeightWithSpacing() * 2.0f;
+    // The list takes the height left above two rows of buttons and the folder line (wrapped: a long path).
+    const std::string folder = "yours: " + state.userPresetsDir;
+    const float folderHeight = ImGui::CalcTextSize(folder.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x).y;
+    const float buttonsHeight = ImGui::GetFrameHeightWithSpacing() * 2.0f + folderHeight + ImGui::GetStyle().ItemSpacing.y;
     if (ImGui::BeginListBox("##presets", ImVec2(-1, std::max(60.0f, ImGui::GetContentRegionAvail().y - buttonsHeight)))) {
         for (const PresetEntry& entry : state.presetList) {
             const bool current = entry.path.string() == state.preset.path();
@@ -81,7 +84,7 @@ void drawPresetsPanel(PanelContext& ctx) {
         if (confirm || cancel) ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
     }
-    ImGui::TextDisabled("yours: %s", state.userPresetsDir.c_str());
+    noteText(folder);
 }
 
 }  // namespace shadowlab::editor

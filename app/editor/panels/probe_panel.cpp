@@ -85,6 +85,10 @@ void drawProbePanel(PanelContext& ctx) {
     const ImVec4 colour = r.agrees ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f) : ImVec4(1.0f, 0.4f, 0.4f, 1.0f);
     ImGui::TextColored(colour, "pixel %d,%d: %s", r.x, r.y, probeSummary(r).c_str());
     state.controls.recordLastItem("probe.summary");
+    if (ImGui::SmallButton("Save JSON")) ctx.actions.saveProbeJson();
+    state.controls.recordLastItem("probe.saveJson");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Writes this report as JSON (as `shadowlab probe --json`) into %s/", state.screenshotDir.c_str());
     if (!p.withMeasurement)
         ImGui::TextDisabled("(Measure in the Accuracy panel adds the exact visibility and the cause)");
     ImGui::Separator();

@@ -128,7 +128,9 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
     }
 
     const ImVec2 avail = ImGui::GetContentRegionAvail();
-    const float side = std::floor(std::max(0.0f, std::min(avail.x, avail.y - ImGui::GetTextLineHeightWithSpacing())));
+    // Two lines under the picture for its info (wrapped in a narrow sidebar).
+    const float side =
+        std::floor(std::max(0.0f, std::min(avail.x, avail.y - 2.0f * ImGui::GetTextLineHeightWithSpacing())));
     if (side < 16.0f) return;
     const int size = int(side);
     v.width = v.height = size;
@@ -162,8 +164,10 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
         ImGui::Text("texel (%d, %d): depth %.6f%s", v.hoverTexel->x, v.hoverTexel->y, double(*v.hoverDepth),
                     *v.hoverDepth >= 1.0f ? " (no caster)" : "");
     } else {
-        ImGui::TextDisabled("%d² | black %.4g .. white %.4g%s | wheel: zoom, drag: pan", resolution,
-                            double(v.shown.min), double(v.shown.max), v.gridShown ? " | grid" : "");
+        char info[160];
+        std::snprintf(info, sizeof info, "%d² | black %.4g .. white %.4g%s | wheel: zoom, drag: pan", resolution,
+                      double(v.shown.min), double(v.shown.max), v.gridShown ? " | grid" : "");
+        noteText(info);
     }
     state.controls.recordLastItem("viewer.info");
 }

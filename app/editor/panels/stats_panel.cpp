@@ -20,9 +20,16 @@ void passLine(const char* name, const PassStats& pass, const PassStats& lastRun,
         ImGui::Text("%-12s %7.2f ms %s", name, *timed.milliseconds, clock);
     else
         ImGui::Text("%-12s %10s", name, "-");
+    // Why it ran: beside the time where it fits, else on the next line.
+    const std::string why = std::string(pass.ran ? "ran: " : "skipped: ") + pass.reason.substr(0, pass.reason.find(':'));
     ImGui::SameLine();
-    const std::string reason = pass.reason.substr(0, pass.reason.find(':'));
-    ImGui::TextDisabled("%s: %s", pass.ran ? "ran" : "skipped", reason.c_str());
+    const bool below = ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(why.c_str()).x;
+    if (below) {
+        ImGui::NewLine();
+        ImGui::Indent();
+    }
+    noteText(why);
+    if (below) ImGui::Unindent();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", pass.reason.c_str());
 }
 
@@ -87,51 +94,30 @@ void drawStatsPanel(PanelContext& ctx) {
     const bool cpu = s.timingSource.rfind("CPU", 0) == 0;
     const char* clock = cpu ? "CPU" : "GPU";
 
-    // Beside the Accuracy panel the strip is narrow: the numbers get the whole width and the plots go below them,
-    // side by side; a wide panel keeps them in a column on the right.
-    const bool plotsBeside = ImGui::GetContentRegionAvail().x >= 680.0f;
-    if (ImGui::BeginTable("stats", plotsBeside ? 2 : 1, ImGuiTableFlags_SizingStretchSame)) {
-        ImGui::TableSetupColumn("numbers", ImGuiTableColumnFlags_WidthStretch, 0.6f);
-        if (plotsBeside) ImGui::TableSetupColumn("plots", ImGuiTableColumnFlags_WidthStretch, 0.4f);
-        ImGui::TableNextColumn();
-        const FrameStats& shadow = state.lastShadowPass;
-        passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
-        passLine("main pass", s.mainPass, s.mainPass, clock);
-        ImGui::Text("frame        %7.2f ms wall", state.lastFrameMs);
-        ImGui::TextDisabled("timing: %s", s.timingSource.c_str());
-        ImGui::Text("triangles: %zu scene, %zu in the shadow pass", s.sceneTriangles, shadow.shadowTriangles);
-        ImGui::Text("casters: %d drawn, %d outside the light, %d alpha-tested", shadow.castersDrawn,
-                    shadow.castersSkipped, shadow.alphaTestedCasters);
-        ImGui::Text("shadow map: %d² %s, %.1f MiB", s.shadowMapResolution, depthFormatName(s.shadowMapFormat),
-                    double(s.shadowMapBytes) / (1024.0 * 1024.0));
-        ImGui::TextDisabled("frames rendered %ld, idle frames (no pass) %ld", state.renderedFrames, state.idleFrames);
-        state.controls.recordLastItem("stats.frames");
-        viewsTable(state, clock);
+    // A sidebar's column: the numbers (long lines wrap), the views table, then the two plots one above the other.
+    const FrameStats& shadow = state.lastShadowPass;
+    passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
+    passLine("main pass", s.mainPass, s.mainPass, clock);
+    ImGui::Text("frame        %7.2f ms wall", state.lastFrameMs);
+    noteText("timing: " + s.timingSource);
+    ImGui::TextWrapped("triangles: %zu scene, %zu in the shadow pass", s.sceneTriangles, shadow.shadowTriangles);
+    ImGui::TextWrapped("casters: %d drawn, %d outside the light, %d alpha-tested", shadow.castersDrawn,
+                       shadow.castersSkipped, shadow.alphaTestedCasters);
+    ImGui::TextWrapped("shadow map: %d² %s, %.1f MiB", s.shadowMapResolution, depthFormatName(s.shadowMapFormat),
+                       double(s.shadowMapBytes) / (1024.0 * 1024.0));
+    noteText("frames rendered " + std::to_string(state.renderedFrames) + ", idle frames (no pass) " +
+             std::to_string(state.idleFrames));
+    state.controls.recordLastItem("stats.frames");
+    viewsTable(state, clock);
 
-        if (!plotsBeside) {
-            ImGui::EndTable();
-            const float w = (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x) * 0.5f;
-            const float h = std::max(30.0f, ImGui::GetContentRegionAvail().y);
-            ImGui::PushID("frame");
-            plot("frame ms", state.history.frameMs, ImVec2(w, h));
-            ImGui::PopID();
-            ImGui::SameLine();
-            ImGui::PushID("shadow");
-            plot("shadow pass ms", state.history.shadowPassMs, ImVec2(w, h));
-            ImGui::PopID();
-            return;
-        }
-        ImGui::TableNextColumn();
-        const float w = ImGui::GetContentRegionAvail().x;
-        const float h = std::max(30.0f, (ImGui::GetContentRegionAvail().y - 8.0f) * 0.5f);
-        ImGui::PushID("frame");
-        plot("frame ms", state.history.frameMs, ImVec2(w, h));
-        ImGui::PopID();
-        ImGui::PushID("shadow");
-        plot("shadow pass ms", state.history.shadowPassMs, ImVec2(w, h));
-        ImGui::PopID();
-        ImGui::EndTable();
-    }
+    const float w = ImGui::GetContentRegionAvail().x;
+    const float h = std::clamp((ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y) * 0.5f, 30.0f, 160.0f);
+    ImGui::PushID("frame");
+    plot("frame ms", state.history.frameMs, ImVec2(w, h));
+    ImGui::PopID();
+    ImGui::PushID("shadow");
+    plot("shadow pass ms", state.history.shadowPassMs, ImVec2(w, h));
+    ImGui::PopID();
 }
 
 }  // namespace shadowlab::editor
