@@ -331,7 +331,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     causeContext.light = light;
     causeContext.lightSpace = stats.light;
     causeContext.cullMode = settings.lights[0].shadow.cullMode;
-    causeContext.depthClamp = settings.lights[0].projection.depthClamp;
+    causeContext.depthClamp = settings.lights[0].depthClampApplies();
     causeContext.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
     std::vector<MismatchCause> causes(count, MismatchCause::None);
     const int chunks = int((mismatched.size() + 63) / 64);

@@ -24,7 +24,7 @@ ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light,
     e.shadow = settings.lights[0].shadow;
     e.sampler = settings.sampler;
     e.filter = settings.filter;
-    e.depthClamp = settings.lights[0].projection.depthClamp;
+    e.depthClamp = settings.lights[0].depthClampApplies();
     e.perspective = light.perspective;
     e.reversedZ = light.reversedZ;
     const ShadowMapSettings& s = settings.lights[0].shadow;

@@ -259,7 +259,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             const int timed = PassTimer::kFirstViewPass + int(v);
             timer_.begin(timed);
             const ShadowPassCounts counts =
-                shadowPass_->run(*gpuScene_, p.space, light.shadow, light.projection.depthClamp, state.map);
+                shadowPass_->run(*gpuScene_, p.space, light.shadow, light.depthClampApplies(), state.map);
             timer_.end(timed);
             state.rendered = inputs;
             entry.ran = true;

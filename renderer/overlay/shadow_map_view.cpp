@@ -153,11 +153,7 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
 std::optional<float> ShadowMapView::depthAt(const ShadowMap& map, int texelX, int texelY) const {
     if (!map.valid() || texelX < 0 || texelY < 0 || texelX >= map.resolution() || texelY >= map.resolution())
         return std::nullopt;
-    float depth = 0.0f;
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureSubImage(map.texture(), 0, texelX, texelY, 0, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, sizeof depth,
-                         &depth);
-    return depth;
+    return map.readDepthRect(texelX, texelY, 1, 1)[0];
 }
 
 }  // namespace shadowlab

@@ -57,12 +57,8 @@ std::pair<double, double> lookupUncertainty(const LightSpace& light, const glm::
 }  // namespace
 
 std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w, int h) {
-    std::vector<float> depth(std::size_t(w) * std::size_t(h));
-    if (!map.valid() || w < 1 || h < 1) return depth;
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureSubImage(map.texture(), 0, x0, y0, 0, w, h, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
-                         GLsizei(depth.size() * sizeof(float)), depth.data());
-    return depth;
+    if (!map.valid() || w < 1 || h < 1) return std::vector<float>(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)));
+    return map.readDepthRect(x0, y0, w, h);
 }
 
 std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Settings& settings,

@@ -64,6 +64,11 @@ struct LightSettings {
     ProjectionSettings projection;
 
     bool operator==(const LightSettings&) const = default;
+
+    // GL_DEPTH_CLAMP applies to a directional light's orthographic view only. A perspective view (spot, cube face)
+    // cannot keep what lies behind the light, and with clamping on NVIDIA's driver drops triangles that cross the
+    // light's plane (builtin:room on an H200 lost the pillar's shadow in the cube's +-Y faces: 9.3 % leak).
+    bool depthClampApplies() const { return projection.depthClamp && type == LightType::Directional; }
 };
 
 // Enough for every sample we compare with (bgfx: 16 maps); the shader's light loop is specialised to the count used.

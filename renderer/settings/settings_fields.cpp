@@ -353,7 +353,7 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                   at([](auto& l) -> auto& { return l.projection.farPlane; })),
                        kView));
     f.push_back(tagged(boolField(keyOf("projection.depthClamp"),
-                                 "GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast",
+                                 "GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast (directional lights; spot and point views clip at their near plane)",
                                  at([](auto& l) -> auto& { return l.projection.depthClamp; })),
                        kView));
     return f;

@@ -104,7 +104,9 @@ std::string ShadowMap::attach(const ShadowMapArray& array, int layer) {
     glTextureView(view.id(), GL_TEXTURE_2D, array.texture(), depthInternalFormat(array.format()), 0, 1,
                   GLuint(layer), 1);
     gl::Framebuffer framebuffer = gl::createFramebuffer();
-    glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, view.id(), 0);
+    // The pass renders into the array's layer itself, not through the view: NVIDIA's driver mishandles a 2D view
+    // of a cube-map-array layer as an attachment and in reads (builtin:room lost part of its pillar's shadow).
+    glNamedFramebufferTextureLayer(framebuffer.id(), GL_DEPTH_ATTACHMENT, array.texture(), 0, layer);
     glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
     glNamedFramebufferReadBuffer(framebuffer.id(), GL_NONE);
     const GLenum status = glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER);
@@ -112,6 +114,7 @@ std::string ShadowMap::attach(const ShadowMapArray& array, int layer) {
         return "shadow map framebuffer incomplete (status 0x" + std::to_string(status) + "); keeping the previous map";
     texture_ = std::move(view);
     framebuffer_ = std::move(framebuffer);
+    arrayTexture_ = array.texture();
     arrayGeneration_ = array.generation();
     layer_ = layer;
     resolution_ = array.resolution();
@@ -145,12 +148,14 @@ void ShadowSampler::configure(const SamplerSettings& sampler, FilterKind filter)
     glSamplerParameteri(s, GL_TEXTURE_COMPARE_FUNC, reversedZ_ ? GL_GEQUAL : GL_LEQUAL);
 }
 
-std::vector<float> ShadowMap::readDepth() const {
-    std::vector<float> depth(std::size_t(resolution_) * resolution_);
-    if (!texture_) return depth;
+std::vector<float> ShadowMap::readDepth() const { return readDepthRect(0, 0, resolution_, resolution_); }
+
+std::vector<float> ShadowMap::readDepthRect(int x0, int y0, int w, int h) const {
+    std::vector<float> depth(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)));
+    if (!texture_ || depth.empty()) return depth;
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(texture_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)),
-                      depth.data());
+    glGetTextureSubImage(arrayTexture_, 0, x0, y0, layer_, w, h, 1, GL_DEPTH_COMPONENT, GL_FLOAT,
+                         GLsizei(depth.size() * sizeof(float)), depth.data());
     return depth;
 }
 

@@ -75,13 +75,17 @@ public:
     GLuint texture() const { return texture_.id(); }
     std::size_t memoryBytes() const { return std::size_t(resolution_) * resolution_ * depthFormatBytes(format_); }
 
-    // Reads the stored depth (row 0 = bottom, as GL stores it) as floats in [0,1].
+    // Reads the stored depth (row 0 = bottom, as GL stores it) as floats in [0,1]: the whole map, or a rectangle
+    // of texels inside it. Reads the array's layer, not the view (NVIDIA returns wrong data for a view of a
+    // cube-map-array layer).
     std::vector<float> readDepth() const;
+    std::vector<float> readDepthRect(int x0, int y0, int w, int h) const;
 
 private:
     std::unique_ptr<ShadowMapArray> own_;  // set by ensure()
     gl::Texture texture_;                  // the 2D view of the layer
     gl::Framebuffer framebuffer_;
+    GLuint arrayTexture_ = 0;              // the array the layer belongs to (owned by it, or by own_)
     std::uint64_t arrayGeneration_ = 0;
     std::uint64_t generation_ = 0;
     int layer_ = -1;
