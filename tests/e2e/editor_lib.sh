@@ -49,8 +49,8 @@ r = json.load(open("controls.json")).get(sys.argv[1])
 if r: print(int(r[0]), int(r[1]), int(r[2]), int(r[3]))
 PY
 }
-# wait_for CONDITION-COMMAND... (up to ~30 s)
-wait_for() { for _ in $(seq 300); do "$@" && return 0; kill -0 "$app_pid" 2>/dev/null || return 1; sleep 0.1; done; return 1; }
+# wait_for CONDITION-COMMAND... (up to ~30 s; WAIT_TRIES=N for N tenths of a second)
+wait_for() { for _ in $(seq "${WAIT_TRIES:-300}"); do "$@" && return 0; kill -0 "$app_pid" 2>/dev/null || return 1; sleep 0.1; done; return 1; }
 has_control() { [ -f controls.json ] && [ -n "$(control "$1")" ]; }
 click() {
   local c; c=$(control "$1") || true

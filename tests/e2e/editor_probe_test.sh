@@ -12,7 +12,7 @@ rm -rf "$OUT_DIR" && mkdir -p "$OUT_DIR" && cd "$OUT_DIR"
 json() { python3 -c "import json,sys; d=json.load(open('$1')); print(eval(sys.argv[1]))" "$2"; }
 
 start_editor 1280 720 --scene builtin:textbook --preset default --screenshot-dir shots
-wait_for has_control viewport.image && wait_for grep -q "loaded builtin:textbook" editor.out \
+WAIT_TRIES=1200 wait_for has_control viewport.image && WAIT_TRIES=1200 wait_for grep -q "loaded builtin:textbook" editor.out \
   || { echo "FAIL: the editor showed no scene: $(tail -3 editor.err)"; exit 1; }
 sleep 1
 

@@ -19,9 +19,10 @@ else fail "no display: exit $rc: $(cat nodisplay.out)"; fi
 
 . "$SOURCE_DIR/tests/e2e/editor_lib.sh"
 start_editor 1600 900 --scene builtin:textbook --screenshot-dir shots
-# The panels live in the sidebars' tabs: Stats shows once its tab is clicked.
-wait_for has_control tab:Stats && click tab:Stats
-wait_for has_control stats.frames && pass "editor window up, a frame rendered" || fail "no frame: $(cat editor.err)"
+# The panels live in the sidebars' tabs: Stats shows once its tab is clicked. The first frame compiles shaders and
+# loads the scene: on a loaded 2-core machine that can take over 30 s, so these two waits allow 2 minutes.
+WAIT_TRIES=1200 wait_for has_control tab:Stats && click tab:Stats
+WAIT_TRIES=1200 wait_for has_control stats.frames && pass "editor window up, a frame rendered" || fail "no frame: $(cat editor.err)"
 xdotool mousemove --window "$wid" 800 450 sleep 0.3
 
 # F12: the viewport as PNG.

@@ -20,7 +20,15 @@ grep -q "CPU (software rasterizer" sweep.out && pass "times labelled CPU on llvm
 grep -qE '^  64² D32F: bare draw [0-9.]+ ms' sweep.out && grep -qE '^  512² D32F: bare draw' sweep.out \
   && pass "a bare draw per map size" || fail "bare draws: $(grep bare sweep.out)"
 grep -q "^Pareto front" sweep.out && pass "the front is listed" || fail "no front"
-grep -q "step up +" sweep.out && pass "each step up says what it buys" || fail "no step text"
+# CPU times of 2 frames are noisy: when the most accurate point also times cheapest the front holds one point and
+# there is no step to describe.
+front=$(sed -n '/^Pareto front/,/^reference/p' sweep.out | grep -c '^  [0-9]')
+if [ "$front" -gt 1 ]; then
+  [ "$(grep -c "step up +" sweep.out)" = "$((front - 1))" ] && pass "each step up says what it buys" \
+    || fail "no step text for $front front points: $(cat sweep.out)"
+else
+  [ "$front" = 1 ] && pass "a front of one point (no step to describe)" || fail "empty front: $(cat sweep.out)"
+fi
 [ "$(grep -c '^\[[0-9]*/5\]' sweep.err)" = "5" ] && pass "progress on stderr (4 points + the preset)" \
   || fail "progress: $(cat sweep.err)"
 [ "$(json s.json "len(d['points'])")" = "4" ] && pass "JSON: every point" || fail "JSON points"
