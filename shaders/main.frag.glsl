@@ -114,6 +114,34 @@ vec2 receiverPlaneSlope(LightData L, vec3 lookup, vec3 lightTex, vec3 ray, float
 }
 #endif
 
+// Map arrays are read with constant indices only. Mesa 22.3's LLVM 15 (llvmpipe: CI and every machine without a GPU)
+// crashed in EarlyCSE compiling a sampler array indexed by a uniform-block value (uMaps2D[int(L.shadow.x)]) beside a
+// cube-map array; a loop over the arrays that the compiler unrolls gives each texture() a constant index instead.
+#if MAP_ARRAYS_2D > 0
+float sampleMap2D(int map, vec4 coord) {
+#if MAP_ARRAYS_2D == 1
+    return texture(uMaps2D[0], coord);  // one array: no selection at all (a dynamic one is 3x slower on llvmpipe)
+#else
+    float result = 1.0;
+    for (int k = 0; k < MAP_ARRAYS_2D; ++k)
+        if (k == map) result = texture(uMaps2D[k], coord);
+    return result;
+#endif
+}
+#endif
+#if MAP_ARRAYS_CUBE > 0
+float sampleMapCube(int map, vec4 coord, float ref) {
+#if MAP_ARRAYS_CUBE == 1
+    return texture(uMapsCube[0], coord, ref);
+#else
+    float result = 1.0;
+    for (int k = 0; k < MAP_ARRAYS_CUBE; ++k)
+        if (k == map) result = texture(uMapsCube[k], coord, ref);
+    return result;
+#endif
+}
+#endif
+
 #if MAP_ARRAYS_2D > 0
 // Fraction of light reaching the point through a 2D view, 1 = lit. `ray` and `texelWorld` (the direction light
 // travels and a texel's world size at the lookup) bound the receiver plane's tilt.
@@ -123,11 +151,7 @@ float shadow2D(LightData L, vec3 lookup, vec3 ray, float texelWorld) {
 #ifdef RECEIVER_PLANE
     vec2 plane = receiverPlaneSlope(L, lookup, lightTex, ray, texelWorld);
 #endif
-#if MAP_ARRAYS_2D == 1
-    const int map = 0;  // one array: a constant index (a dynamic one is much slower on some drivers, llvmpipe 3x)
-#else
     int map = int(L.shadow.x);
-#endif
     // A lookup inside the map keeps its taps inside it (half a texel from the edge: a bilinear tap's footprint too),
     // so a kernel near the edge reads the map's own border texels, not the address mode's "outside" (HARD_CASES 6).
     // The pixel probe mirrors this (probe/pixel_probe.cpp).
@@ -149,7 +173,7 @@ float shadow2D(LightData L, vec3 lookup, vec3 ray, float texelWorld) {
 #else
         float tapRef = ref;
 #endif
-        sum += texture(uMaps2D[map], vec4(tapTex, L.shadow.y, tapRef));
+        sum += sampleMap2D(map, vec4(tapTex, L.shadow.y, tapRef));
     }
     return sum / float(FILTER_TAPS);
 }
@@ -177,17 +201,13 @@ float shadowCube(LightData L, vec3 lookup) {
     vec3 s = a.x >= a.y && a.x >= a.z ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     vec3 t = a.y >= a.x && a.y >= a.z ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
     float texelAtMajor = 2.0 * L.shadow.z * major;
-#if MAP_ARRAYS_CUBE == 1
-    const int map = 0;
-#else
     int map = int(L.shadow.x);
-#endif
     float sum = 0.0;
     FOR_EACH_TAP {
         vec2 o = TAP_OFFSET * uFilterScale * texelAtMajor;
         vec3 d = v + o.x * s + o.y * t;
         float ref = clampToFar(L, faceDepth(v, d, L));
-        sum += texture(uMapsCube[map], vec4(d, L.shadow.y), ref);
+        sum += sampleMapCube(map, vec4(d, L.shadow.y), ref);
     }
     return sum / float(FILTER_TAPS);
 }
