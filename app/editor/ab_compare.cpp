@@ -101,7 +101,10 @@ std::vector<std::string> abLabel(const EditorState& state, bool sideA, const std
         if (sideA) key.settings = abSettingsA(state);
         for (const auto& [measuredKey, report] : ab.measured)
             if (measuredKey == key) {
-                lines.push_back(accuracyLine(report));
+                // The numbers are the selected light's, measured alone: with several lights the label says which.
+                const bool several = key.settings.lights.size() > 1;
+                lines.push_back((several ? "light " + std::to_string(key.light) + ": " : std::string()) +
+                                accuracyLine(report));
                 break;
             }
     }

@@ -19,11 +19,12 @@ Settings withoutView(Settings s) {
 }  // namespace
 
 bool sameReferenceView(const AccuracyViewKey& a, const AccuracyViewKey& b) {
-    return a.scene == b.scene && a.width == b.width && a.height == b.height && sameCamera(a.camera, b.camera);
+    return a.scene == b.scene && a.width == b.width && a.height == b.height && a.light == b.light &&
+           sameCamera(a.camera, b.camera);
 }
 
 bool AccuracyViewKey::operator==(const AccuracyViewKey& other) const {
-    return scene == other.scene && width == other.width && height == other.height &&
+    return scene == other.scene && width == other.width && height == other.height && light == other.light &&
            sameCamera(camera, other.camera) && withoutView(settings) == withoutView(other.settings);
 }
 
@@ -39,6 +40,8 @@ std::string staleReason(const AccuracyViewKey& measured, const AccuracyViewKey& 
     }
     if (changedKeys > 3) keys += " and " + std::to_string(changedKeys - 3) + " more";
     if (!keys.empty()) add(keys + " changed");
+    if (measured.light != now.light)
+        add("light " + std::to_string(now.light) + " is selected, the numbers are light " + std::to_string(measured.light) + "'s");
     if (!sameCamera(measured.camera, now.camera)) add("the camera moved");
     if (measured.width != now.width || measured.height != now.height)
         add("the view is " + std::to_string(now.width) + "x" + std::to_string(now.height) + ", measured at " +

@@ -24,6 +24,7 @@ struct AccuracyViewKey {
     Camera camera;
     const Scene* scene = nullptr;
     int width = 0, height = 0;
+    std::size_t light = 0;  // the light measured (the selected one, in the effective lights): every number is its
     bool operator==(const AccuracyViewKey& other) const;
 };
 

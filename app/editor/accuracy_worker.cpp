@@ -1,5 +1,6 @@
 #include "editor/accuracy_worker.h"
 
+#include "accuracy/light_isolation.h"
 #include "context/headless_context.h"
 
 #include <chrono>
@@ -125,22 +126,29 @@ AccuracyJobResult AccuracyWorker::run(const AccuracyJob& job, std::uint64_t id) 
         measuredScene_ = job.scene;
     }
 
+    // The chosen light alone: its shadow factor is the one it has in the full frame (light_isolation.h).
+    std::string isolateError;
+    const std::optional<Settings> one = isolateLight(job.settings, *job.scene, job.light, isolateError);
+    if (!one) return fail(isolateError);
+
     try {
         if (job.kind == AccuracyJobKind::Live) {
-            result.report = gl_->meter.remeasure(*job.scene, job.settings, job.camera, job.width, job.height);
+            result.report = gl_->meter.remeasure(*job.scene, *one, job.camera, job.width, job.height);
         } else if (job.kind == AccuracyJobKind::Flicker) {
             progress_.setStage("playing the motion");
+            Motion motion = job.motion;
+            motion.light = job.light;
             FlickerReport flicker = measureFlicker(gl_->meter, *job.scene, job.settings, job.camera, job.width,
-                                                   job.height, job.motion, &progress_);
+                                                   job.height, motion, &progress_);
             result.report.ok = flicker.ok;
             result.report.cancelled = flicker.cancelled;
             result.report.error = flicker.error;
             result.flicker = std::move(flicker);
         } else if (job.kind == AccuracyJobKind::Measure) {
             progress_.setStage("measuring");
-            result.report = gl_->meter.measure(*job.scene, job.settings, job.camera, job.width, job.height, &progress_);
+            result.report = gl_->meter.measure(*job.scene, *one, job.camera, job.width, job.height, &progress_);
         } else {
-            TuneResult tune = tuneBias(gl_->meter, *job.scene, job.settings, job.camera, job.width, job.height,
+            TuneResult tune = tuneBias(gl_->meter, *job.scene, *one, job.camera, job.width, job.height,
                                        job.maxAcnePercent, &progress_, [this](const TuneStep& step) {
                                            std::lock_guard<std::mutex> lock(mutex_);
                                            steps_.push_back(step);

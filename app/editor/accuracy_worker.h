@@ -29,7 +29,8 @@ enum class AccuracyJobKind { Measure, SuggestBias, Live, Flicker };
 struct AccuracyJob {
     AccuracyJobKind kind = AccuracyJobKind::Measure;
     std::shared_ptr<const Scene> scene;
-    Settings settings;
+    Settings settings;     // the whole picture's settings; the job describes `light` of them
+    std::size_t light = 0; // in the effective lights: measured, tuned or moved (Flicker) alone
     Camera camera;
     int width = 0, height = 0;
     double maxAcnePercent = 0.1;  // SuggestBias: the acne limit

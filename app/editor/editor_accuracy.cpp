@@ -3,6 +3,7 @@
 // (live counts on the GPU after every edit, a full measure once the view has been still), and uploading the overlay
 // picture once per full report.
 #include "editor/editor.h"
+#include "accuracy/light_isolation.h"
 #include "gl/gl.h"
 
 #include <algorithm>
@@ -14,7 +15,7 @@ std::optional<AccuracyViewKey> Editor::accuracyKey() const {
     if (!state_.scene || !orbit_) return std::nullopt;
     const int w = int(viewportRect_.z), h = int(viewportRect_.w);
     if (w < 16 || h < 16) return std::nullopt;
-    return AccuracyViewKey{effectiveSettings(), orbit_->toCamera(), state_.scene.get(), w, h};
+    return AccuracyViewKey{effectiveSettings(), orbit_->toCamera(), state_.scene.get(), w, h, state_.selectedLight};
 }
 
 void Editor::measureAccuracy() { startAccuracyJob(AccuracyJobKind::Measure); }
@@ -42,6 +43,7 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
     job.kind = kind;
     job.scene = state_.scene;  // shared: a scene switch meanwhile cannot free what the worker reads
     job.settings = key->settings;
+    job.light = key->light;
     job.camera = key->camera;
     job.width = key->width;
     job.height = key->height;
@@ -69,6 +71,7 @@ void Editor::startLiveJob(const AccuracyViewKey& key) {
     job.kind = AccuracyJobKind::Live;
     job.scene = state_.scene;
     job.settings = key.settings;
+    job.light = key.light;
     job.camera = key.camera;
     job.width = key.width;
     job.height = key.height;
@@ -166,30 +169,33 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
         // nothing is applied, and the settings keep what the user had.
         const ShadowMapSettings& closest = tune.closest.lights[0].shadow;
         bool applied = false;
+        // The light the search tuned (tune.best holds it alone), even if another light is selected by now.
+        const std::size_t light = key ? key->light : state_.selectedLight;
+        const std::string prefix = "lights." + std::to_string(light) + ".shadow.";
         if (tune.reachedLimit) {
-            applied = state_.edit("shadow.depthBias", best.depthBias) &&
-                      state_.edit("shadow.slopeScaledDepthBias", best.slopeScaledDepthBias) &&
-                      state_.edit("shadow.normalOffset", best.normalOffset) &&
-                      state_.edit("shadow.cullMode", cullModeName(best.cullMode)) &&
-                      state_.edit("shadow.receiverPlaneBias", best.receiverPlaneBias);
-            if (key) key->settings = tune.best;
+            applied = state_.edit(prefix + "depthBias", best.depthBias) &&
+                      state_.edit(prefix + "slopeScaledDepthBias", best.slopeScaledDepthBias) &&
+                      state_.edit(prefix + "normalOffset", best.normalOffset) &&
+                      state_.edit(prefix + "cullMode", cullModeName(best.cullMode)) &&
+                      state_.edit(prefix + "receiverPlaneBias", best.receiverPlaneBias);
+            if (key) setLightShadow(key->settings, light, best);
         } else if (key) {
-            key->settings = tune.closest;  // the report describes the closest candidate, not the view: stale
+            setLightShadow(key->settings, light, closest);  // the report describes the closest candidate: stale
         }
         char text[320];
         if (tune.reachedLimit)
             std::snprintf(text, sizeof text,
-                          "suggested: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s%s (acne "
+                          "suggested for light %zu: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s%s (acne "
                           "%.3f %%, wrong pixels %.3f %%, %zu candidates, %.1f s)%s",
-                          double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
+                          light, double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
                           cullModeName(best.cullMode).c_str(), best.receiverPlaneBias ? ", receiver-plane bias" : "",
                           tune.report.acnePercent, tune.report.wrongPercent,
                           tune.path.size(), tune.seconds, applied ? ", applied" : ", NOT applied");
         else
             std::snprintf(text, sizeof text,
-                          "NO setting reached the acne limit (stopped by %s; least acne %.3f %% at DepthBias %g, slope "
+                          "NO setting reached the acne limit for light %zu (stopped by %s; least acne %.3f %% at DepthBias %g, slope "
                           "%g, normal offset %g); nothing applied",
-                          causeInfo(tune.blockingCause).name, tune.report.acnePercent, double(closest.depthBias),
+                          light, causeInfo(tune.blockingCause).name, tune.report.acnePercent, double(closest.depthBias),
                           double(closest.slopeScaledDepthBias), double(closest.normalOffset));
         state_.say(text, !tune.reachedLimit || !applied);
         a.tune = std::move(result.tune);
@@ -197,8 +203,8 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
     if (!result.tune) {
         char text[220];
         std::snprintf(text, sizeof text,
-                      "accuracy: acne %.3f %%, leak %.3f %%, wrong pixels %.3f %%, mean error %.4f (%dx%d, %.2f s)",
-                      result.report.acnePercent, result.report.leakPercent, result.report.wrongPercent,
+                      "accuracy of light %zu: acne %.3f %%, leak %.3f %%, wrong pixels %.3f %%, mean error %.4f (%dx%d, %.2f s)",
+                      key ? key->light : state_.selectedLight, result.report.acnePercent, result.report.leakPercent, result.report.wrongPercent,
                       result.report.meanError, result.report.width, result.report.height, result.seconds);
         state_.say(text);
     }

@@ -7,6 +7,7 @@
 #include "accuracy/light_isolation.h"
 #include "accuracy/shadow_boundary.h"
 #include "frame/renderer.h"
+#include "light/scene_lights.h"
 #include "reference/embree_scene.h"
 #include "reference/parallel_rows.h"
 #include "reference/visibility.h"
@@ -92,6 +93,11 @@ std::optional<Settings> measuredSettings(const Settings& given, const Scene& sce
         return std::nullopt;
     }
     if (error = invalidSettings(given); !error.empty()) return std::nullopt;
+    // Several lights: the caller chooses one (light_accuracy.h measures each); never light 0 silently.
+    if (effectiveLights(given, scene).size() > 1) {
+        error = singleLightError(given, scene, "the accuracy meter");
+        return std::nullopt;
+    }
     return isolateLight(given, scene, 0, error);
 }
 

@@ -1,6 +1,8 @@
 #include "light/scene_lights.h"
 #include "accuracy/bias_tuner.h"
 
+#include "accuracy/light_isolation.h"
+
 #include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings_fields.h"
@@ -107,6 +109,11 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     };
     if (std::vector<std::string> problems = start.validate(); !problems.empty()) {
         result.error = "invalid settings: " + problems.front();
+        return finish();
+    }
+    // One light: the caller isolates the light to tune (light_isolation.h) and writes the result back to it.
+    if (std::string error = singleLightError(start, scene, "the bias search"); !error.empty()) {
+        result.error = error;
         return finish();
     }
     if (!(maxAcnePercent >= 0.0)) {

@@ -177,7 +177,7 @@ ManyLightsReport measureLights(AccuracyMeter& meter, const Scene& scene, const S
         }
         if (!light.report.ok) {
             many.cancelled = light.report.cancelled;
-            many.error = "lights." + std::to_string(indices[j]) + ": " + light.report.error;
+            many.error = messageForLight(light.report.error, indices[j]);
             return many;
         }
         many.lights.push_back(std::move(light));

@@ -35,6 +35,24 @@ std::optional<Settings> isolateLight(const Settings& settings, const Scene& scen
     return one;
 }
 
+std::string singleLightError(const Settings& settings, const Scene& scene, const std::string& tool) {
+    const std::size_t count = effectiveLights(settings, scene).size();
+    if (count == 1) return "";
+    if (count == 0) return tool + ": there is no light (the settings have no lights)";
+    return tool + " describes one light, and these settings have " + std::to_string(count) +
+           " lights: choose one (the CLI's --light N, the editor's selected light)";
+}
+
+std::string messageForLight(const std::string& message, std::size_t index) {
+    const std::string key = "lights." + std::to_string(index);
+    const std::string isolated = "lights.0";
+    if (message.rfind(isolated, 0) == 0 && message.size() > isolated.size() &&
+        (message[isolated.size()] == '.' || message[isolated.size()] == ':'))
+        return key + message.substr(isolated.size());
+    if (message.rfind(key + ":", 0) == 0 || message.rfind(key + ".", 0) == 0) return message;
+    return key + ": " + message;
+}
+
 void setLightShadow(Settings& settings, std::size_t index, const ShadowMapSettings& shadow) {
     if (settings.lights.empty()) settings.lights.emplace_back();
     while (settings.lights.size() <= index) settings.lights.push_back(settings.lights.back());

@@ -23,6 +23,15 @@ std::vector<std::size_t> castingLights(const Settings& settings, const Scene& sc
 std::optional<Settings> isolateLight(const Settings& settings, const Scene& scene, std::size_t index,
                                      std::string& error);
 
+// The tools that describe one light (the accuracy meter, the bias tuner, the pixel probe) take settings holding
+// exactly that light: "" when `settings` has one effective light, else why not, naming `tool`. They never fall back
+// to light 0 of several: the caller says which light (isolateLight), and the tool's report names it.
+std::string singleLightError(const Settings& settings, const Scene& scene, const std::string& tool);
+
+// A message about the isolated settings (whose only light is lights.0) as it reads for light `index` of the
+// caller's: "lights.0.range: ..." -> "lights.3.range: ...", anything else prefixed "lights.3: " (never twice).
+std::string messageForLight(const std::string& message, std::size_t index);
+
 // Writes a tuned shadow map (bias, cull mode) back into light i of `settings`. With useSceneLights the scene's
 // light i takes its tuning from lights[min(i, last)], so the list is first padded with copies of its last entry:
 // the other scene lights keep the tuning they had.

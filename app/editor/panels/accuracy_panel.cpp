@@ -181,7 +181,7 @@ void biasSearchTab(PanelContext& ctx) {
             a.tune->reachedLimit
                 ? "applied: acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
                       format("%.1f %%", a.maxAcnePercent) + ", wrong pixels " +
-                      format("%.3f %%", a.tune->report.wrongPercent) + ", cull " + cullModeName(a.tune->best.lights[0].shadow.cullMode)
+                      format("%.3f %%", a.tune->report.wrongPercent) + ", cull " + cullModeName(a.tune->best.lights.front().shadow.cullMode)
                 : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + " (least: " +
                       format("%.3f %%", a.tune->report.acnePercent) + "); stopped by " +
                       causeInfo(a.tune->blockingCause).name + ": " + causeInfo(a.tune->blockingCause).remedy +
@@ -192,7 +192,7 @@ void biasSearchTab(PanelContext& ctx) {
         ImGui::PopStyleColor();
         state.controls.recordLastItem("accuracy.result");
         if (ImGui::IsItemHovered()) {
-            const ShadowMapSettings& best = a.tune->closest.lights[0].shadow;
+            const ShadowMapSettings& best = a.tune->closest.lights.front().shadow;  // the tuned light, alone
             ImGui::SetTooltip("DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels\n%zu candidates in %.1f s",
                               double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
                               a.tune->path.size(), a.tune->seconds);
@@ -393,6 +393,14 @@ void drawAccuracyPanel(PanelContext& ctx) {
         state.controls.recordLastItem("accuracy.live");
     }
 
+    // Which light the numbers describe: the selected light when measured, measured alone (never light 0 silently).
+    if (a.reportKey) {
+        const std::size_t count = a.reportKey->settings.lights.size();
+        noteText("Numbers of light " + std::to_string(a.reportKey->light) + " (" +
+                 lightTypeText(a.reportKey->settings, a.reportKey->light) + ")" +
+                 (count > 1 ? ", one of " + std::to_string(count) + " lights, measured alone (select another light and Measure for its numbers)" : ""));
+        state.controls.recordLastItem("accuracy.light");
+    }
     if (!a.error.empty() && !a.running) {
         errorText(a.error);
         state.controls.recordLastItem("accuracy.error");
