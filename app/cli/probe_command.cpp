@@ -2,10 +2,13 @@
 
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
+#include "accuracy/light_isolation.h"
 #include "context/headless_context.h"
+#include "light/scene_lights.h"
 #include "probe/probe_description.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
+#include "settings/settings_fields.h"
 
 #include <charconv>
 #include <iostream>
@@ -42,34 +45,58 @@ int runProbe(const ProbeOptions& options) {
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
 
+    // Which lights: --light N, else every shadow-casting light, each probed alone (its own S on GPU and CPU).
+    std::vector<std::size_t> lights;
+    if (options.light >= 0) {
+        if (std::string error = unmeasurableReason(*settings, scene, std::size_t(options.light)); !error.empty())
+            return fail("--light " + std::to_string(options.light) + ": " + error);
+        lights.push_back(std::size_t(options.light));
+    } else {
+        lights = castingLights(*settings, scene);
+        if (lights.empty()) return fail("no light casts a shadow: nothing to probe");
+    }
+
     try {
         HeadlessContext context;
         Renderer renderer;
         PixelProbe probe;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
-        if (std::string error = probe.capture(renderer, scene, *settings, camera, options.width, options.height);
-            !error.empty())
-            return fail(error);
-        for (const std::string& w : probe.stats().warnings) std::cerr << "warning: " << w << "\n";
-        std::optional<AccuracyReport> measured;
-        if (options.measure) {
-            AccuracyMeter meter;
-            measured = meter.measure(scene, *settings, camera, options.width, options.height);
-            if (!measured->ok) return fail("--measure: " + measured->error);
-        }
-        const PixelProbeReport report = probe.at(x, y, measured ? &*measured : nullptr);
-        if (!report.ok) return fail(report.error);
         std::cout << "scene " << scene.name << "\n";
-        for (const std::string& line : describeProbe(report)) std::cout << line << "\n";
+        nlohmann::json perLight = nlohmann::json::array();
+        bool disagrees = false;
+        for (std::size_t index : lights) {
+            std::string error;
+            const std::optional<Settings> one = isolateLight(*settings, scene, index, error);
+            if (!one) return fail(error);
+            if (error = probe.capture(renderer, scene, *one, camera, options.width, options.height, index);
+                !error.empty())
+                return fail("light " + std::to_string(index) + ": " + error);
+            for (const std::string& w : probe.stats().warnings) std::cerr << "warning: " << w << "\n";
+            std::optional<AccuracyReport> measured;
+            if (options.measure) {
+                AccuracyMeter meter;
+                measured = meter.measure(scene, *one, camera, options.width, options.height);
+                if (!measured->ok) return fail("--measure: light " + std::to_string(index) + ": " + measured->error);
+            }
+            const PixelProbeReport report = probe.at(x, y, measured ? &*measured : nullptr);
+            if (!report.ok) return fail("light " + std::to_string(index) + ": " + report.error);
+            for (const std::string& line : describeProbe(report)) std::cout << line << "\n";
+            perLight.push_back(probeToJson(report));
+            disagrees = disagrees || !report.agrees;
+            if (!report.agrees)
+                std::cerr << "error: light " << index
+                          << ": the CPU's shadow factor and the GPU's disagree at this pixel (a bug)\n";
+        }
         if (!options.json.empty()) {
-            nlohmann::json json = probeToJson(report);
+            // One light: the probe itself (as the editor's Save JSON writes it); several: each under "lights".
+            nlohmann::json json = perLight.size() == 1 ? perLight[0] : nlohmann::json{{"lights", perLight}};
             json["scene"] = options.scene;
             json["preset"] = options.preset;
             if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
                 return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }
-        if (!report.agrees) return fail("the CPU's shadow factor and the GPU's disagree at this pixel (a bug)");
+        if (disagrees) return 1;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

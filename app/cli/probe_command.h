@@ -16,6 +16,7 @@ struct ProbeOptions {
     std::string pixel;  // "X,Y", y down from the top
     std::string json;   // optional
     bool measure = false;
+    int light = -1;     // --light N: probe light N only (index into the effective lights); -1 = every casting light
 };
 
 // "X,Y" -> the pixel; false (and `error` set, naming `option`) when it is not two integers.

@@ -1,5 +1,6 @@
 #include "cli/profile_command.h"
 
+#include "accuracy/light_isolation.h"
 #include "cli/command_input.h"
 #include "cli/probe_command.h"
 #include "cli/settings_from_cli.h"
@@ -8,6 +9,7 @@
 #include "probe/depth_profile_output.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
+#include "settings/settings_fields.h"
 
 #include <iostream>
 
@@ -32,18 +34,23 @@ int runProfile(const ProfileOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
+    const std::optional<std::size_t> light = chooseOneLight(*settings, scene, options.light, "profile", error);
+    if (!light) return fail(error);
+    const std::optional<Settings> one = isolateLight(*settings, scene, *light, error);
+    if (!one) return fail(error);
 
     try {
         HeadlessContext context;
         Renderer renderer;
         PixelProbe probe;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
-        if (error = probe.capture(renderer, scene, *settings, camera, options.width, options.height); !error.empty())
+        if (error = probe.capture(renderer, scene, *one, camera, options.width, options.height, *light); !error.empty())
             return fail(error);
         for (const std::string& w : probe.stats().warnings) std::cerr << "warning: " << w << "\n";
         const DepthProfile profile = depthProfile(probe, from, to);
         if (!profile.ok) return fail(profile.error);
-        std::cout << "scene " << scene.name << "\n"
+        std::cout << "scene " << scene.name << ", light " << *light << " (" << lightTypeName(one->lights.front().type)
+                  << ")\n"
                   << "line " << options.from << " -> " << options.to << ": " << profile.samples.size()
                   << " samples, " << profile.surfaces << " on surfaces, " << profile.acne << " acne, "
                   << profile.peterPanning << " Peter Panning\n";
@@ -56,6 +63,7 @@ int runProfile(const ProfileOptions& options) {
             json["scene"] = options.scene;
             json["preset"] = options.preset;
             json["view"] = {options.width, options.height};
+            json["light"] = *light;
             if (error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty()) return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }

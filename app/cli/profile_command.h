@@ -17,6 +17,7 @@ struct ProfileOptions {
     std::string json;      // optional: every sample's numbers
     int plotWidth = 960;
     int plotHeight = 480;
+    int light = -1;        // --light N; -1: the only shadow-casting light (several: refused, say which)
 };
 
 // Exit code 0 unless it failed (bad input or line, no GL, a file that cannot be written).

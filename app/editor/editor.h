@@ -118,7 +118,8 @@ private:
     void uploadAccuracyOverlay();
     void probeViewportInput(ImVec2 imagePos);  // a click (no drag) or P held over the view asks for a probe
     void drawProbeMarker(ImVec2 imagePos);     // a ring around the probed pixel
-    void runProbe();                           // the pending probe, or the same pixel again once the view changed
+    void runProbe();
+    std::string captureProbe(const AccuracyViewKey& key);  // the probe's frame for key.light alone                           // the pending probe, or the same pixel again once the view changed
     void drawProfileLine(ImVec2 imagePos);     // the depth profile's line (Ctrl+drag draws it)
     void runProfile();                         // the drawn line's depth profile, again once the view changed
     // A/B (editor_ab.cpp): A's passes when it changed, the toolbar's buttons, the divider (an item submitted before

@@ -2,6 +2,7 @@
 // frame probes it with the editor's own renderer (same shadow map) and, when the Accuracy panel's measurement is of
 // this very view, its exact verdict and cause. A changed view or setting probes the same pixel again. Ctrl+drag
 // draws a line whose depth profile the Probe panel plots.
+#include "accuracy/light_isolation.h"
 #include "editor/editor.h"
 #include "editor/editor_keys.h"
 #include "probe/probe_description.h"
@@ -63,6 +64,14 @@ void Editor::drawProfileLine(ImVec2 imagePos) {
     draw->AddCircleFilled(a, 3.0f, IM_COL32(0, 220, 255, 255));
 }
 
+std::string Editor::captureProbe(const AccuracyViewKey& key) {
+    // The selected light alone: the probe explains that light's S, never light 0's or the lights' mean.
+    std::string error;
+    const std::optional<Settings> one = isolateLight(key.settings, *key.scene, key.light, error);
+    if (!one) return error;
+    return probe_->capture(*renderer_, *key.scene, *one, key.camera, key.width, key.height, key.light);
+}
+
 void Editor::runProfile() {
     ProbeState& p = state_.probe;
     const std::optional<AccuracyViewKey> key = accuracyKey();
@@ -72,8 +81,7 @@ void Editor::runProfile() {
     p.profileRequested = false;
     if (!probe_) probe_ = std::make_unique<PixelProbe>();
     DepthProfile profile;
-    if (std::string error = probe_->capture(*renderer_, *key->scene, key->settings, key->camera, key->width,
-                                            key->height);
+    if (std::string error = captureProbe(*key);
         !error.empty())
         profile.error = error;
     else
@@ -97,8 +105,7 @@ void Editor::runProbe() {
     // A live count carries no per-pixel data: only a full measure of this view can explain the pixel.
     const bool measuredHere = a.report && !a.report->live && a.reportKey && *a.reportKey == *key;
     PixelProbeReport report;
-    if (std::string error = probe_->capture(*renderer_, *key->scene, key->settings, key->camera, key->width,
-                                            key->height);
+    if (std::string error = captureProbe(*key);
         !error.empty()) {
         report.x = pixel->x;
         report.y = pixel->y;

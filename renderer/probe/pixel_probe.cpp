@@ -1,5 +1,7 @@
 #include "probe/pixel_probe.h"
 
+#include "accuracy/light_isolation.h"
+
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
 
@@ -61,9 +63,28 @@ std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w
     return map.readDepthRect(x0, y0, w, h);
 }
 
+namespace {
+
+// The cube face a direction from a point light selects (GL's rule: the largest magnitude, +X,-X,+Y,-Y,+Z,-Z), among
+// that light's views of the frame; `fallback` when the frame lacks it.
+const ShadowViewStats& cubeFaceView(const std::vector<ShadowViewStats>& views, const glm::dvec3& d,
+                                    const ShadowViewStats& fallback) {
+    const glm::dvec3 a = glm::abs(d);
+    const int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1)
+                     : a.y >= a.z             ? (d.y >= 0.0 ? 2 : 3)
+                                              : (d.z >= 0.0 ? 4 : 5);
+    for (const ShadowViewStats& v : views)
+        if (v.hasView && v.light == fallback.light && v.face == face) return v;
+    return fallback;
+}
+
+}  // namespace
+
 std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Settings& settings,
-                                const Camera& camera, int width, int height) {
+                                const Camera& camera, int width, int height, std::size_t lightIndex) {
     renderer_ = nullptr;
+    // One light: the GPU's S at a pixel is then that light's alone, the one the CPU side recomputes.
+    if (std::string error = singleLightError(settings, scene, "the pixel probe"); !error.empty()) return error;
     Settings shadowView = settings;
     shadowView.view = ViewMode::Shadow;  // the main pass writes S itself, into a float target
     if (std::string error = target_.resize(width, height, GL_RGBA32F); !error.empty()) return error;
@@ -87,6 +108,7 @@ std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Se
     renderer_ = &renderer;
     scene_ = &scene;
     settings_ = settings;
+    lightIndex_ = lightIndex;
     camera_ = camera;
     stats_ = std::move(stats);
     return {};
@@ -117,16 +139,35 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         return r;
     }
     const Scene& scene = *scene_;
-    const LightSpace& light = stats_.light;
+    r.light = lightIndex_;
+    r.lightType = settings_.lights.front().type;
     const glm::dvec3 origin = stats_.renderOrigin;
-    const int res = stats_.shadowMapResolution;
+    const glm::dvec3 p = samples_.point[i];
+    // The view that holds the point: the light's one view, or a point light's cube face (chosen below, as the GPU's
+    // cube lookup chooses it). The probe compares with that light's own S (capture renders it alone).
+    const ShadowViewStats* view = nullptr;
+    for (const ShadowViewStats& v : stats_.views)
+        if (v.hasView) {
+            view = &v;
+            break;
+        }
+    if (!view) {
+        r.error = "the light casts no shadow: nothing to probe";
+        return r;
+    }
+    const bool cube = view->face >= 0;
+    if (cube) view = &cubeFaceView(stats_.views, p - view->space.position, *view);
+    const ShadowMap* faceMap = renderer_->viewMap(view->light, view->face);
+    r.face = view->face;
+    r.viewName = view->name;
+    const LightSpace* space = &view->space;
+    const int res = view->resolution;
     r.resolution = res;
-    r.format = stats_.shadowMapFormat;
+    r.format = view->format;
     r.filter = settings_.filter;
     r.addressMode = settings_.sampler.addressMode;
 
     // The surface: the G-buffer's exact point, its triangle, and the main pass's interpolated normal.
-    const glm::dvec3 p = samples_.point[i];
     r.world = p + origin;
     r.geometricNormal = samples_.normal[i];
     r.instance = samples_.instance[i];
@@ -157,12 +198,26 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     shading = glm::length(shading) > 0.0 ? glm::normalize(shading) : r.geometricNormal;
     r.shadingNormal = r.frontFacing ? shading : -shading;
 
-    // The lookup: moved along the normal by normalOffset texels' world size, as main.frag.glsl does.
-    const double texelWorld = light.perspective
-                                  ? 2.0 * light.tanHalfFov / light.resolution * glm::dot(p - light.position, light.direction)
-                                  : light.texelWorldSize;
-    const double offsetWorld = settings_.lights[0].shadow.normalOffset > 0.0f ? settings_.lights[0].shadow.normalOffset * texelWorld : 0.0;
+    // The lookup: moved along the normal by normalOffset texels' world size, as main.frag.glsl does (a point light:
+    // the texel's size at the point's distance along its own face's axis, the shader's max(|x|, |y|, |z|)).
+    const LightSettings& probed = settings_.lights.front();  // capture() holds exactly the probed light
+    const glm::dvec3 fromLight = p - space->position;
+    const double texelWorld =
+        cube ? 2.0 * space->tanHalfFov / space->resolution *
+                   std::max({std::abs(fromLight.x), std::abs(fromLight.y), std::abs(fromLight.z)})
+        : space->perspective ? 2.0 * space->tanHalfFov / space->resolution * glm::dot(fromLight, space->direction)
+                             : space->texelWorldSize;
+    const double offsetWorld = probed.shadow.normalOffset > 0.0f ? probed.shadow.normalOffset * texelWorld : 0.0;
     const glm::dvec3 lookup = p + r.shadingNormal * offsetWorld;
+    // The GPU picks the cube face of the lookup (after the normal offset), not of the point.
+    if (cube) {
+        view = &cubeFaceView(stats_.views, lookup - space->position, *view);
+        faceMap = renderer_->viewMap(view->light, view->face);
+        space = &view->space;
+        r.face = view->face;
+        r.viewName = view->name;
+    }
+    const LightSpace& light = *space;
     r.lookupWorld = lookup + origin;
     r.lightView = glm::dvec3(light.view * glm::dvec4(lookup, 1.0));
     r.lightTexture = toLightTexture(light, lookup);
@@ -170,7 +225,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     r.texel = glm::ivec2(int(std::floor(r.texelCoord.x)), int(std::floor(r.texelCoord.y)));
     r.insideMap = r.lightTexture.x >= 0.0 && r.lightTexture.x <= 1.0 && r.lightTexture.y >= 0.0 &&
                   r.lightTexture.y <= 1.0;
-    if (light.perspective) {
+    if (light.perspective && !cube) {  // a spot's cone; a cube face has none
         const glm::dvec3 toLight = glm::normalize(light.position - p);
         r.inCone = glm::dot(-toLight, light.direction) >= std::cos(std::atan(light.tanHalfFov));
     }
@@ -188,7 +243,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         window[k] = {t.x * res, t.y * res, std::clamp(t.z, 0.0, 1.0)};
     }
     glm::dvec2 plane(0.0);  // d(depth)/d(texel) when receiver-plane bias applies
-    const ShadowMapSettings& shadow = settings_.lights[0].shadow;
+    const ShadowMapSettings& shadow = probed.shadow;
     if (shadow.receiverPlaneBias && filterTechnique(r.filter.kind).receiverPlane && light.cubeFace < 0) {
         glm::dvec3 unclamped[3];
         for (int k = 0; k < 3; ++k) unclamped[k] = {window[k].x, window[k].y, toLightTexture(light, v[k]).z};
@@ -248,7 +303,11 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         candidates.push_back(std::move(c));
     }
     const int rectW = maxX >= minX ? maxX - minX + 1 : 0, rectH = maxY >= minY ? maxY - minY + 1 : 0;
-    const std::vector<float> stored = readShadowMapRect(renderer_->shadowMap(), minX, minY, rectW, rectH);
+    if (!faceMap) {
+        r.error = "no shadow map for " + view->name;
+        return r;
+    }
+    const std::vector<float> stored = readShadowMapRect(*faceMap, minX, minY, rectW, rectH);
     auto compare = [&](int tx, int ty, double weight, double receiver, double eps) {
         ProbeTexel texel;
         texel.weight = weight;

@@ -68,6 +68,10 @@ struct PixelProbeReport {
     glm::ivec2 texel{0};             // the texel it falls in
     bool insideMap = true;           // lightTexture.xy within [0, 1]
     bool inCone = true;              // spot: inside the cone (else S = 0)
+    std::size_t light = 0;           // the probed light's index in the frame's effective lights (capture's `lightIndex`)
+    LightType lightType = LightType::Directional;
+    int face = -1;                   // a point light: the cube face the lookup falls in (GL order +X,-X,+Y,-Y,+Z,-Z)
+    std::string viewName;            // the shadow view probed, e.g. "light 0", "light 0 +X" (the light as captured)
     bool reversedZ = false;          // the map's depth convention: near 1, far 0 (depths below are as stored)
     double receiverDepth = 0.0;      // what each tap compares: z clamped to the far plane (fixed point: to [0, 1])
     double depthUncertainty = 0.0;   // float rounding of the GPU's receiver depth, in depth
@@ -100,9 +104,11 @@ public:
     PixelProbe() = default;
 
     // Renders the frame to probe (the shadow factor into a float target, and the G-buffer) with `renderer`, whose
-    // shadow map is the one probed. "" or why not. Keep renderer and scene unchanged until the last at().
+    // shadow map is the one probed. `settings` must hold exactly the light to probe (light_isolation.h's
+    // isolateLight): the GPU's S is then that light's alone; several lights are refused, never light 0 silently. "" or why not. Keep renderer and scene unchanged until the last at().
+    // `lightIndex`: which light of the caller's frame it is, for the report's label.
     std::string capture(Renderer& renderer, const Scene& scene, const Settings& settings, const Camera& camera,
-                        int width, int height);
+                        int width, int height, std::size_t lightIndex = 0);
     bool captured() const { return renderer_ != nullptr; }
 
     // One pixel of the captured frame (y down from the top). `measured`: an accuracy report of the same view (its
@@ -118,6 +124,7 @@ private:
     const Renderer* renderer_ = nullptr;
     const Scene* scene_ = nullptr;
     Settings settings_;
+    std::size_t lightIndex_ = 0;
     Camera camera_;
     FrameStats stats_;
     SurfaceSamples samples_;

@@ -1,5 +1,6 @@
 #include "probe/probe_description.h"
 
+#include "settings/settings_fields.h"
 #include "shadow/shadow_map.h"
 
 #include <cstdio>
@@ -83,6 +84,9 @@ std::vector<std::string> describeProbe(const PixelProbeReport& r) {
         return lines;
     }
     lines.push_back(format("pixel %d,%d of %dx%d: ", r.x, r.y, r.width, r.height) + probeSummary(r));
+    lines.push_back("light " + std::to_string(r.light) + " (" + lightTypeName(r.lightType) + ")" +
+                    (r.face >= 0 ? std::string(", cube face ") + cubeFaces()[std::size_t(r.face)].name : std::string()) +
+                    ", alone: S is this light's shadow factor");
     lines.push_back("surface: world " + vec(r.world) + format(" on '%s' (instance %d, triangle %d), %s face",
                                                               r.meshName.c_str(), r.instance, r.triangle,
                                                               r.frontFacing ? "front" : "back"));
@@ -134,6 +138,9 @@ nlohmann::json probeToJson(const PixelProbeReport& r) {
         j["error"] = r.error;
         return j;
     }
+    j["light"] = r.light;
+    j["lightType"] = lightTypeName(r.lightType);
+    if (r.face >= 0) j["cubeFace"] = cubeFaces()[std::size_t(r.face)].name;
     j["surface"] = {{"world", toJson(r.world)},
                     {"geometricNormal", toJson(r.geometricNormal)},
                     {"shadingNormal", toJson(r.shadingNormal)},
