@@ -132,12 +132,15 @@ int main(int argc, char** argv) {
     probeCmd->add_option("--height", probe.height, "view height")->capture_default_str();
     probeCmd->add_option("--pixel", probe.pixel, "X,Y: the pixel, y down from the top")->required();
     probeCmd->add_option("--json", probe.json, "also write the probe as JSON");
+    probeCmd->add_option("--light", probe.light,
+                         "probe light N only (default: every shadow-casting light, each alone, each with its own S)");
     probeCmd->add_flag("--measure", probe.measure, "also measure the view: the exact visibility and the error's cause");
     cli::ProfileOptions profile;
     CLI::App* profileCmd = app.add_subcommand("profile", "Depth profile along a line: receiver depth, map texels, bias; acne and Peter Panning marked");
     profileCmd->add_option("--scene", profile.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
     profileCmd->add_option("--preset", profile.preset, "a preset JSON path, or the name of a shipped preset");
     profileCmd->add_option("--set", profile.overrides, "override a setting: key=value (repeatable)");
+    profileCmd->add_option("--light", profile.light, "the light whose depths the line shows (default: the only shadow-casting light)");
     profileCmd->add_option("--width", profile.width, "view width")->capture_default_str();
     profileCmd->add_option("--height", profile.height, "view height")->capture_default_str();
     profileCmd->add_option("--from", profile.from, "X0,Y0: the line's start, y down from the top")->required();

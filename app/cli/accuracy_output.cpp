@@ -135,17 +135,6 @@ nlohmann::json numbersToJson(const AccuracyNumbers& n) {
     };
 }
 
-namespace {
-
-// The preset spelling of a light type ("directional", "spot", "point"), from the key table.
-std::string lightTypeName(LightType type) {
-    Settings s;
-    s.lights[0].type = type;
-    return findSettingsField("lights.0.type")->get(s).get<std::string>();
-}
-
-}  // namespace
-
 std::string lightLabel(std::size_t index, LightType type) {
     return "lights." + std::to_string(index) + " (" + lightTypeName(type) + ")";
 }

@@ -74,6 +74,13 @@ int runBench(const BenchOptions& options) {
         std::cout << "bench: " << scene.name << " (" << scene.triangleCount() << " triangles), view " << options.width
                   << "x" << options.height << ", " << options.frames << " frames per row, shadow pass every frame\n"
                   << "gl: " << info.renderer << "\n";
+        const std::size_t lightCount = base->lights.size();
+        std::cout << (lightCount == 0 ? std::string("lights: none (no shadow pass: the rows time the main pass only)")
+                      : lightCount == 1 ? std::string("lights: 1 (the resolution column is its map's)")
+                                        : "lights: " + std::to_string(lightCount) +
+                                              " (the resolution column applies to every light's map; bench --lights "
+                                              "times each view)")
+                  << "\n";
         const Camera camera = cameraFor(base->camera, scene, double(options.width) / options.height);
         nlohmann::json rows = nlohmann::json::array();
         std::cout << std::left << std::setw(12) << "resolution" << std::setw(13) << "filter" << std::setw(12)
@@ -86,7 +93,7 @@ int runBench(const BenchOptions& options) {
             }
             for (const std::string& filter : options.filters) {
                 Settings settings = *base;
-                settings.lights[0].shadow.resolution = resolution;
+                for (LightSettings& light : settings.lights) light.shadow.resolution = resolution;  // every light's map
                 applyFilter(filter, settings);  // checked above
                 const TimedFrames timed = timeFrames(renderer, scene, settings, camera, target, options.frames);
                 if (!timed.ok) {

@@ -12,16 +12,14 @@
 
 #include <algorithm>
 #include <iomanip>
+#include "settings/settings_fields.h"
+
 #include <iostream>
 #include <map>
 
 namespace shadowlab::cli {
 
 namespace {
-
-const char* kindName(LightType type) {
-    return type == LightType::Directional ? "directional" : type == LightType::Spot ? "spot" : "point";
-}
 
 int viewsThatRan(const FrameStats& stats) {
     return int(std::count_if(stats.views.begin(), stats.views.end(), [](const ShadowViewStats& v) { return v.ran; }));
@@ -71,16 +69,16 @@ int runBenchLights(const BenchOptions& options) {
         for (const ShadowViewStats& v : last.views) {
             const LightSettings& light = base.lights[v.light];
             if (!v.hasView) {
-                std::cout << "  " << std::left << std::setw(14) << v.name << kindName(light.type) << ": " << v.reason
+                std::cout << "  " << std::left << std::setw(14) << v.name << lightTypeName(light.type) << ": " << v.reason
                           << "\n";
                 continue;
             }
             const double ms = medianOf(perView[v.name]);
             allViews += ms;
-            std::cout << "  " << std::left << std::setw(14) << v.name << std::setw(12) << kindName(light.type)
+            std::cout << "  " << std::left << std::setw(14) << v.name << std::setw(12) << lightTypeName(light.type)
                       << std::setw(8) << v.resolution << std::fixed << std::setprecision(3) << ms << " ms  "
                       << v.castersDrawn << " casters\n";
-            views.push_back({{"view", v.name}, {"kind", kindName(light.type)}, {"resolution", v.resolution},
+            views.push_back({{"view", v.name}, {"kind", lightTypeName(light.type)}, {"resolution", v.resolution},
                              {"ms", ms}, {"castersDrawn", v.castersDrawn}});
         }
         std::cout << "  all views " << std::setprecision(3) << allViews << " ms; main pass " << medianOf(mainAll)
@@ -103,7 +101,7 @@ int runBenchLights(const BenchOptions& options) {
         FrameStats afterMove = renderer.render(scene, moved, camera, target);
         renderer.waitForTimings(afterMove);
         std::cout << "\nstatic frame: " << viewsThatRan(still) << " views rendered\n"
-                  << "moving light " << mover << " (" << kindName(base.lights[mover].type)
+                  << "moving light " << mover << " (" << lightTypeName(base.lights[mover].type)
                   << "): " << viewsThatRan(afterMove) << " views rendered, "
                   << afterMove.shadowPass.milliseconds.value_or(0.0) << " ms; the others: unchanged\n";
         doc["staticFrameViews"] = viewsThatRan(still);

@@ -22,8 +22,8 @@ std::string milliseconds(const PassStats& pass) {
 void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info, const FrameStats& stats) {
     out << "scene: " << scene.name << " (" << stats.sceneTriangles << " triangles)\n";
     out << "gl: " << info.renderer << "; timing: " << stats.timingSource << "\n";
-    out << "shadow map: " << stats.shadowMapResolution << "² " << depthFormatName(stats.shadowMapFormat) << ", "
-        << stats.shadowMapBytes / 1024 << " KiB" << (stats.shadowMapReallocated ? " (allocated)" : "") << "\n";
+    out << "shadow maps: " << stats.shadowMapBytes / 1024 << " KiB in all" << (stats.shadowMapReallocated ? " (allocated)" : "")
+        << "\n";
     out << "shadow pass: " << milliseconds(stats.shadowPass) << " — " << stats.shadowPass.reason << "; "
         << stats.castersDrawn << " casters drawn (" << stats.alphaTestedCasters << " alpha-tested), "
         << stats.castersSkipped << " outside the light's volume skipped, " << stats.shadowTriangles
@@ -31,11 +31,27 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
     out << "main pass: " << milliseconds(stats.mainPass) << "; variants:";
     for (const std::string& v : stats.mainVariants) out << " [" << v << "]";
     out << "\n";
-    out << std::setprecision(4) << "light: " << stats.lightSource << "; "
-        << (stats.light.perspective ? "spot" : "directional") << ", near "
-        << stats.light.nearPlane << ", far " << stats.light.farPlane << ", texel " << stats.bias.texelWorldSize
-        << " world units\n";
-    out << "bias (glPolygonOffsetClamp, at this scene's receivers):\n";
+    // Every view with its own light, kind and map: no line describes "the" light when there are several.
+    out << std::setprecision(4) << "lights: " << stats.lightSource << " (" << stats.lightCount << ")\n";
+    const ShadowViewStats* first = nullptr;
+    for (const ShadowViewStats& v : stats.views) {
+        out << "  " << v.name << ": ";
+        if (!v.hasView) {
+            out << v.reason << "\n";
+            continue;
+        }
+        if (!first) first = &v;
+        const LightSpace& s = v.space;
+        out << (s.cubeFace >= 0 ? "point (cube face)" : s.perspective ? "spot" : "directional") << ", map "
+            << v.resolution << "² " << depthFormatName(v.format) << ", near " << s.nearPlane << ", far " << s.farPlane
+            << (s.cubeFace >= 0 ? ", texel " : s.perspective ? ", texel at the scene centre " : ", texel ")
+            << s.texelWorldSize << (s.cubeFace >= 0 ? " x distance" : "") << " world units; " << (v.ran ? "rendered" : "skipped") << " (" << v.reason << ")\n";
+    }
+    if (!first) {
+        out << "bias: no light casts a shadow\n";
+        return;
+    }
+    out << "bias of " << first->name << ", the first view (glPolygonOffsetClamp, at this scene's receivers):\n";
     for (const std::string& line : describeBias(stats.bias))
         out << "  " << line << "\n";
 }

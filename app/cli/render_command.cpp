@@ -28,14 +28,19 @@ int runRender(const RenderOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, overrides, options.scene);
     if (!settings) return 2;
     // Checked against the settings' lights before any work; with useSceneLights the scene decides (after loading).
-    if (options.light < 0 || (!settings->useSceneLights && std::size_t(options.light) >= settings->lights.size()))
+    // Only a --light the user gave is checked: without it nothing names a light (the map outputs choose below).
+    if (options.light < -1 ||
+        (options.light >= 0 && !settings->useSceneLights && std::size_t(options.light) >= settings->lights.size()))
         return fail("--light " + std::to_string(options.light) + ": there is no light " +
                     std::to_string(options.light) + " (the settings have " + std::to_string(settings->lights.size()) +
                     " light" + (settings->lights.size() == 1 ? "" : "s") + ")");
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.shadowMapExr, "--shadow-map"},
-                                       std::pair{options.shadowMapPng, "--shadow-map-png"}})
-        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+    if (std::string error = checkOutputs({{options.out, "--out"}, {options.shadowMapExr, "--shadow-map"},
+                                          {options.shadowMapPng, "--shadow-map-png"}},
+                                         {{options.scene, "--scene"}, {options.preset, "--preset"},
+                                          {options.compare, "--compare"}});
+        !error.empty())
+        return fail(error);
 
     std::optional<Settings> settingsB;
     if (!options.compare.empty()) {
@@ -105,14 +110,20 @@ int runRender(const RenderOptions& options) {
         std::cout << "wrote " << options.out << " (" << target.width() << "x" << target.height() << ")\n";
 
         if (!options.shadowMapExr.empty() || !options.shadowMapPng.empty()) {
-            // The selected light's map; a point light's six faces as an unfolded cross.
-            const std::size_t light = std::size_t(options.light);
+            // The chosen light's map; a point light's six faces as an unfolded cross. Without --light: the only
+            // light that casts, never light 0 of several silently.
+            std::string chooseError;
+            const std::optional<std::size_t> chosen = chooseOneLight(
+                *settings, scene, options.light, options.shadowMapExr.empty() ? "--shadow-map-png" : "--shadow-map",
+                chooseError);
+            if (!chosen) return fail(chooseError);
+            const std::size_t light = *chosen;
             const ShadowMap* map = renderer.viewMap(light, -1);
             std::array<const ShadowMap*, 6> faces{};
             for (int f = 0; f < 6; ++f) faces[std::size_t(f)] = renderer.viewMap(light, f);
             const bool cube = faces[0] != nullptr;
             if (!map && !cube)
-                return fail("--light " + std::to_string(options.light) + ": light " + std::to_string(options.light) +
+                return fail("--light " + std::to_string(light) + ": light " + std::to_string(light) +
                             " has no shadow map (it is off or casts no shadow)");
             const ShadowMapFilesResult files =
                 cube ? writeCubeShadowMapFiles(faces, options.shadowMapExr, options.shadowMapPng)

@@ -14,7 +14,7 @@ struct RenderOptions {
     std::string out = "view.png";
     std::string shadowMapExr;
     std::string shadowMapPng;
-    int light = 0;  // whose map --shadow-map / --shadow-map-png write
+    int light = -1;  // whose map --shadow-map / --shadow-map-png write; -1 = not given (then the only casting light)
     std::string compare;  // A/B: preset B, drawn right of the divider (A = --preset with --set)
     double split = 0.5;   // where the divider stands, 0..1 of the width
     bool measure = false; // with --compare: each side's acne / leak / wrong pixels against the exact reference

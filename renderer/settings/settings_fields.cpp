@@ -265,11 +265,23 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
     f.push_back(tagged(vec3Field(keyOf("position"), "Spot or point light position, world units", "|c| <= 1e7",
                                  boundedPosition(1e7), at([](auto& l) -> auto& { return l.position; })),
                        kView));
-    f.push_back(tagged(floatField(keyOf("range"),
-                                  "Spot or point light range, world units (glTF's range): nothing beyond it is lit "
-                                  "or shadowed; 0 = no limit",
-                                  0, 1e7, at([](auto& l) -> auto& { return l.range; })),
-                       kView));
+    {
+        // A range is the far plane of the light's views, whose near plane is at least 1e-4: a range below 1e-3
+        // leaves no depth between them, so it is refused here (naming the range), not later as "near >= far".
+        constexpr double kMinRange = 1e-3;
+        SettingsField range = floatField(keyOf("range"),
+                                         "Spot or point light range, world units (glTF's range): nothing beyond it is "
+                                         "lit or shadowed; 0 = no limit",
+                                         0, 1e7, at([](auto& l) -> auto& { return l.range; }));
+        range.allowed = "0 (no limit) or [0.001, 1e7]";
+        range.set = [key = range.key, allowed = range.allowed, set = range.set](Settings& s, const nlohmann::json& j) {
+            if (j.is_number() && j.get<double>() > 0.0 && j.get<double>() < kMinRange)
+                return problem(key, describeJsonValue(j) + " is too short for a light's view (its near plane is 1e-4)",
+                               allowed);
+            return set(s, j);
+        };
+        f.push_back(tagged(std::move(range), kView));
+    }
     f.push_back(tagged(floatField(keyOf("spotConeDeg"), "Spot light full cone angle, degrees", 1, 170,
                                   at([](auto& l) -> auto& { return l.spotConeDeg; })),
                        kView));
@@ -744,6 +756,12 @@ std::string applySettingOverride(Settings& settings, std::string_view keyEqualsV
         }
     }
     return field->set(settings, value);
+}
+
+std::string lightTypeName(LightType type) {
+    Settings s;
+    s.lights[0].type = type;
+    return findSettingsField("lights.0.type")->get(s).get<std::string>();
 }
 
 }  // namespace shadowlab

@@ -104,6 +104,9 @@ std::string applySettingOverride(Settings& settings, std::string_view keyEqualsV
 // Bounded in time and depth whatever the value; bytes that are not UTF-8 print as U+FFFD.
 std::string describeJsonValue(const nlohmann::json& value);
 
+// A light type as presets spell it ("directional", "spot", "point"), from the key table: one name everywhere.
+std::string lightTypeName(LightType type);
+
 // A key as a message shows it: at most 60 bytes (then "... (N bytes)"), escaped, never invalid UTF-8.
 std::string describeKey(std::string_view key);
 
