@@ -1,10 +1,14 @@
 #include "cli/command_input.h"
 
+#include "accuracy/light_isolation.h"
+#include "settings/atomic_file.h"
 #include "settings/regular_file.h"
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
@@ -45,9 +49,46 @@ std::string checkOutputFolder(const std::string& path, const char* option) {
                "', which does not exist (ShadowLab does not create files through dangling links)";
     if (const std::string kind = nonRegularFileKind(path); !kind.empty())
         return where + "it is " + kind + ", not a regular file; ShadowLab writes only regular files";
+    if (const std::string readOnly = readOnlyFileReason(path); !readOnly.empty()) return where + readOnly;
     const fs::path folder = fs::path(path).parent_path();
-    if (folder.empty() || fs::is_directory(folder, ec)) return {};
-    return where + "folder '" + folder.string() + "' does not exist";
+    if (!folder.empty() && !fs::is_directory(folder, ec)) return where + "folder '" + folder.string() + "' does not exist";
+    // Found now, not after the work: a folder the writer cannot create its temporary file in.
+    if (::access(folder.empty() ? "." : folder.c_str(), W_OK | X_OK) != 0)
+        return where + "folder '" + (folder.empty() ? std::string(".") : folder.string()) + "' is not writable (" +
+               std::strerror(errno) + ")";
+    return {};
+}
+
+namespace {
+
+// Two names of one file: the same canonical path, or (both existing) the same inode.
+bool sameFile(const std::string& a, const std::string& b) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+    const fs::path ca = fs::weakly_canonical(a, ec);
+    if (ec) return false;
+    const fs::path cb = fs::weakly_canonical(b, ec);
+    return !ec && ca == cb;
+}
+
+}  // namespace
+
+std::string checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const NamedPath& out = outputs[i];
+        if (out.path.empty()) continue;
+        if (std::string error = checkOutputFolder(out.path, out.option); !error.empty()) return error;
+        for (std::size_t j = 0; j < i; ++j)
+            if (!outputs[j].path.empty() && sameFile(outputs[j].path, out.path))
+                return std::string(outputs[j].option) + " and " + out.option + " both name " + out.path +
+                       ": each output needs its own file (one would overwrite the other)";
+        for (const NamedPath& in : inputs)
+            if (!in.path.empty() && sameFile(in.path, out.path))
+                return std::string(out.option) + " " + out.path + " is the input " + in.option +
+                       ": refusing to overwrite what the command reads";
+    }
+    return {};
 }
 
 std::string checkMeasureMemory(int width, int height) {
@@ -64,6 +105,25 @@ std::string checkMeasureMemory(int width, int height) {
     return "--width/--height " + std::to_string(width) + "x" + std::to_string(height) + ": a measurement needs about " +
            gib(bytes) + " of memory (" + std::to_string(kMeasureBytesPerPixel) + " bytes a pixel), more than the " +
            gib(available) + " available; use a smaller view";
+}
+
+std::optional<std::size_t> chooseOneLight(const Settings& settings, const Scene& scene, int requested,
+                                          const std::string& option, std::string& error) {
+    if (requested >= 0) {
+        if (error = unmeasurableReason(settings, scene, std::size_t(requested)); !error.empty()) {
+            error = "--light " + std::to_string(requested) + ": " + error;
+            return std::nullopt;
+        }
+        return std::size_t(requested);
+    }
+    const std::vector<std::size_t> casting = castingLights(settings, scene);
+    if (casting.size() == 1) return casting.front();
+    error = option + ": " +
+            (casting.empty() ? std::string("no light casts a shadow (the settings have ") +
+                                   std::to_string(settings.lights.size()) + " light" +
+                                   (settings.lights.size() == 1 ? "" : "s") + ")"
+                             : std::to_string(casting.size()) + " lights cast shadows: say which with --light N");
+    return std::nullopt;
 }
 
 }  // namespace shadowlab::cli

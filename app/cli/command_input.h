@@ -3,7 +3,11 @@
 // scene.
 #include "scene/scene_source.h"
 
+#include "settings/settings.h"
+
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace shadowlab::cli {
 
@@ -15,12 +19,29 @@ std::string checkViewSize(int width, int height);
 // "" when pixel (x, y) lies in a width x height view, else why, naming the option and its text as given.
 std::string checkPixelInView(const std::string& option, const std::string& text, int x, int y, int width, int height);
 
+// The one light a one-light tool describes: `requested` (--light N, checked: it exists and casts) or, when it is -1,
+// the only shadow-casting light; several casting lights without --light are refused (never light 0 silently).
+// nullopt with `error` naming `option`.
+std::optional<std::size_t> chooseOneLight(const Settings& settings, const Scene& scene, int requested,
+                                          const std::string& option, std::string& error);
+
 // Loads SCENE (a path or builtin:NAME) and prints the loader's warnings to stderr; on failure .error says why.
 SceneLoadResult loadSceneForCommand(const std::string& spec);
 
 // "" when a file can be written at path (its folder exists; it is a regular file or new; not a dangling symlink),
 // else why not — checked before the work starts, with the rules of writeFileAtomically.
 std::string checkOutputFolder(const std::string& path, const char* option);
+
+// An option and the path it names ("--json", "o.json").
+struct NamedPath {
+    std::string path;
+    const char* option;
+};
+
+// Every output of a command, checked before its work: each with checkOutputFolder's rules, none read-only, none
+// the same file as another output (`sweep --json o --csv o`) or as an input (`render --scene mine.glb --out
+// mine.glb`, `measure --preset p.json --overlay p.json`). Empty paths are skipped. "" or the first problem.
+std::string checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs = {});
 
 // What a measurement holds per view pixel, summed over its buffers (G-buffer readback with double positions and
 // normals, the tool's frame and shadow factor, reference classes and Lambert, boundary search, overlay: ~180

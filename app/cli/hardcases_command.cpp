@@ -27,6 +27,9 @@ int runHardCases(const HardCasesOptions& options) {
             return fail("--out-dir " + options.outDir + ": cannot create the folder" +
                         (ec ? " (" + ec.message() + ")" : ""));
     }
+    // A scenes folder the user named must exist: a typo would otherwise turn every check into "not run", exit 0.
+    if (!options.sharedScenes.empty() && !std::filesystem::is_directory(options.sharedScenes))
+        return fail("--scenes " + options.sharedScenes + ": no such folder (the glTF scenes of ../shared/scenes)");
     // After --out-dir, which may be the JSON's folder.
     if (std::string e = checkOutputFolder(options.json, "--json"); !e.empty()) return fail(e);
     hardcases::HardCaseOptions caseOptions;

@@ -24,9 +24,11 @@ int runMeasure(const MeasureOptions& options) {
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
-    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"},
-                                       std::pair{options.causeOverlay, "--cause-overlay"}})
-        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+    if (std::string error = checkOutputs({{options.json, "--json"}, {options.overlay, "--overlay"},
+                                          {options.causeOverlay, "--cause-overlay"}},
+                                         {{options.scene, "--scene"}, {options.preset, "--preset"}});
+        !error.empty())
+        return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;

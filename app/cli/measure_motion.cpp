@@ -98,8 +98,10 @@ int runMeasureMotion(const MeasureOptions& options) {
     if (!settings) return 2;
     if (error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
-    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.overlay, "--overlay"}})
-        if (error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+    if (error = checkOutputs({{options.json, "--json"}, {options.overlay, "--overlay"}},
+                             {{options.scene, "--scene"}, {options.preset, "--preset"}});
+        !error.empty())
+        return fail(error);
     if (!options.framesOut.empty())
         if (error = prepareFolder(options.framesOut); !error.empty()) return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);

@@ -65,9 +65,10 @@ int runSweep(const SweepOptions& options) {
     if (options.frames < 1) return fail("--frames must be at least 1");
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
-    for (const auto& [path, option] : {std::pair{options.json, "--json"}, std::pair{options.csv, "--csv"},
-                                       std::pair{options.chart, "--chart"}})
-        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+    if (std::string error = checkOutputs({{options.json, "--json"}, {options.csv, "--csv"}, {options.chart, "--chart"}},
+                                         {{options.scene, "--scene"}, {options.preset, "--preset"}});
+        !error.empty())
+        return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;

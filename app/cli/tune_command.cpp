@@ -36,8 +36,10 @@ int runTune(const TuneOptions& options) {
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     if (!(options.maxAcnePercent >= 0.0 && options.maxAcnePercent <= 100.0))
         return fail("--max-acne must be a percentage in [0, 100]");
-    for (const auto& [path, option] : {std::pair{options.out, "--out"}, std::pair{options.json, "--json"}})
-        if (std::string error = checkOutputFolder(path, option); !error.empty()) return fail(error);
+    if (std::string error = checkOutputs({{options.out, "--out"}, {options.json, "--json"}},
+                                         {{options.scene, "--scene"}, {options.preset, "--preset"}});
+        !error.empty())
+        return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -16,6 +17,16 @@ bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.
 glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double radians) {
     const double c = std::cos(radians), s = std::sin(radians);
     return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0 - c);
+}
+
+// A user's direction as a unit vector: scaled by its largest component first, so 1e300,0,0 (whose length overflows
+// to infinity, and glm::normalize to zero) and 1e-300,0,0 (whose length underflows) are both the unit X axis.
+// Zero for a zero or non-finite vector.
+glm::dvec3 unitDirection(const glm::dvec3& v) {
+    if (!finite(v)) return glm::dvec3(0.0);
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    if (!(largest > 0.0)) return glm::dvec3(0.0);
+    return glm::normalize(v / largest);
 }
 
 glm::dvec3 sceneCentre(const Bounds& bounds) {
@@ -78,7 +89,7 @@ std::string motionError(const Motion& motion, const Bounds& sceneBounds) {
             << diameter << ") (flicker is about sub-texel steps)";
         return out.str();
     }
-    if (motion.direction && (!finite(*motion.direction) || glm::length(*motion.direction) < 1e-12))
+    if (motion.direction && unitDirection(*motion.direction) == glm::dvec3(0.0))
         return motion.kind == MotionKind::Camera ? "--direction: the camera's direction of travel must be finite and non-zero"
                                                  : "--direction: the rotation axis must be finite and non-zero";
     return "";
@@ -86,14 +97,14 @@ std::string motionError(const Motion& motion, const Bounds& sceneBounds) {
 
 Camera cameraAtFrame(const Camera& start, const Motion& motion, int frame) {
     if (motion.kind == MotionKind::CameraTurn) {
-        const glm::dvec3 axis = motion.direction ? glm::normalize(*motion.direction) : glm::dvec3(0.0, 1.0, 0.0);
+        const glm::dvec3 axis = motion.direction ? unitDirection(*motion.direction) : glm::dvec3(0.0, 1.0, 0.0);
         Camera camera = start;
         camera.target = start.position +
                         rotate(start.target - start.position, axis, glm::radians(motion.step * double(frame)));
         return camera;
     }
     if (motion.kind != MotionKind::Camera) return start;
-    const glm::dvec3 along = motion.direction ? glm::normalize(*motion.direction)
+    const glm::dvec3 along = motion.direction ? unitDirection(*motion.direction)
                                               : viewBasis(start.target - start.position).right;
     const glm::dvec3 offset = along * (motion.step * double(frame));
     Camera camera = start;
@@ -103,7 +114,7 @@ Camera cameraAtFrame(const Camera& start, const Motion& motion, int frame) {
 }
 
 glm::dvec3 lightRotationAxis(const LightSettings& light, const Motion& motion, const Bounds& sceneBounds) {
-    if (motion.direction) return glm::normalize(*motion.direction);
+    if (motion.direction) return unitDirection(*motion.direction);
     const glm::dvec3 v = rotated(light, sceneBounds);
     const glm::dvec3 across = glm::cross(v, glm::dvec3(0.0, 1.0, 0.0));
     const double length = glm::length(across);

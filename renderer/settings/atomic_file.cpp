@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdio>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -42,6 +43,18 @@ bool writeAll(int fd, const char* p, std::size_t left) {
 
 }  // namespace
 
+std::string readOnlyFileReason(const std::string& path) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(path, ec);
+    if (ec || !fs::is_regular_file(status)) return "";
+    const fs::perms p = status.permissions();
+    const fs::perms write = fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    if ((p & write) != fs::perms::none) return "";
+    char mode[8];
+    std::snprintf(mode, sizeof mode, "%04o", unsigned(p) & 07777u);
+    return std::string("it is read-only (mode ") + mode + "): ShadowLab does not replace a file its owner protected";
+}
+
 std::string writeFileAtomically(const std::string& path, const std::string& text) {
     return writeFileAtomically(path, text.data(), text.size());
 }
@@ -64,6 +77,7 @@ std::string writeFileAtomically(const std::string& path, const void* bytes, std:
     // Only a regular file is replaced: renaming over /dev/null, a FIFO or a socket would destroy it.
     if (const std::string kind = nonRegularFileKind(target.string()); !kind.empty())
         return "it is " + kind + ", not a regular file; ShadowLab writes only regular files";
+    if (std::string readOnly = readOnlyFileReason(target.string()); !readOnly.empty()) return readOnly;
 
     // Temporary in the same folder so rename() is atomic (same file system). O_EXCL: never reuse someone's file.
     static std::atomic<unsigned> counter{0};

@@ -88,12 +88,15 @@ SweepPlan planSweep(const Settings& base, const std::vector<std::string>& axisTe
         SweepAxis axis;
         axis.key = trimmed(std::string_view(text).substr(0, eq));
         for (const std::string& part : splitValues(axis.key)) {
-            const std::string key = trimmed(part);
+            const std::string typed = trimmed(part);
             // Unknown keys get the key table's own message (with its suggestions).
-            if (!findSettingsField(key)) {
+            const SettingsField* field = findSettingsField(typed);
+            if (!field) {
                 Settings scratch = base;
-                return refuse("--axis: " + applySettingOverride(scratch, key + "=0"));
+                return refuse("--axis: " + applySettingOverride(scratch, typed + "=0"));
             }
+            // A schema-1 alias is the key it stands for: one setting, one axis, one label, whichever way it is typed.
+            const std::string key = field->aliasOf.empty() ? typed : field->aliasOf;
             for (const SweepAxis& other : plan.axes)
                 if (std::find(other.keys.begin(), other.keys.end(), key) != other.keys.end())
                     return refuse("--axis " + key + ": this key is already an axis");
