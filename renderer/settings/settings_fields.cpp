@@ -273,11 +273,10 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                          "Spot or point light range, world units (glTF's range): nothing beyond it is "
                                          "lit or shadowed; 0 = no limit",
                                          0, 1e7, at([](auto& l) -> auto& { return l.range; }));
-        range.allowed = "0 (no limit) or [0.001, 1e7]";
         range.set = [key = range.key, allowed = range.allowed, set = range.set](Settings& s, const nlohmann::json& j) {
             if (j.is_number() && j.get<double>() > 0.0 && j.get<double>() < kMinRange)
-                return problem(key, describeJsonValue(j) + " is too short for a light's view (its near plane is 1e-4)",
-                               allowed);
+                return problem(key, describeJsonValue(j) + " is too short for a light's view (its near plane is at "
+                                    "least 1e-4): 0 for no limit, else at least 0.001", allowed);
             return set(s, j);
         };
         f.push_back(tagged(std::move(range), kView));

@@ -1,6 +1,7 @@
 #include "sweep/sweep_runner.h"
 
 #include "frame/timed_frames.h"
+#include "settings/settings_fields.h"
 #include "sweep/pareto_front.h"
 
 #include <algorithm>
@@ -157,8 +158,13 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         std::vector<std::string> values;
         for (std::size_t a = 0; a < plan.axes.size(); ++a) {
             const std::vector<std::string>& keys = plan.axes[a].keys;
+            // A light's own fields other than its map and projection move the light (the reference follows it),
+            // whichever light and however typed (plan keys are canonical: "lights.N.type", never "light.type").
             if (std::any_of(keys.begin(), keys.end(), [](const std::string& key) {
-                    return key.rfind("light.", 0) == 0 || key.rfind("camera.", 0) == 0;
+                    const SettingsField* field = findSettingsField(key);
+                    const bool movesLight = field && field->light >= 0 && field->group() != "shadow" &&
+                                            field->group() != "projection";
+                    return movesLight || key.rfind("camera.", 0) == 0;
                 }))
                 values.push_back(plan.points[i].values[a]);
         }

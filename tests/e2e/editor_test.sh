@@ -86,7 +86,7 @@ else fail "no message for a bad scene path: $(tail -3 editor.err)"; fi
 # Measure in the Accuracy panel: the worker's numbers arrive while the window keeps running.
 click tab:Accuracy && wait_for has_control accuracy.measure
 click accuracy.measure
-if wait_for grep -q "accuracy: acne" editor.out; then
+if wait_for grep -q "accuracy of light [0-9]*: acne" editor.out; then
   pass "Accuracy: Measure printed $(grep -m1 -o 'acne [0-9.]* %' editor.out)"
 else fail "no accuracy numbers: $(tail -3 editor.err)"; fi
 sleep 0.5
