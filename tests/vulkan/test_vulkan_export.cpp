@@ -120,7 +120,7 @@ TEST_P(VulkanExportTest, LavapipeMapMatchesTheGlMapWithinOneDepthStep) {
 
     // The values a user would paste: parsed from the exported snippet, not taken from Settings.
     const std::string snippet =
-        exportSnippet(makeShadowExport(settings, view.stats.light, c.scene), ExportFormat::Vulkan);
+        exportSnippet(makeShadowExport(settings, 0, view.stats.light, c.scene), ExportFormat::Vulkan);
     std::string parseError;
     DepthPassInput input = depthPassInput(scene, GpuScene(scene, view.stats.renderOrigin));
     input.raster = parseVulkanRaster(snippet, parseError);
@@ -176,7 +176,7 @@ TEST_F(GlTest, LavapipeMapWithoutTheBiasDiffersFromTheGlMap) {
     DepthPassInput input = depthPassInput(scene, GpuScene(scene, view.stats.renderOrigin));
     std::string parseError;
     input.raster = parseVulkanRaster(
-        exportSnippet(makeShadowExport(settings, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
+        exportSnippet(makeShadowExport(settings, 0, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
     ASSERT_EQ(parseError, "");
     input.raster.depthBiasEnable = VK_FALSE;
     input.lightViewProjection = glm::mat4(view.stats.light.viewProjection());
@@ -200,7 +200,7 @@ TEST_F(GlTest, LavapipeZeroToOneRemapMatchesGlClipDepthBitForBit) {
     DepthPassInput input = depthPassInput(scene, GpuScene(scene, view.stats.renderOrigin));
     std::string parseError;
     input.raster = parseVulkanRaster(
-        exportSnippet(makeShadowExport(settings, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
+        exportSnippet(makeShadowExport(settings, 0, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
     ASSERT_EQ(parseError, "");
     input.lightViewProjection = glm::mat4(view.stats.light.viewProjection());
     input.resolution = 512;
