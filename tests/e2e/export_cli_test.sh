@@ -46,7 +46,7 @@ grep -q "light 0 of" export-light-0.out && pass "--light 0 named" || fail "--lig
 expect_error export-light-missing "lights.1 (lights 0..0" "$SHADOWLAB" export --preset room --format gl --light 1
 
 # A preset with no light: a clear statement that nothing casts, exit 0, every format.
-python3 -c "import json; p=json.load(open('$SOURCE_DIR/presets/default.json')); p['lights']=[]; json.dump(p, open('no-lights.json','w'))"
+python3 -c "import json; p=json.load(open('$SOURCE_DIR/presets/room.json')); p['lights']=[]; json.dump(p, open('no-lights.json','w'))"
 for format in d3d12 vulkan gl json; do
   expect_ok "export-no-lights-$format" "$SHADOWLAB" export --preset no-lights.json --format "$format"
   grep -q "Nothing casts a shadow" "export-no-lights-$format.out" && pass "no lights $format says so" \
