@@ -123,6 +123,9 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--set", exportOptions.overrides, "override a setting: key=value (repeatable)");
     exportCmd->add_option("--format", exportOptions.format, "d3d12 | d3d11 | vulkan | gl | json")->required();
     exportCmd->add_option("--out", exportOptions.out, "write to this file (default: standard output)");
+    exportCmd->add_option("--light", exportOptions.light,
+                          "export only light N (an index into the effective lights); default: every light")
+        ->check(CLI::NonNegativeNumber);
     cli::ProbeOptions probe;
     CLI::App* probeCmd = app.add_subcommand("probe", "Why is this pixel shadowed: taps, stored depths, bias terms, S on CPU and GPU");
     probeCmd->add_option("--scene", probe.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();

@@ -21,17 +21,32 @@ int runExport(const ExportOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
 
+    if (options.light < -1) {
+        std::cerr << "error: --light " << options.light << ": must be a light index (0 or more)\n";
+        return 2;
+    }
+    std::optional<std::size_t> only;
+    if (options.light >= 0) only = std::size_t(options.light);
     std::string error;
-    const std::optional<ShadowExport> values = exportForScene(*settings, *loaded.scene, options.scene, error);
-    if (!values) return fail(error);
+    const std::optional<ShadowExportSet> values = exportForScene(*settings, *loaded.scene, options.scene, only, error);
+    if (!values) {
+        if (only && error.rfind("--light", 0) == 0) {
+            std::cerr << "error: " << error << "\n";
+            return 2;
+        }
+        return fail(error);
+    }
     const std::string text = exportSnippet(*values, *format);
     if (options.out.empty()) {
         std::cout << text;
         return 0;
     }
     if (error = writeFileAtomically(options.out, text); !error.empty()) return fail(error);
-    std::cout << "wrote " << options.out << " (" << options.format << ", normal offset and light volume for "
-              << options.scene << ")\n";
+    std::size_t casting = 0;
+    for (const LightExport& l : values->lights) casting += l.shadow ? 1 : 0;
+    std::cout << "wrote " << options.out << " (" << options.format << ", " << values->lights.size() << " of "
+              << values->lightCount << " light" << (values->lightCount == 1 ? "" : "s") << ", " << casting
+              << " casting; normal offset and light volumes for " << options.scene << ")\n";
     return 0;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// `shadowlab export`: the preset's shadow state as a snippet for D3D12, D3D11, Vulkan or OpenGL, or as JSON.
+// `shadowlab export`: every light's shadow state (each view, point lights' six cube faces) as a snippet for D3D12, D3D11, Vulkan or OpenGL, or as JSON.
 #include <string>
 #include <vector>
 
@@ -11,9 +11,11 @@ struct ExportOptions {
     std::vector<std::string> overrides;
     std::string format;  // d3d12 | d3d11 | vulkan | gl | json
     std::string out;     // optional: written atomically; otherwise stdout
+    int light = -1;      // --light N: only light N of the effective lights; -1 = every light
 };
 
-// Exit code 0, 1 when the work failed (scene, output file), 2 for a bad preset / --set / --format.
+// Exit code 0 (also when no light casts: the output says so), 1 when the work failed (scene, output file), 2 for a
+// bad preset / --set / --format / --light.
 int runExport(const ExportOptions& options);
 
 }  // namespace shadowlab::cli

@@ -1,5 +1,8 @@
 #include "export/export_snippets.h"
 
+#include "export/shadow_shader_code.h"
+#include "shading/filter_taps.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -52,11 +55,13 @@ const char* formatName(const ShadowExport& e, ExportFormat api) {
 std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) {
     const ShadowMapSettings& s = e.shadow;
     std::ostringstream o;
-    o << c << "ShadowLab shadow pass, exported for " << (api == ExportFormat::D3D12 ? "Direct3D 12"
+    const bool cube = e.lightType == LightType::Point;
+    o << c << e.label << (cube ? " (six cube-face views)" : "") << ": ShadowLab shadow pass, exported for " << (api == ExportFormat::D3D12 ? "Direct3D 12"
                                                            : api == ExportFormat::D3D11 ? "Direct3D 11"
                                                            : api == ExportFormat::Vulkan ? "Vulkan" : "OpenGL 4.5")
       << "\n";
-    o << c << "Shadow map: " << s.resolution << "x" << s.resolution << ", " << formatName(e, api)
+    o << c << "Shadow map: " << (cube ? "a cube map of six " : "") << s.resolution << "x" << s.resolution
+      << (cube ? " faces" : "") << ", " << formatName(e, api)
       << (e.reversedZ ? "; depth test GREATER, cleared to 0.0: REVERSED-Z (near 1, far 0).\n"
                       : "; depth test LESS, cleared to 1.0: NOT reversed-Z.\n");
     if (e.reversedZ)
@@ -91,14 +96,18 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
           << number(e.bias.slope.world) << ", total at the median receiver = " << number(e.bias.total.world)
           << " world units (" << number(e.bias.total.texels) << " texels).\n";
     o << c << "Winding: counter-clockwise triangles (glTF) are front faces.\n";
-    o << c << "Depth clamp: " << (e.depthClamp ? "on (casters in front of the near plane still cast)" : "off") << ".\n";
+    o << c << "Depth clamp: " << (e.depthClamp ? "on (casters in front of the near plane still cast)" : "off")
+      << (!e.depthClamp && e.lightType != LightType::Directional ? " (ShadowLab clamps directional views only)" : "")
+      << ".\n";
     o << c << "Normal offset (in the receiver's shader, not the rasterizer): move the lookup position along the surface\n"
       << c << "  normal by " << number(s.normalOffset) << " texels = " << number(e.normalOffsetWorld)
       << " world units (one texel = " << number(e.texelWorldSize) << " world units for scene " << e.sceneLabel
-      << (e.perspective ? ", at the scene centre's distance: scale it with the distance along the spot's axis" : "")
+      << (cube ? ", at the scene centre's distance: scale it with the distance along the face's axis"
+          : e.perspective ? ", at the scene centre's distance: scale it with the distance along the spot's axis" : "")
       << ").\n";
     o << c << "Light volume (as fitted for that scene): near " << number(e.nearPlane) << ", far " << number(e.farPlane)
-      << (e.perspective ? " (perspective spot)" : " (orthographic, directional)") << ".\n";
+      << (cube ? " (six 90-degree perspective cube faces)" : e.perspective ? " (perspective spot)" : " (orthographic, directional)")
+      << ".\n";
     const FilterSettings& f = e.filter;
     o << c << "Filter: ";
     switch (f.kind) {
@@ -106,12 +115,21 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
         case FilterKind::Hardware2x2: o << "one bilinear (2x2) comparison"; break;
         case FilterKind::Pcf: o << f.kernel << "x" << f.kernel << " grid of point comparisons at texel centres, averaged"; break;
         case FilterKind::Poisson:
-            o << "16 Poisson-disk bilinear comparisons within " << number(f.poissonRadius) << " texels, averaged";
+            o << kPoissonTaps << " Poisson-disk bilinear comparisons within " << number(f.poissonRadius) << " texels, averaged";
             break;
     }
     o << (e.reversedZ ? "; compare: lit when receiver depth >= stored depth (GEQUAL).\n"
                       : "; compare: lit when receiver depth <= stored depth (LEQUAL).\n");
-    if (e.reversedZ && e.sampler.addressMode == AddressMode::ClampToBorder)
+    o << c << "Receiver-plane depth bias: "
+      << (e.receiverPlane ? "ON: every tap compares the receiver plane's depth at the tap (shader code below)"
+          : !s.receiverPlaneBias ? "off"
+          : cube ? "set, but not applied to cube faces (as in ShadowLab)"
+                 : "set, but not applied: the filter takes a single centred tap (as in ShadowLab)")
+      << ".\n";
+    o << c << "Taps inside the map: a lookup inside the map clamps its taps to half a texel from the edge (shader code below).\n";
+    if (cube)
+        o << c << "Sampler: a cube map is sampled by direction: the address mode and border depth do not apply.\n";
+    if (e.reversedZ && e.sampler.addressMode == AddressMode::ClampToBorder && !cube)
         o << c << "Border depth: ShadowLab's sampler.borderDepth " << number(e.sampler.borderDepth) << " (1 = lit outside) is stored as "
           << number(e.borderStored) << " in reversed-Z.\n";
     return o.str();
@@ -145,6 +163,57 @@ const char* addressName(AddressMode mode, ExportFormat api) {
     return "?";
 }
 
+// The matrix an API's pass takes for a view: ShadowLab's own (GL); for D3D and Vulkan its clip depth remapped to
+// [0,1] (z' = 0.5 z + 0.5 w; a reversed-Z matrix is zero-to-one already); for a D3D cube face its clip y negated, so
+// D3D (row 0 = clip y +1) stores the face's texels where a cube map's direction lookup reads them.
+glm::dmat4 apiMatrix(const ShadowExport& e, const ExportView& v, ExportFormat api) {
+    glm::dmat4 m = v.viewProjection;
+    const bool d3d = api == ExportFormat::D3D12 || api == ExportFormat::D3D11;
+    if (api != ExportFormat::GL && !e.reversedZ)
+        for (int c = 0; c < 4; ++c) m[c][2] = 0.5 * m[c][2] + 0.5 * m[c][3];
+    if (d3d && v.cubeFace >= 0)
+        for (int c = 0; c < 4; ++c) m[c][1] = -m[c][1];
+    return m;
+}
+
+std::string matrixName(const ShadowExport& e, const ExportView& v) {
+    static const char* faces[6] = {"PX", "NX", "PY", "NY", "PZ", "NZ"};
+    std::string name = "light" + std::to_string(e.lightIndex);
+    if (v.cubeFace >= 0 && v.cubeFace < 6) name += std::string("Face") + faces[v.cubeFace];
+    return name + "ViewProjection";
+}
+
+// Every view of the light: which one it is, its near / far and its matrix, as C++ the host code can paste.
+std::string viewsBlock(const ShadowExport& e, ExportFormat api) {
+    const bool d3d = api == ExportFormat::D3D12 || api == ExportFormat::D3D11;
+    std::ostringstream o;
+    o << "\n// " << e.label << ": " << e.views.size() << (e.views.size() == 1 ? " view" : " views (cube faces, layer = face in the order +X,-X,+Y,-Y,+Z,-Z)")
+      << ". Matrices: column-major, taking world positions minus the render origin ("
+      << number(e.renderOrigin.x) << ", " << number(e.renderOrigin.y) << ", " << number(e.renderOrigin.z) << ");\n// "
+      << (api == ExportFormat::GL ? (e.reversedZ ? "ShadowLab's zero-to-one reversed-Z matrix (near 1, far 0)" : "ShadowLab's own ([-1,1] clip depth)")
+          : e.reversedZ ? "ShadowLab's zero-to-one reversed-Z matrix (near 1, far 0), as is"
+                        : "ShadowLab's matrix with its clip depth remapped to [0,1] (z' = 0.5 z + 0.5 w)")
+      << (d3d && e.lightType == LightType::Point ? "; cube faces with clip y negated (D3D's row 0 is clip y +1)" : "")
+      << (d3d ? "; HLSL: column_major float4x4, mul(M, v)" : "; GLSL mat4") << ".\n";
+    for (const ExportView& v : e.views) {
+        const glm::dmat4 m = apiMatrix(e, v, api);
+        o << "// View " << v.label << ": near " << number(v.nearPlane) << ", far " << number(v.farPlane)
+          << ", one texel = " << number(v.texelWorldSize) << " world units" << (e.perspective ? " at the scene centre's distance" : "")
+          << ".\nstatic const float " << matrixName(e, v) << "[16] = {";
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) o << (c || r ? ", " : "") << floatLiteral(float(m[c][r]));
+        o << "};\n";
+    }
+    return o.str();
+}
+
+std::string shaderBlock(const ShadowExport& e, ExportFormat api) {
+    const ShaderTarget target = shaderTargetFor(api, e.reversedZ);
+    return "\n// ---- Shader code (" + std::string(target.language == ShaderLanguage::Hlsl ? "HLSL" : "GLSL") +
+           "): normal offset, " + (e.receiverPlane ? "receiver-plane depth bias, " : "") +
+           "the filter's taps, taps kept inside the map ----\n" + shadowShaderCode(e, target);
+}
+
 std::string d3d(const ShadowExport& e, ExportFormat api) {
     const bool d3d12 = api == ExportFormat::D3D12;
     const std::string p = d3d12 ? "D3D12_" : "D3D11_";
@@ -160,7 +229,9 @@ std::string d3d(const ShadowExport& e, ExportFormat api) {
     o << p << "RASTERIZER_DESC shadowRaster = {};\n"
       << "shadowRaster.FillMode = " << p << (d3d12 ? "FILL_MODE_SOLID" : "FILL_SOLID") << ";\n"
       << "shadowRaster.CullMode = " << d3dCull(e, d3d12) << ";\n"
-      << "shadowRaster.FrontCounterClockwise = TRUE;\n"
+      << (e.lightType == LightType::Point
+              ? "shadowRaster.FrontCounterClockwise = FALSE;  // cube faces: clip y negated (below) mirrors the winding\n"
+              : "shadowRaster.FrontCounterClockwise = TRUE;\n")
       << "shadowRaster.DepthBias = " << e.d3dDepthBias << ";\n"
       << "shadowRaster.DepthBiasClamp = " << floatLiteral(e.rasterDepthBiasClamp) << ";\n"
       << "shadowRaster.SlopeScaledDepthBias = " << floatLiteral(e.rasterSlopeScaledDepthBias) << ";\n"
@@ -182,6 +253,11 @@ std::string d3d(const ShadowExport& e, ExportFormat api) {
       << "shadowSampler.BorderColor[0] = shadowSampler.BorderColor[1] = shadowSampler.BorderColor[2] = "
          "shadowSampler.BorderColor[3] = " << border << ";\n"
       << "shadowSampler.MinLOD = 0.0f;\nshadowSampler.MaxLOD = 0.0f;\nshadowSampler.MaxAnisotropy = 1;\n";
+    if (e.lightType == LightType::Point)
+        o << "// Texture: a Texture2D resource with " << (d3d12 ? "DepthOrArraySize" : "ArraySize") << " = 6"
+          << (d3d12 ? "" : " and D3D11_RESOURCE_MISC_TEXTURECUBE") << " (one DSV per face: a Texture2DArray slice),\n"
+          << "// read through a TextureCube SRV.\n";
+    o << viewsBlock(e, api) << shaderBlock(e, api);
     return o.str();
 }
 
@@ -234,6 +310,10 @@ std::string vulkan(const ShadowExport& e) {
       << "shadowSampler.compareOp = " << (e.reversedZ ? "VK_COMPARE_OP_GREATER_OR_EQUAL" : "VK_COMPARE_OP_LESS_OR_EQUAL") << ";\n"
       << "shadowSampler.borderColor = " << border << ";\n"
       << "shadowSampler.maxLod = 0.0f;\n";
+    if (e.lightType == LightType::Point)
+        o << "// Image: arrayLayers = 6, flags VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT; render face f into layer f; sample it\n"
+             "// through a VK_IMAGE_VIEW_TYPE_CUBE view.\n";
+    o << viewsBlock(e, ExportFormat::Vulkan) << shaderBlock(e, ExportFormat::Vulkan);
     return o.str();
 }
 
@@ -243,6 +323,10 @@ std::string gl(const ShadowExport& e) {
     o << conventions(e, ExportFormat::GL, "// ");
     if (!e.floatDepth)
         o << "// GL leaves a UNORM format's r to the implementation; Mesa and the common drivers use 1/(2^n - 1).\n";
+    if (e.lightType == LightType::Point)
+        o << "glCreateTextures(GL_TEXTURE_CUBE_MAP, 1, &shadowMap);  // face f is layer f: "
+             "glNamedFramebufferTextureLayer(fbo, GL_DEPTH_ATTACHMENT, shadowMap, 0, f)\n"
+             "glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // taps at a face's edge read the neighbouring face\n";
     o << "glTextureStorage2D(shadowMap, 1, " << formatName(e, ExportFormat::GL) << ", " << s.resolution << ", "
       << s.resolution << ");\n";
     if (e.reversedZ)
@@ -276,13 +360,27 @@ std::string gl(const ShadowExport& e) {
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_MAG_FILTER, " << filter << ");\n"
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);\n"
       << "glSamplerParameteri(shadowSampler, GL_TEXTURE_COMPARE_FUNC, " << (e.reversedZ ? "GL_GEQUAL" : "GL_LEQUAL") << ");\n";
+    o << viewsBlock(e, ExportFormat::GL) << shaderBlock(e, ExportFormat::GL);
     return o.str();
 }
 
-std::string json(const ShadowExport& e) {
+nlohmann::json jsonOf(const ShadowExport& e) {
     const ShadowMapSettings& s = e.shadow;
     nlohmann::json j;
     j["scene"] = e.sceneLabel;
+    j["light"] = {{"index", e.lightIndex}, {"label", e.label}, {"type", lightTypeName(e.lightType)}};
+    nlohmann::json views = nlohmann::json::array();
+    for (const ExportView& v : e.views) {
+        std::vector<double> m;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) m.push_back(v.viewProjection[c][r]);
+        nlohmann::json view = {{"label", v.label}, {"near", v.nearPlane}, {"far", v.farPlane},
+                               {"texelWorldSize", v.texelWorldSize}, {"viewProjectionColumnMajor", m}};
+        if (v.cubeFace >= 0) view["cubeFace"] = cubeFaces()[std::size_t(v.cubeFace)].name;
+        views.push_back(view);
+    }
+    j["views"] = views;
+    j["renderOrigin"] = {e.renderOrigin.x, e.renderOrigin.y, e.renderOrigin.z};
     j["depth"] = {{"format", formatName(e, ExportFormat::GL)},
                   {"bits", e.depthBits},
                   {"float", e.floatDepth},
@@ -331,11 +429,20 @@ std::string json(const ShadowExport& e) {
                        : e.filter.kind == FilterKind::Hardware2x2 ? "hardware2x2"
                        : e.filter.kind == FilterKind::Pcf         ? "pcf"
                                                                   : "poisson";
-    j["filter"] = {{"kind", kind}, {"kernel", e.filter.kernel}, {"poissonRadiusTexels", e.filter.poissonRadius}};
-    return j.dump(2) + "\n";
+    nlohmann::json taps = nlohmann::json::array();
+    for (const FilterTap& tap : filterTaps(e.filter)) taps.push_back({tap.offsetTexels.x, tap.offsetTexels.y});
+    j["filter"] = {{"kind", kind}, {"kernel", e.filter.kernel}, {"poissonRadiusTexels", e.filter.poissonRadius},
+                   {"bilinear", e.linearCompare}, {"tapOffsetsTexels", taps}};
+    j["receiverPlaneBias"] = {{"setting", s.receiverPlaneBias}, {"applied", e.receiverPlane}};
+    j["tapsKeptInsideTheMap"] = true;
+    return j;
 }
 
 }  // namespace
+
+const char* lightTypeName(LightType type) {
+    return type == LightType::Directional ? "directional" : type == LightType::Spot ? "spot" : "point";
+}
 
 std::string exportSnippet(const ShadowExport& values, ExportFormat format) {
     switch (format) {
@@ -343,9 +450,61 @@ std::string exportSnippet(const ShadowExport& values, ExportFormat format) {
         case ExportFormat::D3D11: return d3d(values, format);
         case ExportFormat::Vulkan: return vulkan(values);
         case ExportFormat::GL: return gl(values);
-        case ExportFormat::Json: return json(values);
+        case ExportFormat::Json: return jsonOf(values).dump(2) + "\n";
     }
     return {};
+}
+
+}  // namespace shadowlab
+
+namespace shadowlab {
+
+std::string exportSnippet(const ShadowExportSet& set, ExportFormat format) {
+    std::size_t casting = 0;
+    for (const LightExport& l : set.lights) casting += l.shadow ? 1 : 0;
+    const std::string scope = set.onlyLight ? "light " + std::to_string(*set.onlyLight) + " of " + set.lightSource
+                                            : "every light: " + set.lightSource;
+    const std::string nothing =
+        set.lightCount == 0 ? "Nothing casts a shadow: the light set is empty, so there is no shadow pass, map or sampler "
+                              "to export."
+                            : "Nothing casts a shadow: no light " + std::string(set.onlyLight ? "asked for " : "") +
+                                  "is enabled with castsShadows on, so there is no shadow pass, map or sampler to export.";
+    if (format == ExportFormat::Json) {
+        nlohmann::json j;
+        j["scene"] = set.sceneLabel;
+        j["lightSource"] = set.lightSource;
+        j["lightCount"] = set.lightCount;
+        if (set.onlyLight) j["onlyLight"] = *set.onlyLight;
+        j["lights"] = nlohmann::json::array();
+        for (const LightExport& l : set.lights) {
+            nlohmann::json entry = l.shadow ? jsonOf(*l.shadow) : nlohmann::json::object();
+            entry["index"] = l.index;
+            entry["label"] = l.label;
+            entry["type"] = lightTypeName(l.type);
+            entry["castsShadow"] = l.shadow.has_value();
+            if (!l.shadow) entry["noShadow"] = l.noShadowReason;
+            j["lights"].push_back(entry);
+        }
+        if (casting == 0) j["note"] = nothing;
+        return j.dump(2) + "\n";
+    }
+    std::ostringstream o;
+    o << "// ShadowLab export for scene " << set.sceneLabel << ", " << scope << ".\n";
+    if (set.lights.empty() || casting == 0) o << "// " << nothing << "\n";
+    for (const LightExport& l : set.lights)
+        o << "//   " << l.label << ": "
+          << (l.shadow ? (l.type == LightType::Point ? "casts (6 views: cube faces +X,-X,+Y,-Y,+Z,-Z)" : "casts (1 view)")
+                       : l.noShadowReason)
+          << "\n";
+    for (const LightExport& l : set.lights) {
+        o << "\n// ======== " << l.label;
+        if (!l.shadow) {
+            o << ": " << l.noShadowReason << "; no shadow state ========\n";
+            continue;
+        }
+        o << " ========\n" << exportSnippet(*l.shadow, format);
+    }
+    return o.str();
 }
 
 }  // namespace shadowlab

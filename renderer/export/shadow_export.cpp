@@ -2,6 +2,8 @@
 #include "export/shadow_export.h"
 
 #include "scene/scene.h"
+#include "shading/filter_taps.h"
+#include "shading/filters/filter_technique.h"
 
 #include <cmath>
 
@@ -18,54 +20,148 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name) {
 
 const char* exportFormatChoices() { return "d3d12|d3d11|vulkan|gl|json"; }
 
-ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light, const std::string& sceneLabel) {
+namespace {
+
+const char* typeName(LightType type) {
+    switch (type) {
+        case LightType::Directional: return "directional";
+        case LightType::Spot: return "spot";
+        case LightType::Point: return "point";
+    }
+    return "?";
+}
+
+ExportView viewOf(std::size_t index, LightType type, const LightSpace& light) {
+    ExportView v;
+    v.label = viewLabel(index, type, light.cubeFace);
+    v.cubeFace = light.cubeFace;
+    v.viewProjection = light.viewProjection();
+    v.nearPlane = light.nearPlane;
+    v.farPlane = light.farPlane;
+    v.texelWorldSize = light.texelWorldSize;
+    return v;
+}
+
+}  // namespace
+
+std::string lightLabel(std::size_t index, LightType type) {
+    return "light " + std::to_string(index) + " (" + typeName(type) + ")";
+}
+
+std::string viewLabel(std::size_t index, LightType type, int cubeFace) {
+    std::string label = lightLabel(index, type);
+    if (cubeFace >= 0 && cubeFace < 6) label += std::string(" face ") + cubeFaces()[std::size_t(cubeFace)].name;
+    return label;
+}
+
+ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, const LightSpace& light,
+                              const std::string& sceneLabel) {
+    const LightSettings& l = settings.lights.at(lightIndex);
+    const ShadowMapSettings& s = l.shadow;
     ShadowExport e;
     e.sceneLabel = sceneLabel;
-    e.shadow = settings.lights[0].shadow;
+    e.lightIndex = lightIndex;
+    e.lightType = l.type;
+    e.label = lightLabel(lightIndex, l.type);
+    e.views.push_back(viewOf(lightIndex, l.type, light));
+    e.lightPosition = light.position;
+    e.lightDirection = light.direction;
+    e.shadow = s;
     e.sampler = settings.sampler;
     e.filter = settings.filter;
-    e.depthClamp = settings.lights[0].depthClampApplies();
+    e.depthClamp = l.depthClampApplies();
     e.perspective = light.perspective;
     e.reversedZ = light.reversedZ;
-    const ShadowMapSettings& s = settings.lights[0].shadow;
     e.biasSign = light.reversedZ ? -1.0f : 1.0f;
     const auto signedValue = [&](float v) { return v == 0.0f ? 0.0f : e.biasSign * v; };  // no "-0.0f" in snippets
     e.rasterDepthBias = signedValue(s.depthBias);
     e.rasterSlopeScaledDepthBias = signedValue(s.slopeScaledDepthBias);
     e.rasterDepthBiasClamp = signedValue(s.depthBiasClamp);
     e.borderStored = conventionBorderDepth(settings.sampler.borderDepth, light.reversedZ);
-    switch (settings.lights[0].shadow.format) {
+    switch (s.format) {
         case DepthFormat::D16: e.depthBits = 16; e.floatDepth = false; break;
         case DepthFormat::D24: e.depthBits = 24; e.floatDepth = false; break;
         case DepthFormat::D32F: e.depthBits = 32; e.floatDepth = true; break;
     }
     // UNORM: r = 1 / (2^n - 1). Float: r = 2^(exponent(max depth of the primitive) - 23), 2^-24 for depths in [0.5, 1).
-    e.depthStep = depthStepAt(settings.lights[0].shadow.format, 0.75);  // D32F: the step for depths in [0.5, 1)
+    e.depthStep = depthStepAt(s.format, 0.75);  // D32F: the step for depths in [0.5, 1)
     e.d3dDepthBias = int(std::lround(double(e.rasterDepthBias)));
     e.d3dDepthBiasError = double(e.d3dDepthBias) - double(e.rasterDepthBias);
     e.texelWorldSize = light.texelWorldSize;
-    e.normalOffsetWorld = double(settings.lights[0].shadow.normalOffset) * light.texelWorldSize;
+    // As the main pass's LightData.depth.z: directional a texel's world size, perspective per unit of depth.
+    e.texelWorldPerDepth = light.perspective ? 2.0 * light.tanHalfFov / double(std::max(light.resolution, 1)) : 0.0;
+    e.normalOffsetWorld = double(s.normalOffset) * light.texelWorldSize;
     e.nearPlane = light.nearPlane;
     e.farPlane = light.farPlane;
-    e.linearCompare = settings.filter.kind == FilterKind::Hardware2x2 || settings.filter.kind == FilterKind::Poisson;
+    e.linearCompare = filterIsBilinear(settings.filter.kind);
+    e.receiverPlane = s.receiverPlaneBias && filterTechnique(settings.filter.kind).receiverPlane && light.cubeFace < 0;
     return e;
 }
 
-std::optional<ShadowExport> exportForScene(const Settings& requested, const Scene& scene, const std::string& sceneLabel,
-                                           std::string& error) {
+std::optional<ShadowExportSet> exportForScene(const Settings& requested, const Scene& scene,
+                                              const std::string& sceneLabel, std::optional<std::size_t> onlyLight,
+                                              std::string& error) {
     if (const std::vector<std::string> problems = requested.validate(); !problems.empty()) {
         error = problems.front();
         return std::nullopt;
     }
-    Settings settings = requested;
-    settings = withEffectiveLights(requested, scene);
+    const Settings settings = withEffectiveLights(requested, scene);
+    ShadowExportSet set;
+    set.sceneLabel = sceneLabel;
+    set.lightSource = describeLightSource(requested, scene);
+    set.lightCount = settings.lights.size();
+    set.onlyLight = onlyLight;
+    if (onlyLight && *onlyLight >= settings.lights.size()) {
+        const std::string key = "lights." + std::to_string(*onlyLight);
+        error = settings.lights.empty()
+                    ? "--light " + std::to_string(*onlyLight) + ": there is no " + key + ": " + set.lightSource +
+                          " (no light at all)"
+                    : "--light " + std::to_string(*onlyLight) + ": there is no " + key + " (lights 0.." +
+                          std::to_string(settings.lights.size() - 1) + ": " + set.lightSource + ")";
+        return std::nullopt;
+    }
     // The renderer's origin (the scene's centre); the light's sizes do not depend on it.
     const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
-    const std::optional<LightSpace> light = buildLightSpace(settings, scene.bounds, origin, error);
-    if (!light) return std::nullopt;
-    ShadowExport e = makeShadowExport(settings, *light, sceneLabel);
-    e.bias = biasReport(settings.lights[0].shadow, settings.lights[0].shadow.format, *light, receiverDepths(scene, *light, origin));
-    return e;
+    for (std::size_t i = 0; i < settings.lights.size(); ++i) {
+        if (onlyLight && i != *onlyLight) continue;
+        const LightSettings& l = settings.lights[i];
+        LightExport out;
+        out.index = i;
+        out.type = l.type;
+        out.label = lightLabel(i, l.type);
+        if (!l.enabled) {
+            out.noShadowReason = "disabled (lights." + std::to_string(i) + ".enabled = false): neither shines nor casts";
+        } else if (!l.castsShadows) {
+            out.noShadowReason = "casts no shadow (lights." + std::to_string(i) +
+                                 ".castsShadows = false): it shines everywhere, no shadow map";
+        } else {
+            std::string lightError;
+            if (l.type == LightType::Point) {
+                const auto faces = buildCubeFaceSpaces(l, scene.bounds, origin, lightError);
+                if (!faces) {
+                    error = "lights." + std::to_string(i) + ": " + lightError;
+                    return std::nullopt;
+                }
+                ShadowExport e = makeShadowExport(settings, i, (*faces)[0], sceneLabel);
+                for (std::size_t f = 1; f < faces->size(); ++f) e.views.push_back(viewOf(i, l.type, (*faces)[f]));
+                e.renderOrigin = origin;
+                // The depth-bias report needs one view's receivers; a point light's are spread over six faces.
+                out.shadow = std::move(e);
+            } else {
+                const std::optional<LightSpace> light = buildLightSpace(l, scene.bounds, origin, lightError);
+                if (!light) {
+                    error = "lights." + std::to_string(i) + ": " + lightError;
+                    return std::nullopt;
+                }
+                ShadowExport e = makeShadowExport(settings, i, *light, sceneLabel);
+                e.renderOrigin = origin;
+                e.bias = biasReport(l.shadow, l.shadow.format, *light, receiverDepths(scene, *light, origin));
+                out.shadow = std::move(e);
+            }
+        }
+        set.lights.push_back(std::move(out));
+    }
+    return set;
 }
 
 }  // namespace shadowlab

@@ -1,5 +1,5 @@
 #pragma once
-// The current light's shadow state as another API would need it: the rasterizer's depth bias, cull mode and depth
+// Every light's shadow state as another API would need it: the rasterizer's depth bias, cull mode and depth
 // clamp, the comparison sampler and filter, and the normal offset in world units. One table of numbers
 // (ShadowExport), then a snippet per API (export_snippets.h). No GL here.
 //
@@ -15,8 +15,10 @@
 #include "light/light_space.h"
 #include "settings/settings.h"
 
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
@@ -27,8 +29,25 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
 // "d3d12|d3d11|vulkan|gl|json", for messages.
 const char* exportFormatChoices();
 
+// One shadow view of a light: a directional or spot light has one, a point light six (cube faces, GL order).
+struct ExportView {
+    std::string label;           // "light 1 (spot)", "light 2 (point) face +X"
+    int cubeFace = -1;           // 0..5 for a point light's face, -1 otherwise
+    glm::dmat4 viewProjection{1.0};  // render-origin-relative world -> ShadowLab's light clip space (column-major)
+    double nearPlane = 0.0, farPlane = 1.0;
+    double texelWorldSize = 0.0; // directional: constant; perspective: at the scene centre's distance
+};
+
+// One light's shadow state (every view of a light shares it).
 struct ShadowExport {
     std::string sceneLabel;  // which scene the world-unit figures were computed for
+    std::size_t lightIndex = 0;
+    LightType lightType = LightType::Directional;
+    std::string label;       // "light 1 (spot)"
+    std::vector<ExportView> views;  // the light's views: 1, or 6 for a point light
+    glm::dvec3 renderOrigin{0.0};   // the matrices take world positions minus this
+    glm::dvec3 lightPosition{0.0};  // spot / point: render-origin-relative
+    glm::dvec3 lightDirection{0.0, -1.0, 0.0};  // directional / spot: unit, the direction light travels
     ShadowMapSettings shadow;
     SamplerSettings sampler;
     FilterSettings filter;
@@ -47,24 +66,54 @@ struct ShadowExport {
     double depthStep = 0.0;         // r: UNORM 1/(2^n - 1); D32F: 2^-24, the step at depths in [0.5, 1)
     int d3dDepthBias = 0;           // D3D11 / D3D12_RASTERIZER_DESC's INT DepthBias (rasterDepthBias rounded)
     double d3dDepthBiasError = 0.0; // (d3dDepthBias - rasterDepthBias), in units of r
-    double texelWorldSize = 0.0;    // world size of one texel (spot: at the scene centre's distance)
+    double texelWorldSize = 0.0;    // world size of one texel (spot / point: at the scene centre's distance)
+    double texelWorldPerDepth = 0.0;  // perspective: a texel's world size per unit of distance along the view axis
     double normalOffsetWorld = 0.0; // the normal offset in world units (normalOffset texels x texelWorldSize)
     double nearPlane = 0.0, farPlane = 1.0;
     bool linearCompare = false;     // hardware 2x2 and Poisson use the comparison's bilinear filter
+    // Receiver-plane depth bias is in effect: shadow.receiverPlaneBias on, a filter whose taps leave the centre (PCF,
+    // Poisson) and a 2D view (not a point light), as ShadowLab's main pass applies it.
+    bool receiverPlane = false;
     BiasReport bias;                // the bias at the scene's receivers (valid when the scene was given)
 };
 
-// The numbers for `settings` with `light` (built for the scene named `sceneLabel`).
-ShadowExport makeShadowExport(const Settings& settings, const LightSpace& light, const std::string& sceneLabel);
+// "light 1 (spot)"; with a cube face "light 2 (point) face +X".
+std::string lightLabel(std::size_t index, LightType type);
+std::string viewLabel(std::size_t index, LightType type, int cubeFace);
+
+// The numbers for light `lightIndex` of `settings` whose first (or only) view is `light` (built for the scene named
+// `sceneLabel`). The view list holds `light`; exportForScene adds a point light's other faces.
+ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, const LightSpace& light,
+                              const std::string& sceneLabel);
+
+// A light of the effective set as exported: its shadow state, or why it has none.
+struct LightExport {
+    std::size_t index = 0;
+    LightType type = LightType::Directional;
+    std::string label;                  // "light 1 (spot)"
+    std::optional<ShadowExport> shadow; // set when the light is enabled and casts shadows
+    std::string noShadowReason;         // otherwise: "disabled (neither shines nor casts)" / "castsShadows off ..."
+};
+
+// What `shadowlab export` writes: every light of the effective set (or the one asked for).
+struct ShadowExportSet {
+    std::string sceneLabel;
+    std::string lightSource;        // describeLightSource: whose lights these are
+    std::size_t lightCount = 0;     // lights in the effective set
+    std::optional<std::size_t> onlyLight;  // --light N
+    std::vector<LightExport> lights;
+};
 
 }  // namespace shadowlab
 
 namespace shadowlab {
 
 struct Scene;
-// The light ShadowLab would use for `settings` on `scene` (its glTF light when light.useSceneLight, the auto-fit
-// volume), then makeShadowExport. nullopt with `error` set when the settings or the light cannot be used.
-std::optional<ShadowExport> exportForScene(const Settings& settings, const Scene& scene, const std::string& sceneLabel,
-                                           std::string& error);
+// Every light ShadowLab would use for `settings` on `scene` (withEffectiveLights: its glTF lights when
+// useSceneLights, the auto-fit volumes), each with every view. `onlyLight`: that light alone; a light that does not
+// exist is an error naming lights.N and the valid range. nullopt with `error` set when the settings or a light cannot
+// be used. A set with no light is not an error: the snippet says that nothing casts.
+std::optional<ShadowExportSet> exportForScene(const Settings& settings, const Scene& scene, const std::string& sceneLabel,
+                                              std::optional<std::size_t> onlyLight, std::string& error);
 
 }  // namespace shadowlab

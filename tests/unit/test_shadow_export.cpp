@@ -2,12 +2,18 @@
 // offset in world units, and the JSON carrying the same numbers. And the depth-format change that keeps DepthBias's
 // world meaning.
 #include "export/export_snippets.h"
+#include "export/shadow_shader_code.h"
 #include "light/depth_format_change.h"
+#include "scene/builtin_scenes.h"
+#include "shading/filter_taps.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 namespace shadowlab {
 namespace {
@@ -37,13 +43,13 @@ Settings withBias(DepthFormat format, float depthBias) {
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(ShadowExport, MinimumResolvableDifferencePerFormat) {
-    EXPECT_DOUBLE_EQ(makeShadowExport(withBias(DepthFormat::D16, 2), orthoLight(), "t").depthStep, 1.0 / 65535.0);
-    EXPECT_DOUBLE_EQ(makeShadowExport(withBias(DepthFormat::D24, 2), orthoLight(), "t").depthStep, 1.0 / 16777215.0);
-    EXPECT_DOUBLE_EQ(makeShadowExport(withBias(DepthFormat::D32F, 2), orthoLight(), "t").depthStep, std::ldexp(1.0, -24));
+    EXPECT_DOUBLE_EQ(makeShadowExport(withBias(DepthFormat::D16, 2), 0, orthoLight(), "t").depthStep, 1.0 / 65535.0);
+    EXPECT_DOUBLE_EQ(makeShadowExport(withBias(DepthFormat::D24, 2), 0, orthoLight(), "t").depthStep, 1.0 / 16777215.0);
+    EXPECT_DOUBLE_EQ(makeShadowExport(withBias(DepthFormat::D32F, 2), 0, orthoLight(), "t").depthStep, std::ldexp(1.0, -24));
 }
 
 TEST(ShadowExport, D16SnippetsCarryTheFormatsNumbers) {
-    const ShadowExport e = makeShadowExport(withBias(DepthFormat::D16, 1.5f), orthoLight(), "builtin:test");
+    const ShadowExport e = makeShadowExport(withBias(DepthFormat::D16, 1.5f), 0, orthoLight(), "builtin:test");
     const std::string d3d12 = exportSnippet(e, ExportFormat::D3D12);
     EXPECT_TRUE(contains(d3d12, "DXGI_FORMAT_D16_UNORM")) << d3d12;
     EXPECT_TRUE(contains(d3d12, "r = 1/(2^16 - 1) = 1.5259e-05")) << d3d12;
@@ -76,13 +82,13 @@ TEST(ShadowExport, D16SnippetsCarryTheFormatsNumbers) {
 }
 
 TEST(ShadowExport, D24AndD32FState) {
-    const std::string d24 = exportSnippet(makeShadowExport(withBias(DepthFormat::D24, 3), orthoLight(), "t"),
+    const std::string d24 = exportSnippet(makeShadowExport(withBias(DepthFormat::D24, 3), 0, orthoLight(), "t"),
                                           ExportFormat::D3D11);
     EXPECT_TRUE(contains(d24, "DXGI_FORMAT_D24_UNORM_S8_UINT")) << d24;
     EXPECT_TRUE(contains(d24, "r = 1/(2^24 - 1) = 5.96046e-08"));
     EXPECT_TRUE(contains(d24, "shadowRaster.DepthBias = 3;"));
     EXPECT_FALSE(contains(d24, "is an INT here")) << "an integral DepthBias needs no note";
-    const std::string d32 = exportSnippet(makeShadowExport(withBias(DepthFormat::D32F, 2), orthoLight(), "t"),
+    const std::string d32 = exportSnippet(makeShadowExport(withBias(DepthFormat::D32F, 2), 0, orthoLight(), "t"),
                                           ExportFormat::D3D12);
     EXPECT_TRUE(contains(d32, "DXGI_FORMAT_D32_FLOAT"));
     EXPECT_TRUE(contains(d32, "2^(exponent(max depth of the primitive) - 23)")) << "D3D's float-format rule";
@@ -95,7 +101,7 @@ TEST(ShadowExport, NormalOffsetInWorldUnitsAndJsonCarryTheSameNumbers) {
     Settings s = withBias(DepthFormat::D32F, 2);
     s.sampler.addressMode = AddressMode::ClampToEdge;
     s.filter.kind = FilterKind::Poisson;
-    const ShadowExport e = makeShadowExport(s, orthoLight(), "builtin:test");
+    const ShadowExport e = makeShadowExport(s, 0, orthoLight(), "builtin:test");
     EXPECT_DOUBLE_EQ(e.normalOffsetWorld, 0.5 * 20.0 / 2048.0);
     const std::string gl = exportSnippet(e, ExportFormat::GL);
     EXPECT_TRUE(contains(gl, "0.5 texels = 0.00488281 world units")) << gl;
@@ -117,7 +123,7 @@ TEST(ShadowExport, ReversedZSnippetsNegateTheBiasAndCompareGreater) {
     s.lights[0].shadow.reversedZ = true;
     LightSpace light = orthoLight();
     light.reversedZ = true;
-    const ShadowExport e = makeShadowExport(s, light, "t");
+    const ShadowExport e = makeShadowExport(s, 0, light, "t");
     const std::string d3d = exportSnippet(e, ExportFormat::D3D12);
     EXPECT_TRUE(contains(d3d, "REVERSED-Z (near 1, far 0)")) << d3d;
     EXPECT_TRUE(contains(d3d, "shadowRaster.DepthBias = -3;"));
@@ -142,7 +148,7 @@ TEST(ShadowExport, ReversedZSnippetsNegateTheBiasAndCompareGreater) {
     EXPECT_EQ(j["sampler"]["compare"], "GEQUAL");
     EXPECT_EQ(j["sampler"]["borderStored"].get<float>(), 0.0f);
     // The normal convention is untouched: positive values, LEQUAL.
-    const std::string normal = exportSnippet(makeShadowExport(withBias(DepthFormat::D24, 3), orthoLight(), "t"),
+    const std::string normal = exportSnippet(makeShadowExport(withBias(DepthFormat::D24, 3), 0, orthoLight(), "t"),
                                              ExportFormat::GL);
     EXPECT_TRUE(contains(normal, "glPolygonOffsetClamp(1.25f, 3.0f, 0.001f);")) << normal;
     EXPECT_FALSE(contains(normal, "GL_ZERO_TO_ONE);  // while drawing the map")) << "no clip control call";
@@ -153,6 +159,207 @@ TEST(ShadowExport, FormatNamesParse) {
     EXPECT_EQ(parseExportFormat("d3d11"), ExportFormat::D3D11);
     EXPECT_FALSE(parseExportFormat("Vulkan").has_value());
     EXPECT_FALSE(parseExportFormat("d3d9").has_value());
+}
+
+// A directional, a spot and a point light over builtin:textbook; light 1's DepthBias 7 marks its section.
+Settings threeLights() {
+    Settings s;
+    s.lights.resize(3);
+    s.lights[1].type = LightType::Spot;
+    s.lights[1].position = {0.0f, 6.0f, 0.0f};
+    s.lights[1].direction = {0.0f, -1.0f, 0.1f};
+    s.lights[1].shadow.depthBias = 7.0f;
+    s.lights[2].type = LightType::Point;
+    s.lights[2].position = {0.0f, 3.0f, 0.0f};
+    s.lights[2].shadow.depthBias = 5.0f;
+    return s;
+}
+
+ShadowExportSet exportSet(const Settings& s, std::optional<std::size_t> only = std::nullopt) {
+    const std::optional<Scene> scene = makeBuiltinScene("textbook");
+    std::string error;
+    const std::optional<ShadowExportSet> set = exportForScene(s, *scene, "builtin:textbook", only, error);
+    EXPECT_TRUE(set.has_value()) << error;
+    return set.value_or(ShadowExportSet{});
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+}
+
+TEST(ShadowExportLights, EveryLightIsExportedUnderItsOwnLabel) {
+    const ShadowExportSet set = exportSet(threeLights());
+    ASSERT_EQ(set.lights.size(), 3u);
+    EXPECT_EQ(set.lightCount, 3u);
+    for (const LightExport& l : set.lights) ASSERT_TRUE(l.shadow.has_value()) << l.label;
+    EXPECT_EQ(set.lights[0].label, "light 0 (directional)");
+    EXPECT_EQ(set.lights[1].label, "light 1 (spot)");
+    EXPECT_EQ(set.lights[2].label, "light 2 (point)");
+    EXPECT_EQ(set.lights[1].shadow->shadow.depthBias, 7.0f) << "light 1's own settings, not light 0's";
+    EXPECT_FALSE(set.lights[1].shadow->depthClamp) << "depth clamp applies to directional views only";
+    EXPECT_TRUE(set.lights[0].shadow->depthClamp);
+    for (ExportFormat f : {ExportFormat::D3D12, ExportFormat::D3D11, ExportFormat::Vulkan, ExportFormat::GL}) {
+        const std::string text = exportSnippet(set, f);
+        EXPECT_TRUE(contains(text, "// ======== light 0 (directional) ========")) << text;
+        EXPECT_TRUE(contains(text, "// ======== light 1 (spot) ========"));
+        EXPECT_TRUE(contains(text, "// ======== light 2 (point) ========"));
+        // Each section's state is its own light's: light 0's DepthBias 2, light 1's 7, light 2's 5.
+        const std::size_t at1 = text.find("======== light 1"), at2 = text.find("======== light 2");
+        const std::string section1 = text.substr(at1, at2 - at1);
+        if (f == ExportFormat::Vulkan) {
+            EXPECT_TRUE(contains(section1, "depthBiasConstantFactor = 7.0f;")) << section1;
+            EXPECT_TRUE(contains(section1, "depthClampEnable = VK_FALSE;"));
+            EXPECT_TRUE(contains(text.substr(at2), "depthBiasConstantFactor = 5.0f;"));
+            EXPECT_TRUE(contains(text.substr(0, at1), "depthBiasConstantFactor = 2.0f;"));
+        }
+        if (f == ExportFormat::D3D12) EXPECT_TRUE(contains(section1, "shadowRaster.DepthBias = 7;")) << section1;
+    }
+    const nlohmann::json j = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json));
+    ASSERT_EQ(j["lights"].size(), 3u);
+    EXPECT_EQ(j["lights"][1]["label"], "light 1 (spot)");
+    EXPECT_EQ(j["lights"][1]["rasterizer"]["depthBias"].get<float>(), 7.0f);
+    EXPECT_EQ(j["lights"][2]["type"], "point");
+    EXPECT_EQ(j["lights"][2]["views"].size(), 6u);
+}
+
+TEST(ShadowExportLights, APointLightHasSixFacesWithTheirMatricesNearAndFar) {
+    const ShadowExportSet set = exportSet(threeLights(), 2);
+    ASSERT_EQ(set.lights.size(), 1u);
+    const ShadowExport& e = *set.lights[0].shadow;
+    ASSERT_EQ(e.views.size(), 6u);
+    const char* names[6] = {"+X", "-X", "+Y", "-Y", "+Z", "-Z"};
+    const glm::dvec3 look[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int f = 0; f < 6; ++f) {
+        const ExportView& v = e.views[std::size_t(f)];
+        EXPECT_EQ(v.label, std::string("light 2 (point) face ") + names[f]);
+        EXPECT_EQ(v.cubeFace, f);
+        EXPECT_GT(v.farPlane, v.nearPlane);
+        EXPECT_EQ(v.nearPlane, e.views[0].nearPlane);
+        // A point on the face's axis projects to the face's centre, in front of the light (depth in (0, 1)).
+        const glm::dvec4 clip = v.viewProjection * glm::dvec4(e.lightPosition + look[f] * 2.0, 1.0);
+        EXPECT_NEAR(clip.x / clip.w, 0.0, 1e-9) << names[f];
+        EXPECT_NEAR(clip.y / clip.w, 0.0, 1e-9) << names[f];
+        EXPECT_GT(clip.w, 0.0) << names[f];
+    }
+    const std::string gl = exportSnippet(set, ExportFormat::GL);
+    for (const char* n : {"PX", "NX", "PY", "NY", "PZ", "NZ"})
+        EXPECT_EQ(count(gl, std::string("static const float light2Face") + n + "ViewProjection[16]"), 1u) << n << gl;
+    for (const char* n : names) EXPECT_TRUE(contains(gl, std::string("// View light 2 (point) face ") + n + ": near ")) << n;
+    EXPECT_TRUE(contains(gl, "GL_TEXTURE_CUBE_MAP")) << gl;
+    EXPECT_TRUE(contains(gl, "light2FaceDepth(")) << "the cube's per-face reference depth as shader code";
+    EXPECT_TRUE(contains(gl, "texture(map, vec4(d, ref))"));
+    const std::string d3d = exportSnippet(set, ExportFormat::D3D12);
+    EXPECT_TRUE(contains(d3d, "FrontCounterClockwise = FALSE")) << "D3D cube faces: clip y negated";
+    EXPECT_TRUE(contains(d3d, "TextureCube<float> map"));
+    EXPECT_TRUE(contains(d3d, "cube faces with clip y negated"));
+}
+
+TEST(ShadowExportLights, ReceiverPlaneBiasIsShaderCodeWhenOnAndAbsentWhenOff) {
+    Settings s;
+    s.filter.kind = FilterKind::Pcf;
+    s.filter.kernel = 5;
+    s.lights[0].shadow.receiverPlaneBias = false;
+    const std::string off = exportSnippet(exportSet(s), ExportFormat::Vulkan);
+    EXPECT_FALSE(contains(off, "ReceiverPlaneSlope")) << off;
+    EXPECT_TRUE(contains(off, "Receiver-plane depth bias: off"));
+    EXPECT_TRUE(contains(off, "float light0Shadow(sampler2DShadow map")) << "the filter's tap loop is shader code too";
+    EXPECT_TRUE(contains(off, "const int LIGHT0_TAPS = 25;"));
+    s.lights[0].shadow.receiverPlaneBias = true;
+    const ShadowExportSet set = exportSet(s);
+    const std::string glsl = exportSnippet(set, ExportFormat::Vulkan);
+    EXPECT_TRUE(contains(glsl, "vec2 light0ReceiverPlaneSlope(mat4 viewProjection")) << glsl;
+    EXPECT_TRUE(contains(glsl, "dFdx(worldPos)"));
+    EXPECT_TRUE(contains(glsl, "toCentre = floor(lookupTexels + offset)")) << "PCF reads single texels: the plane at the centre";
+    EXPECT_TRUE(contains(glsl, "Receiver-plane depth bias: ON"));
+    const std::string hlsl = exportSnippet(set, ExportFormat::D3D11);
+    EXPECT_TRUE(contains(hlsl, "float2 light0ReceiverPlaneSlope(float4x4 viewProjection")) << hlsl;
+    EXPECT_TRUE(contains(hlsl, "rsqrt(length2)"));
+    EXPECT_TRUE(contains(hlsl, "map.SampleCmpLevelZero(cmp, tapTex, tapRef)"));
+    EXPECT_TRUE(contains(hlsl, "0.5 - ndc.y * 0.5")) << "D3D's row 0 is clip y +1";
+    EXPECT_FALSE(contains(hlsl, "vec2")) << "no GLSL in the HLSL snippet";
+    const nlohmann::json j = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json));
+    EXPECT_EQ(j["lights"][0]["receiverPlaneBias"]["applied"], true);
+    // A single centred tap has nothing to tilt: set, but (as in ShadowLab) not applied and no code.
+    s.filter.kind = FilterKind::Point;
+    const std::string point = exportSnippet(exportSet(s), ExportFormat::GL);
+    EXPECT_FALSE(contains(point, "ReceiverPlaneSlope")) << point;
+    EXPECT_TRUE(contains(point, "set, but not applied"));
+}
+
+TEST(ShadowExportLights, ShaderCodeUsesTheRendererTapsAndTheMainPassConstants) {
+    Settings s;
+    s.filter.kind = FilterKind::Poisson;
+    s.filter.poissonRadius = 1.5f;
+    const ShadowExportSet set = exportSet(s);
+    const std::string glsl = exportSnippet(set, ExportFormat::GL);
+    const std::vector<FilterTap> taps = filterTaps(s.filter);
+    ASSERT_EQ(taps.size(), std::size_t(kPoissonTaps));
+    char first[80];
+    std::snprintf(first, sizeof first, "vec2(%.9g, %.9g)", taps[0].offsetTexels.x, taps[0].offsetTexels.y);
+    const float x = float(taps[0].offsetTexels.x);
+    EXPECT_TRUE(contains(glsl, "const vec2 LIGHT0_TAP_OFFSETS[16] = vec2[](vec2(")) << glsl;
+    const std::size_t at = glsl.find("LIGHT0_TAP_OFFSETS[16] = vec2[](vec2(") + 37;
+    EXPECT_EQ(std::strtof(glsl.c_str() + at, nullptr), x) << "the first tap is the renderer's";
+    // The receiver-plane constants are main.frag.glsl's: read them from the shader the renderer compiles.
+    std::ifstream in(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders/main.frag.glsl");
+    std::stringstream shader;
+    shader << in.rdbuf();
+    std::smatch m;
+    const std::string text = shader.str();
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(kReceiverPlaneMaxSlope = ([0-9.eE+-]+);)")));
+    EXPECT_DOUBLE_EQ(std::stod(m[1]), kExportReceiverPlaneMaxSlope);
+    ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(abs\(det\) > ([0-9.eE+-]+) \*)")));
+    EXPECT_DOUBLE_EQ(std::stod(m[1]), kExportReceiverPlaneSingular);
+}
+
+TEST(ShadowExportLights, LightOptionExportsThatLightAloneAndRefusesOneThatDoesNotExist) {
+    const ShadowExportSet one = exportSet(threeLights(), 1);
+    ASSERT_EQ(one.lights.size(), 1u);
+    EXPECT_EQ(one.lights[0].label, "light 1 (spot)");
+    const std::string text = exportSnippet(one, ExportFormat::GL);
+    EXPECT_TRUE(contains(text, "light 1 of")) << text;
+    EXPECT_FALSE(contains(text, "light 0 (directional)"));
+    EXPECT_FALSE(contains(text, "light 2 (point)"));
+    const std::optional<Scene> scene = makeBuiltinScene("textbook");
+    std::string error;
+    EXPECT_FALSE(exportForScene(threeLights(), *scene, "t", 5, error).has_value());
+    EXPECT_TRUE(contains(error, "lights.5")) << error;
+    EXPECT_TRUE(contains(error, "0..2")) << error;
+}
+
+TEST(ShadowExportLights, DisabledAndNonCastingLightsAreListedWithoutShadowState) {
+    Settings s = threeLights();
+    s.lights[1].enabled = false;
+    s.lights[2].castsShadows = false;
+    const ShadowExportSet set = exportSet(s);
+    ASSERT_EQ(set.lights.size(), 3u);
+    EXPECT_FALSE(set.lights[1].shadow.has_value());
+    EXPECT_FALSE(set.lights[2].shadow.has_value());
+    const std::string vk = exportSnippet(set, ExportFormat::Vulkan);
+    EXPECT_TRUE(contains(vk, "light 1 (spot): disabled")) << vk;
+    EXPECT_TRUE(contains(vk, "light 2 (point): casts no shadow"));
+    EXPECT_EQ(count(vk, "VkPipelineRasterizationStateCreateInfo"), 1u) << "only light 0 has a shadow pass";
+    const nlohmann::json j = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json));
+    EXPECT_EQ(j["lights"][1]["castsShadow"], false);
+    EXPECT_TRUE(j["lights"][1].contains("noShadow"));
+}
+
+TEST(ShadowExportLights, ZeroLightsSayThatNothingCasts) {
+    Settings s;
+    s.lights.clear();
+    const ShadowExportSet set = exportSet(s);
+    EXPECT_TRUE(set.lights.empty());
+    for (ExportFormat f : {ExportFormat::D3D12, ExportFormat::D3D11, ExportFormat::Vulkan, ExportFormat::GL})
+        EXPECT_TRUE(contains(exportSnippet(set, f), "Nothing casts a shadow: the light set is empty"));
+    const nlohmann::json j = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json));
+    EXPECT_TRUE(j["lights"].empty());
+    EXPECT_TRUE(contains(j["note"].get<std::string>(), "Nothing casts a shadow"));
+    const std::optional<Scene> scene = makeBuiltinScene("textbook");
+    std::string error;
+    EXPECT_FALSE(exportForScene(s, *scene, "t", 0, error).has_value());
+    EXPECT_TRUE(contains(error, "lights.0")) << error;
 }
 
 TEST(DepthFormatChange, D32fToD16KeepsTheDepthOffsetAtTheReceivers) {

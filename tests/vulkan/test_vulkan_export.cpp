@@ -2,6 +2,7 @@
 // values parsed from `exportSnippet(..., Vulkan)`, and its depth map must match ShadowLab's GL map (llvmpipe) within
 // one depth step per texel.
 #include "export/export_snippets.h"
+#include "scene/scene.h"
 #include "gl_fixture.h"
 #include "image/depth_visualization.h"
 #include "light/depth_bias.h"
@@ -11,7 +12,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
+#include <random>
 
 namespace shadowlab::test {
 namespace {
@@ -51,7 +55,7 @@ double depthSlopeAt(const std::vector<float>& map, int resolution, int x, int y)
 // interpolate float depth with different rounding: besides the one-step figures, the bound allows one subpixel's
 // worth of the surface's depth slope.
 MapDifference compareMaps(const std::vector<float>& gl, const std::vector<float>& vk, int resolution, bool d16,
-                          int subPixelBits) {
+                          int subPixelBits, bool reversedZ = false) {
     MapDifference d;
     const std::vector<std::uint8_t> grey = depthToGray(gl, writtenDepthRange(gl));
     const double subpixel = std::ldexp(1.0, -subPixelBits);
@@ -73,7 +77,7 @@ MapDifference compareMaps(const std::vector<float>& gl, const std::vector<float>
                 overBound = excess > 1.0;
             }
             d.overBound += overBound;
-            d.written += gl[i] < 1.0f;
+            d.written += reversedZ ? gl[i] > 0.0f : gl[i] < 1.0f;
             d.picture[i * 3] = overStep ? 255 : grey[i];
             d.picture[i * 3 + 1] = overBound ? 0 : overStep ? 160 : grey[i];
             d.picture[i * 3 + 2] = overStep ? 0 : grey[i];
@@ -120,7 +124,7 @@ TEST_P(VulkanExportTest, LavapipeMapMatchesTheGlMapWithinOneDepthStep) {
 
     // The values a user would paste: parsed from the exported snippet, not taken from Settings.
     const std::string snippet =
-        exportSnippet(makeShadowExport(settings, view.stats.light, c.scene), ExportFormat::Vulkan);
+        exportSnippet(makeShadowExport(settings, 0, view.stats.light, c.scene), ExportFormat::Vulkan);
     std::string parseError;
     DepthPassInput input = depthPassInput(scene, GpuScene(scene, view.stats.renderOrigin));
     input.raster = parseVulkanRaster(snippet, parseError);
@@ -163,6 +167,136 @@ INSTANTIATE_TEST_SUITE_P(Exported, VulkanExportTest,
                              return n;
                          });
 
+// ---- The property test: random presets, each exported and rendered by lavapipe from the snippet alone ----
+//
+// Each preset (one light) is drawn from a seeded RNG: scene (textbook / grazing), light type (directional / spot),
+// resolution 64..256, format (D16 / D32F; D24 is not renderable by this check's Vulkan pass), reversed-Z, cull mode,
+// DepthBias 0..8, SlopeScaledDepthBias 0..4, DepthBiasClamp (0 or 1e-4..5e-3), depth clamp, filter and receiver-plane
+// bias (these two do not change the map; they are exported too). ShadowLab renders it (GL, llvmpipe); the export's
+// Vulkan snippet is parsed for EVERYTHING the Vulkan pass takes: the rasterizer state, the depth test and clear
+// (reversed-Z), the format and the light's matrix (its [0,1] clip depth used as is). Lavapipe renders that.
+// Tolerance (the one the fixed cases above state): no texel further from the GL map than one depth step of the
+// format plus one subpixel's worth of the surface's depth slope (lavapipe snaps to 1/2^subPixelPrecisionBits of a
+// texel), for at most max(1, 1e-4 x the written texels) texels (a 64^2 map may differ at one silhouette texel). The
+// fixed cases' stricter D16 rule (every texel within one step) does not hold here: the exported matrix is remapped to
+// [0,1] on the CPU in double, the fixed cases remap on the GPU in float, and 1-2 texels of 65536 differ by 1.004 steps.
+// The shadow factor S is a function of the map, the sampler and the shader code; the maps agreeing within the
+// tolerance is what this test proves (the sampler / filter text is checked by the unit tests). A failing preset
+// prints its seed; SHADOWLAB_EXPORT_SEED=<seed> SHADOWLAB_EXPORT_PRESETS=1 reruns it alone.
+
+struct RandomPreset {
+    std::string scene;  // "textbook"
+    Settings settings;
+    std::string summary;
+};
+
+RandomPreset randomPreset(std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    const auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    const auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+    RandomPreset p;
+    p.scene = pick(2) ? "grazing" : "textbook";
+    p.settings = loadShippedPreset("default");
+    LightSettings& l = p.settings.lights[0];
+    l.type = pick(2) ? LightType::Spot : LightType::Directional;
+    if (l.type == LightType::Directional) {
+        l.direction = {float(uniform(-0.8, 0.8)), -1.0f, float(uniform(-0.8, 0.8))};
+    } else {
+        l.position = {float(uniform(-4.0, 4.0)), float(uniform(5.0, 9.0)), float(uniform(-4.0, 4.0))};
+        l.direction = glm::vec3(float(uniform(-0.3, 0.3)), 0.0f, float(uniform(-0.3, 0.3))) - l.position;  // at the scene
+        l.spotConeDeg = float(uniform(50.0, 100.0));
+    }
+    static const int resolutions[] = {64, 96, 128, 192, 256};
+    l.shadow.resolution = resolutions[pick(5)];
+    l.shadow.format = pick(2) ? DepthFormat::D16 : DepthFormat::D32F;
+    l.shadow.reversedZ = pick(2) == 1;
+    static const CullMode culls[] = {CullMode::Back, CullMode::Front, CullMode::None};
+    l.shadow.cullMode = culls[pick(3)];
+    l.shadow.depthBias = pick(4) == 0 ? 0.0f : float(uniform(0.0, 8.0));
+    l.shadow.slopeScaledDepthBias = pick(4) == 0 ? 0.0f : float(uniform(0.0, 4.0));
+    l.shadow.depthBiasClamp = pick(2) ? 0.0f : float(uniform(1e-4, 5e-3));
+    l.shadow.receiverPlaneBias = pick(2) == 1;
+    l.projection.depthClamp = pick(2) == 1;
+    static const FilterKind filters[] = {FilterKind::Point, FilterKind::Hardware2x2, FilterKind::Pcf, FilterKind::Poisson};
+    p.settings.filter.kind = filters[pick(4)];
+    char text[256];
+    std::snprintf(text, sizeof text, "%s %s %d %s%s cull %d bias %.3g slope %.3g clamp %.3g depthClamp %d", p.scene.c_str(),
+                  l.type == LightType::Spot ? "spot" : "directional", l.shadow.resolution,
+                  l.shadow.format == DepthFormat::D16 ? "d16" : "d32f", l.shadow.reversedZ ? " reversedZ" : "",
+                  int(l.shadow.cullMode), double(l.shadow.depthBias), double(l.shadow.slopeScaledDepthBias),
+                  double(l.shadow.depthBiasClamp), int(l.projection.depthClamp));
+    p.summary = text;
+    return p;
+}
+
+std::uint32_t envNumber(const char* name, std::uint32_t fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? std::uint32_t(std::strtoul(v, nullptr, 10)) : fallback;
+}
+
+TEST_F(GlTest, RandomPresetsExportedToVulkanRenderShadowLabsMapOnLavapipe) {
+    const std::uint32_t firstSeed = envNumber("SHADOWLAB_EXPORT_SEED", 19001);
+    const std::uint32_t presets = envNumber("SHADOWLAB_EXPORT_PRESETS", 32);
+    const auto start = std::chrono::steady_clock::now();
+    Renderer renderer;
+    long texels = 0;
+    std::uint32_t checked = 0;
+    for (std::uint32_t seed = firstSeed; seed < firstSeed + presets; ++seed) {
+        const RandomPreset p = randomPreset(seed);
+        const std::string where = "seed " + std::to_string(seed) + " (" + p.summary + ")";
+        SCOPED_TRACE(where);
+        const Scene scene = loadBuiltin(p.scene.c_str());
+        const View view = renderView(renderer, scene, p.settings, 32, 32);
+        ASSERT_TRUE(view.stats.ok) << view.stats.error;
+        const std::vector<float> glMap = renderer.shadowMap().readDepth();
+
+        std::string error;
+        const std::optional<ShadowExportSet> set = exportForScene(p.settings, scene, "builtin:" + p.scene, 0, error);
+        ASSERT_TRUE(set && set->lights.size() == 1 && set->lights[0].shadow) << error;
+        const ShadowExport& e = *set->lights[0].shadow;
+        const std::string snippet = exportSnippet(e, ExportFormat::Vulkan);
+        DepthPassInput input = depthPassInput(scene, GpuScene(scene, e.renderOrigin));
+        input.raster = parseVulkanRaster(snippet, error);
+        ASSERT_EQ(error, "") << snippet;
+        const VulkanPassState state = parseVulkanPassState(snippet, "light0ViewProjection", error);
+        ASSERT_EQ(error, "") << snippet;
+        input.lightViewProjection = state.viewProjection;
+        input.matrixZeroToOne = true;
+        input.reversedZ = state.reversedZ;
+        input.resolution = p.settings.lights[0].shadow.resolution;
+        ASSERT_TRUE(snippet.find("Shadow map: " + std::to_string(input.resolution) + "x" +
+                                 std::to_string(input.resolution)) != std::string::npos);
+        const bool d16 = snippet.find("VK_FORMAT_D16_UNORM") != std::string::npos;
+        ASSERT_NE(d16, snippet.find("VK_FORMAT_D32_SFLOAT") != std::string::npos) << "exactly one format";
+        input.format = d16 ? VK_FORMAT_D16_UNORM : VK_FORMAT_D32_SFLOAT;
+        const DepthPassResult vk = renderDepthVulkan(input);
+        if (vk.noDevice) GTEST_SKIP() << "no Vulkan device (" << vk.error << "); scripts/install-deps installs lavapipe";
+        ASSERT_EQ(vk.error, "");
+        ASSERT_EQ(vk.depth.size(), glMap.size());
+
+        const MapDifference d =
+            compareMaps(glMap, vk.depth, input.resolution, d16, vk.subPixelPrecisionBits, state.reversedZ);
+        EXPECT_GT(d.written, 0) << "some caster is in the map (culling may leave few)";
+        const bool ok = double(d.overBound) <= std::max(1.0, 1e-4 * double(d.written));
+        if (!ok) {
+            const std::string name = "vulkan-property-seed-" + std::to_string(seed);
+            std::filesystem::create_directories(SHADOWLAB_TEST_OUTPUT);
+            writePng(std::string(SHADOWLAB_TEST_OUTPUT) + "/" + name + ".png", input.resolution, input.resolution, 3,
+                     d.picture.data(), true);
+            ADD_FAILURE() << "FAILING PRESET " << where << ": " << d.overBound << " of " << d.written
+                          << " written texels beyond one step + one subpixel's depth change (" << d.overOneStep
+                          << " beyond one step, max " << d.maxSteps << " steps); picture " << name
+                          << ".png; rerun: SHADOWLAB_EXPORT_SEED=" << seed << " SHADOWLAB_EXPORT_PRESETS=1";
+        }
+        texels += d.written;
+        ++checked;
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("[ lavapipe ] property: %u random presets (seeds %u..%u), %ld written texels compared, %.1f s\n", checked,
+                firstSeed, firstSeed + presets - 1, texels, seconds);
+    EXPECT_EQ(checked, presets);
+}
+
 // The check can fail: the same pass without the exported bias is many steps away from ShadowLab's map.
 TEST_F(GlTest, LavapipeMapWithoutTheBiasDiffersFromTheGlMap) {
     const Scene scene = loadBuiltin("textbook");
@@ -176,7 +310,7 @@ TEST_F(GlTest, LavapipeMapWithoutTheBiasDiffersFromTheGlMap) {
     DepthPassInput input = depthPassInput(scene, GpuScene(scene, view.stats.renderOrigin));
     std::string parseError;
     input.raster = parseVulkanRaster(
-        exportSnippet(makeShadowExport(settings, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
+        exportSnippet(makeShadowExport(settings, 0, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
     ASSERT_EQ(parseError, "");
     input.raster.depthBiasEnable = VK_FALSE;
     input.lightViewProjection = glm::mat4(view.stats.light.viewProjection());
@@ -200,7 +334,7 @@ TEST_F(GlTest, LavapipeZeroToOneRemapMatchesGlClipDepthBitForBit) {
     DepthPassInput input = depthPassInput(scene, GpuScene(scene, view.stats.renderOrigin));
     std::string parseError;
     input.raster = parseVulkanRaster(
-        exportSnippet(makeShadowExport(settings, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
+        exportSnippet(makeShadowExport(settings, 0, view.stats.light, "builtin:textbook"), ExportFormat::Vulkan), parseError);
     ASSERT_EQ(parseError, "");
     input.lightViewProjection = glm::mat4(view.stats.light.viewProjection());
     input.resolution = 512;

@@ -2,6 +2,7 @@
 
 #include "shadow_depth_vk.vert.h"  // glslangValidator -V output: shadowDepthVkVert[]
 
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <map>
@@ -50,6 +51,36 @@ VulkanRaster parseVulkanRaster(const std::string& snippet, std::string& error) {
     }
     if (found != 7) error = "expected 7 rasterizer fields in the snippet, found " + std::to_string(found);
     return r;
+}
+
+VulkanPassState parseVulkanPassState(const std::string& snippet, const std::string& matrixName, std::string& error) {
+    VulkanPassState state;
+    const bool greater = snippet.find("depthCompareOp = VK_COMPARE_OP_GREATER; clear depth 0.0.") != std::string::npos;
+    const bool less = snippet.find("depthCompareOp = VK_COMPARE_OP_LESS; clear depth 1.0.") != std::string::npos;
+    if (greater == less) {
+        error = "the snippet states no single depth test (VK_COMPARE_OP_LESS / GREATER)";
+        return state;
+    }
+    state.reversedZ = greater;
+    const std::string head = "static const float " + matrixName + "[16] = {";
+    const std::size_t at = snippet.find(head);
+    if (at == std::string::npos) {
+        error = "no matrix " + matrixName + " in the snippet";
+        return state;
+    }
+    const char* p = snippet.c_str() + at + head.size();
+    for (int i = 0; i < 16; ++i) {
+        char* end = nullptr;
+        const float v = std::strtof(p, &end);
+        if (end == p) {
+            error = "cannot read element " + std::to_string(i) + " of " + matrixName;
+            return state;
+        }
+        state.viewProjection[i / 4][i % 4] = v;
+        p = end;
+        while (*p == 'f' || *p == ',' || *p == ' ') ++p;
+    }
+    return state;
 }
 
 namespace {
@@ -301,7 +332,7 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
             stage.stage = VK_SHADER_STAGE_VERTEX_BIT;
             stage.module = module;
             stage.pName = "main";
-            const VkBool32 remapDepth = input.glClipDepth ? VK_FALSE : VK_TRUE;
+            const VkBool32 remapDepth = input.glClipDepth || input.matrixZeroToOne ? VK_FALSE : VK_TRUE;
             const VkSpecializationMapEntry remapEntry{0, 0, sizeof(VkBool32)};
             const VkSpecializationInfo specialization{1, &remapEntry, sizeof remapDepth, &remapDepth};
             stage.pSpecializationInfo = &specialization;
@@ -341,7 +372,7 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
             VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
             depth.depthTestEnable = VK_TRUE;
             depth.depthWriteEnable = VK_TRUE;
-            depth.depthCompareOp = VK_COMPARE_OP_LESS;
+            depth.depthCompareOp = input.reversedZ ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
             VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
             VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
             info.stageCount = 1;
@@ -377,7 +408,7 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         check(vkBeginCommandBuffer(cb, &begin), "vkBeginCommandBuffer");
         VkClearValue clear{};
-        clear.depthStencil = {1.0f, 0};
+        clear.depthStencil = {input.reversedZ ? 0.0f : 1.0f, 0};
         VkRenderPassBeginInfo passBegin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
         passBegin.renderPass = renderPass;
         passBegin.framebuffer = framebuffer;

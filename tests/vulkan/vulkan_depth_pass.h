@@ -26,6 +26,14 @@ struct VulkanRaster {
 // Reads `shadowRaster.field = value;` lines of an exported snippet; `error` names the first line it cannot read.
 VulkanRaster parseVulkanRaster(const std::string& snippet, std::string& error);
 
+// The rest of what the exported snippet says the pass needs: the depth test ("depthCompareOp = ...; clear depth ..."),
+// and the view's matrix (`static const float <name>[16] = {...};`, column-major). `error` names what is missing.
+struct VulkanPassState {
+    bool reversedZ = false;   // VK_COMPARE_OP_GREATER, clear 0.0
+    glm::mat4 viewProjection{1.0f};
+};
+VulkanPassState parseVulkanPassState(const std::string& snippet, const std::string& matrixName, std::string& error);
+
 struct DepthDraw {
     glm::mat4 model{1.0f};
     std::uint32_t firstIndex = 0;
@@ -46,6 +54,10 @@ struct DepthPassInput {
     // false: the [0,1] clip depth an engine uses (the shader remaps GL's z); true: keep GL's [-1,1] clip depth through
     // VK_EXT_depth_clip_control, so only the rasterizer state differs from ShadowLab's GL pass.
     bool glClipDepth = false;
+    // true: lightViewProjection already has clip depth [0,1] (the exported matrix: remapped, or reversed-Z's own), so
+    // the shader passes it through unchanged.
+    bool matrixZeroToOne = false;
+    bool reversedZ = false;  // clear to 0, depth test GREATER (the exported depth state for reversed-Z)
 };
 
 struct DepthPassResult {

@@ -19,6 +19,7 @@ const std::vector<Panel>& panels() {
         {"Accuracy", Sidebar::Right, "Accuracy", drawAccuracyPanel},
         {"Probe", Sidebar::Right, "Probe", drawProbePanel},
         {"Stats", Sidebar::Right, "Stats", drawStatsPanel},
+        {"Export", Sidebar::Right, "Export", drawExportPanel},  // the snippet takes the height left
     };
     return all;
 }

@@ -46,6 +46,7 @@ void drawShadowMapPanel(PanelContext&);
 void drawSamplingPanel(PanelContext&);
 void drawShadowMapViewerPanel(PanelContext&);
 void drawStatsPanel(PanelContext&);
+void drawExportPanel(PanelContext&);
 void drawAccuracyPanel(PanelContext&);
 void drawProbePanel(PanelContext&);
 // Not a sidebar panel: a window over the viewport, opened from the Accuracy panel ("Cost vs accuracy..."). Called

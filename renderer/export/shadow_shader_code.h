@@ -1,0 +1,33 @@
+#pragma once
+// The shader half of an export: the terms of the shadow factor S that are shader techniques, not pipeline state —
+// normal offset, receiver-plane depth bias, the filter's tap loop (PCF grid / Poisson disk, offsets from
+// shading/filter_taps.h, the renderer's own table) and keeping a lookup's taps inside the map. Written once, here,
+// and printed in GLSL (GL, Vulkan) or HLSL (D3D11, D3D12): the same lines, only the language's words differ. It
+// mirrors shaders/main.frag.glsl (shadow2D, receiverPlaneSlope, shadowCube, faceDepth, offsetLookup);
+// tests/unit/test_shadow_export.cpp checks the constants both use.
+#include "export/shadow_export.h"
+
+#include <string>
+
+namespace shadowlab {
+
+enum class ShaderLanguage { Glsl, Hlsl };
+
+// How the exported map is addressed, per API: GL and Vulkan store row 0 at clip y = -1 (v = 0.5 + 0.5 y_ndc), D3D at
+// clip y = +1 (v = 0.5 - 0.5 y_ndc, tap offsets' y mirrored). Depth: GL without reversed-Z is ShadowLab's [-1,1]
+// clip depth (window = 0.5 z + 0.5); every other case a zero-to-one matrix (window = z_ndc).
+struct ShaderTarget {
+    ShaderLanguage language = ShaderLanguage::Glsl;
+    bool flipV = false;             // D3D
+    bool zeroToOneDepth = false;    // the matrix the shader gets has clip depth [0,1]
+};
+ShaderTarget shaderTargetFor(ExportFormat format, bool reversedZ);
+
+// The receiver-plane constants main.frag.glsl uses (kReceiverPlaneMaxSlope, the singular-Jacobian threshold).
+inline constexpr double kExportReceiverPlaneMaxSlope = 8.0;
+inline constexpr double kExportReceiverPlaneSingular = 1e-3;
+
+// The shader functions computing S for one light (`lightN...` names), with a comment saying what they take.
+std::string shadowShaderCode(const ShadowExport& light, const ShaderTarget& target);
+
+}  // namespace shadowlab
