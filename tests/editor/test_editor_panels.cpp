@@ -41,6 +41,10 @@ std::vector<std::string> cutContent() {
         if (!w->Active || w->Hidden || (w->Flags & (ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup)) ||
             std::string(w->Name).rfind("Debug##", 0) == 0 || std::string(w->Name) == "Viewport")
             continue;
+        // A read-only multiline text field (the Export panel's snippet) is a document in its own scrolling box, as
+        // in any editor: its lines are read by scrolling it, nothing around it is cut.
+        if (std::string(w->Name).find("/##snippet_") != std::string::npos && (w->Flags & ImGuiWindowFlags_ChildWindow))
+            continue;
         // A child with a horizontal scroll bar (a wide table's) shows its columns by scrolling: nothing is lost.
         const float overX = w->ScrollbarX ? 0.0f : w->DC.CursorMaxPos.x - w->InnerClipRect.Max.x;
         const float overY = w->DC.CursorMaxPos.y - w->InnerClipRect.Max.y;
