@@ -107,14 +107,29 @@ std::string checkMeasureMemory(int width, int height) {
            gib(available) + " available; use a smaller view";
 }
 
-std::optional<std::size_t> chooseOneLight(const Settings& settings, const Scene& scene, int requested,
-                                          const std::string& option, std::string& error) {
+std::optional<std::vector<std::size_t>> chooseLights(const Settings& settings, const Scene& scene, int requested,
+                                                     const std::string& what, std::string& error) {
     if (requested >= 0) {
         if (error = unmeasurableReason(settings, scene, std::size_t(requested)); !error.empty()) {
             error = "--light " + std::to_string(requested) + ": " + error;
             return std::nullopt;
         }
-        return std::size_t(requested);
+        return std::vector<std::size_t>{std::size_t(requested)};
+    }
+    std::vector<std::size_t> casting = castingLights(settings, scene);
+    if (casting.empty()) {
+        error = "no light casts a shadow (every light is off or has castsShadows=false): nothing to " + what;
+        return std::nullopt;
+    }
+    return casting;
+}
+
+std::optional<std::size_t> chooseOneLight(const Settings& settings, const Scene& scene, int requested,
+                                          const std::string& option, std::string& error) {
+    if (requested >= 0) {
+        const std::optional<std::vector<std::size_t>> one = chooseLights(settings, scene, requested, option, error);
+        if (!one) return std::nullopt;
+        return one->front();
     }
     const std::vector<std::size_t> casting = castingLights(settings, scene);
     if (casting.size() == 1) return casting.front();

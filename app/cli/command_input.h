@@ -19,6 +19,11 @@ std::string checkViewSize(int width, int height);
 // "" when pixel (x, y) lies in a width x height view, else why, naming the option and its text as given.
 std::string checkPixelInView(const std::string& option, const std::string& text, int x, int y, int width, int height);
 
+// The lights a per-light command describes: `requested` (--light N, checked: it exists and casts), or, when it is
+// -1, every shadow-casting light. nullopt with `error` when there is none ("...: nothing to `what`").
+std::optional<std::vector<std::size_t>> chooseLights(const Settings& settings, const Scene& scene, int requested,
+                                                     const std::string& what, std::string& error);
+
 // The one light a one-light tool describes: `requested` (--light N, checked: it exists and casts) or, when it is -1,
 // the only shadow-casting light; several casting lights without --light are refused (never light 0 silently).
 // nullopt with `error` naming `option`.

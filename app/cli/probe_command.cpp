@@ -46,15 +46,10 @@ int runProbe(const ProbeOptions& options) {
     const Scene& scene = *loaded.scene;
 
     // Which lights: --light N, else every shadow-casting light, each probed alone (its own S on GPU and CPU).
-    std::vector<std::size_t> lights;
-    if (options.light >= 0) {
-        if (std::string error = unmeasurableReason(*settings, scene, std::size_t(options.light)); !error.empty())
-            return fail("--light " + std::to_string(options.light) + ": " + error);
-        lights.push_back(std::size_t(options.light));
-    } else {
-        lights = castingLights(*settings, scene);
-        if (lights.empty()) return fail("no light casts a shadow: nothing to probe");
-    }
+    std::string chooseError;
+    const std::optional<std::vector<std::size_t>> chosen = chooseLights(*settings, scene, options.light, "probe", chooseError);
+    if (!chosen) return fail(chooseError);
+    const std::vector<std::size_t>& lights = *chosen;
 
     try {
         HeadlessContext context;

@@ -43,16 +43,10 @@ int runTune(const TuneOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
-    std::vector<std::size_t> indices;
-    if (options.light >= 0) {
-        if (std::string why = unmeasurableReason(*settings, scene, std::size_t(options.light)); !why.empty())
-            return fail("--light " + std::to_string(options.light) + ": " + why);
-        indices.push_back(std::size_t(options.light));
-    } else {
-        indices = castingLights(*settings, scene);
-        if (indices.empty()) return fail("no light casts a shadow (every light is off or has castsShadows=false): "
-                                         "nothing to tune");
-    }
+    std::string chooseError;
+    const std::optional<std::vector<std::size_t>> chosen = chooseLights(*settings, scene, options.light, "tune", chooseError);
+    if (!chosen) return fail(chooseError);
+    const std::vector<std::size_t>& indices = *chosen;
 
     try {
         HeadlessContext context;

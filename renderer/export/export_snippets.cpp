@@ -13,17 +13,8 @@ namespace shadowlab {
 
 namespace {
 
-// The shortest decimal that reads back as the same float, as a C++ float literal ("2.0f", "0.0078125f").
-std::string floatLiteral(float value) {
-    char text[32];
-    for (int digits = 1; digits <= 9; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, double(value));
-        if (std::strtof(text, nullptr) == value) break;
-    }
-    std::string s = text;
-    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
-    return s + "f";
-}
+// A C++ float literal that reads back as the same float ("2.0f", "0.0078125f").
+std::string floatLiteral(float value) { return shortestFloatText(value) + "f"; }
 
 std::string number(double value) {
     char text[32];

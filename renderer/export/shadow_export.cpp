@@ -2,6 +2,7 @@
 #include "export/shadow_export.h"
 
 #include "scene/scene.h"
+#include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
 
@@ -22,15 +23,6 @@ const char* exportFormatChoices() { return "d3d12|d3d11|vulkan|gl|json"; }
 
 namespace {
 
-const char* typeName(LightType type) {
-    switch (type) {
-        case LightType::Directional: return "directional";
-        case LightType::Spot: return "spot";
-        case LightType::Point: return "point";
-    }
-    return "?";
-}
-
 ExportView viewOf(std::size_t index, LightType type, const LightSpace& light) {
     ExportView v;
     v.label = viewLabel(index, type, light.cubeFace);
@@ -45,7 +37,7 @@ ExportView viewOf(std::size_t index, LightType type, const LightSpace& light) {
 }  // namespace
 
 std::string lightLabel(std::size_t index, LightType type) {
-    return "light " + std::to_string(index) + " (" + typeName(type) + ")";
+    return "light " + std::to_string(index) + " (" + lightTypeName(type) + ")";
 }
 
 std::string viewLabel(std::size_t index, LightType type, int cubeFace) {

@@ -4,9 +4,21 @@
 
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace shadowlab {
+
+std::string shortestFloatText(float value) {
+    char text[40];
+    for (int digits = 1; digits <= 9; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", digits, double(value));
+        if (std::strtof(text, nullptr) == value) break;
+    }
+    std::string s = text;
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    return s;
+}
 
 ShaderTarget shaderTargetFor(ExportFormat format, bool reversedZ) {
     ShaderTarget t;
@@ -20,17 +32,7 @@ ShaderTarget shaderTargetFor(ExportFormat format, bool reversedZ) {
 namespace {
 
 // A float as a shader literal that reads back as the same float ("0.5", "1e-30").
-std::string lit(double value) {
-    const float f = float(value);
-    char text[40];
-    for (int digits = 1; digits <= 9; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, double(f));
-        if (std::strtof(text, nullptr) == f) break;
-    }
-    std::string s = text;
-    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
-    return s;
-}
+std::string lit(double value) { return shortestFloatText(float(value)); }
 
 // The words that differ between the two languages; every line below is written once with them.
 struct Words {

@@ -27,6 +27,10 @@ ShaderTarget shaderTargetFor(ExportFormat format, bool reversedZ);
 inline constexpr double kExportReceiverPlaneMaxSlope = 8.0;
 inline constexpr double kExportReceiverPlaneSingular = 1e-3;
 
+// The shortest decimal that reads back as the same float, always with a '.' or an exponent ("0.5", "2.0",
+// "1e-30"): the one float text of every snippet (C++ literals add "f").
+std::string shortestFloatText(float value);
+
 // The shader functions computing S for one light (`lightN...` names), with a comment saying what they take.
 std::string shadowShaderCode(const ShadowExport& light, const ShaderTarget& target);
 
