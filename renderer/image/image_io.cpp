@@ -134,6 +134,19 @@ std::string writeExrDepth(const std::string& path, int width, int height, const 
     return {};
 }
 
+std::optional<std::vector<std::uint8_t>> inflateZlib(const std::uint8_t* data, std::size_t size, std::size_t maxBytes) {
+    // Deflate expands at most 1032:1, so the output buffer is bounded by the input as well as by the limit.
+    constexpr std::size_t kMaxRatio = 1032;
+    if (size > std::size_t(INT_MAX)) return std::nullopt;
+    const std::size_t capacity = std::min({maxBytes, size * kMaxRatio + 64, std::size_t(INT_MAX)});
+    std::vector<std::uint8_t> out(capacity);
+    const int got = stbi_zlib_decode_buffer(reinterpret_cast<char*>(out.data()), int(capacity),
+                                            reinterpret_cast<const char*>(data), int(size));
+    if (got < 0) return std::nullopt;
+    out.resize(std::size_t(got));
+    return out;
+}
+
 std::optional<PngImage> readPng(const std::string& path, std::string* error) {
     int w = 0, h = 0, n = 0;
     stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, 0);

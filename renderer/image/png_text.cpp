@@ -72,34 +72,68 @@ std::string insertPngText(std::vector<std::uint8_t>& png, const PngText& entries
     return {};
 }
 
-std::optional<std::string> findPngText(const std::uint8_t* bytes, std::size_t size, const std::string& keyword) {
-    if (!isPng(bytes, size)) return std::nullopt;
-    std::size_t at = sizeof kPngSignature;
+std::optional<std::string> findPngText(const PngByteReader& read, std::uint64_t size, const std::string& keyword,
+                                       std::size_t maxText, std::string* why) {
+    std::uint8_t head[8];
+    if (size < sizeof head || !read(0, sizeof head, head) || !isPng(head, sizeof head)) return std::nullopt;
+    std::uint64_t at = sizeof kPngSignature;
+    std::vector<std::uint8_t> chunkBytes;  // type, data, CRC of a text chunk
     while (at + 12 <= size) {
-        const std::uint32_t length = readBE32(bytes + at);
+        if (!read(at, 8, head)) return std::nullopt;
+        const std::uint32_t length = readBE32(head);
         if (length > size - at - 12) return std::nullopt;  // truncated or corrupt: stop, never read past the end
-        const std::uint8_t* type = bytes + at + 4;
-        const std::uint8_t* data = type + 4;
-        const bool crcOk = crc32(type, std::size_t(length) + 4) == readBE32(data + length);
-        const bool tEXt = std::memcmp(type, "tEXt", 4) == 0, iTXt = std::memcmp(type, "iTXt", 4) == 0;
-        if (crcOk && (tEXt || iTXt) && length > keyword.size() && std::memcmp(data, keyword.data(), keyword.size()) == 0 &&
-            data[keyword.size()] == 0) {
-            std::size_t p = keyword.size() + 1;
-            if (tEXt) return std::string(reinterpret_cast<const char*>(data + p), length - p);
-            // iTXt: compression flag, method, language tag NUL, translated keyword NUL, then the text.
-            if (p + 2 <= length && data[p] == 0) {
-                p += 2;
-                for (int field = 0; field < 2 && p < length; ++field) {
-                    while (p < length && data[p] != 0) ++p;
-                    ++p;
+        const bool tEXt = std::memcmp(head + 4, "tEXt", 4) == 0, iTXt = std::memcmp(head + 4, "iTXt", 4) == 0;
+        if (std::memcmp(head + 4, "IEND", 4) == 0) break;
+        if ((tEXt || iTXt) && length > keyword.size()) {
+            const std::size_t keyLength = keyword.size() + 1;
+            std::uint8_t key[80];
+            if (keyLength > sizeof key || !read(at + 8, keyLength, key)) return std::nullopt;
+            if (std::memcmp(key, keyword.data(), keyword.size()) == 0 && key[keyword.size()] == 0) {
+                if (length > maxText) {
+                    if (why) *why = "its '" + keyword + "' text chunk is " + std::to_string(length) +
+                                    " bytes, more than the limit of " + std::to_string(maxText);
+                    return std::nullopt;
                 }
-                if (p <= length) return std::string(reinterpret_cast<const char*>(data + p), length - p);
+                chunkBytes.resize(std::size_t(length) + 8);
+                if (!read(at + 4, chunkBytes.size(), chunkBytes.data())) return std::nullopt;
+                const std::uint8_t* data = chunkBytes.data() + 4;
+                if (crc32(chunkBytes.data(), std::size_t(length) + 4) == readBE32(data + length)) {
+                    std::size_t p = keyLength;
+                    if (tEXt) return std::string(reinterpret_cast<const char*>(data + p), length - p);
+                    // iTXt: compression flag, method (0 = zlib), language tag NUL, translated keyword NUL, the text.
+                    if (p + 2 <= length && data[p] <= 1) {
+                        const bool compressed = data[p] == 1;
+                        const bool zlib = data[p + 1] == 0;
+                        p += 2;
+                        for (int field = 0; field < 2 && p < length; ++field) {
+                            while (p < length && data[p] != 0) ++p;
+                            ++p;
+                        }
+                        if (p <= length && !compressed)
+                            return std::string(reinterpret_cast<const char*>(data + p), length - p);
+                        if (p <= length && zlib) {
+                            if (std::optional<std::vector<std::uint8_t>> text = inflateZlib(data + p, length - p, maxText))
+                                return std::string(text->begin(), text->end());
+                            if (why) *why = "its compressed '" + keyword + "' text chunk is corrupt or inflates to " +
+                                            "more than the limit of " + std::to_string(maxText) + " bytes";
+                            return std::nullopt;
+                        }
+                    }
+                }
             }
         }
-        if (std::memcmp(type, "IEND", 4) == 0) break;
-        at += std::size_t(length) + 12;
+        at += std::uint64_t(length) + 12;
     }
     return std::nullopt;
+}
+
+std::optional<std::string> findPngText(const std::uint8_t* bytes, std::size_t size, const std::string& keyword) {
+    const PngByteReader read = [&](std::uint64_t offset, std::size_t n, std::uint8_t* out) {
+        if (offset > size || n > size - offset) return false;
+        std::memcpy(out, bytes + offset, n);
+        return true;
+    };
+    return findPngText(read, size, keyword, size);
 }
 
 }  // namespace shadowlab

@@ -315,20 +315,32 @@ PresetLoadResult presetFromText(const std::string& text, const Settings& base) {
 PresetLoadResult loadPresetFile(const std::string& path, const Settings& base) {
     PresetLoadResult r;
     std::string text;
-    // A preset is a few KiB; the limit refuses a video or a log file quickly.
-    if (std::string error = readRegularFile(path, kMaxPresetBytes, text); !error.empty()) {
+    RegularFileReader file;
+    if (std::string error = file.open(path); !error.empty()) {
         r.errors.push_back(std::move(error));
         return r;
     }
-    const auto* bytes = reinterpret_cast<const std::uint8_t*>(text.data());
-    if (isPng(bytes, text.size())) {
-        std::optional<std::string> embedded = findPngText(bytes, text.size(), kPresetPngKeyword);
+    std::uint8_t head[sizeof kPngSignature];
+    if (file.size() >= sizeof head && file.readAt(0, sizeof head, head) && isPng(head, sizeof head)) {
+        // A screenshot of any size: only its text chunks are read, never its pixels, so the preset limit applies to
+        // the preset's text, not to the picture.
+        std::string why;
+        std::optional<std::string> embedded = findPngText(
+            [&](std::uint64_t offset, std::size_t n, std::uint8_t* out) { return file.readAt(offset, n, out); },
+            file.size(), kPresetPngKeyword, kMaxPresetBytes, &why);
         if (!embedded) {
-            r.errors.push_back(path + ": this PNG carries no ShadowLab preset (no '" + kPresetPngKeyword +
-                               "' text chunk; only screenshots written by ShadowLab have one)");
+            r.errors.push_back(path + ": " +
+                               (!why.empty() ? why
+                                             : std::string("this PNG carries no ShadowLab preset (no '") +
+                                                   kPresetPngKeyword +
+                                                   "' text chunk; only screenshots written by ShadowLab have one)"));
             return r;
         }
         text = std::move(*embedded);
+    } else if (std::string error = readRegularFile(path, kMaxPresetBytes, text); !error.empty()) {
+        // A preset is a few KiB; the limit refuses a video or a log file quickly.
+        r.errors.push_back(std::move(error));
+        return r;
     }
     r = presetFromText(text, base);
     // Syntax errors start with line:column and join the path without a space (path:3:7: ...).
