@@ -187,7 +187,7 @@ std::vector<int> Loader::rootNodes() {
 
 std::optional<Scene> Loader::run(std::string& error) {
     if (!checkRequiredExtensions(model_, sink_, error)) return std::nullopt;
-    importMaterials(model_, images_, scene_, sink_);
+    const std::vector<int> baseColorSources = importMaterials(model_, scene_, sink_);
     const std::vector<int> roots = rootNodes();
     if (roots.empty() && !model_.nodes.empty() && model_.scenes.empty()) {
         error = "no scene root: the file has no scenes and each of its " + str(model_.nodes.size()) +
@@ -206,6 +206,9 @@ std::optional<Scene> Loader::run(std::string& error) {
                 "primitive that needs more";
         return std::nullopt;
     }
+    // After the walk: only the images of drawn materials are decoded, and they count against the same budget.
+    if (error = importMaterialImages(model_, images_, baseColorSources, scene_, *tally_.budget, sink_); !error.empty())
+        return std::nullopt;
 
     if (tally_.zeroAreaTriangles > 0) warn(str(tally_.zeroAreaTriangles) + " zero-area triangles kept (they cast no shadow)");
     if (degenerateInstances_ > 0)
@@ -280,7 +283,7 @@ SceneLoadResult loadBytes(const std::vector<unsigned char>& bytes, const std::st
     tg::Model model;
     tg::TinyGLTF gltf;
     gltf.SetFsCallbacks(tg::FsCallbacks{&fileExists, &expandNothing, &readBudgetedFile, &writeNothing, &access});
-    EncodedImages images{&model, {}};
+    EncodedImages images{&model, &budget, {}, {}};
     gltf.SetImageLoader(&keepEncodedImage, &images);
     std::string err, warn;
     const auto size = static_cast<unsigned int>(bytes.size());

@@ -15,28 +15,20 @@ namespace {
 
 class MaterialImporter {
 public:
-    MaterialImporter(const tg::Model& model, const EncodedImages& images, std::vector<Image>& sceneImages,
-                     const Warn& warn)
-        : model_(model), images_(images), sceneImages_(sceneImages), warn_(warn) {
-        imageCache_.assign(model.images.size(), kNotImported);
-    }
+    MaterialImporter(const tg::Model& model, const Warn& warn) : model_(model), warn_(warn) {}
 
-    Material convert(int index);
+    // The material, and in `source` the glTF image of its base colour texture (-1: none).
+    Material convert(int index, int& source);
 
 private:
-    static constexpr int kNotImported = -2;
-
     void applyTextureTransform(const tg::TextureInfo& info, Material& m, const std::string& where);
-    int importImage(int index, const std::string& where);
 
     const tg::Model& model_;
-    const EncodedImages& images_;
-    std::vector<Image>& sceneImages_;
     const Warn& warn_;
-    std::vector<int> imageCache_;  // glTF image -> Scene image, -1 = unusable
 };
 
-Material MaterialImporter::convert(int index) {
+Material MaterialImporter::convert(int index, int& source) {
+    source = -1;
     const tg::Material& gm = model_.materials[std::size_t(index)];
     Material m;
     m.name = gm.name.empty() ? "material " + str(index) : gm.name;
@@ -69,7 +61,7 @@ Material MaterialImporter::convert(int index) {
     }
     const tg::Texture& tex = model_.textures[std::size_t(info.index)];
     if (tex.source >= 0 && tex.source < int(model_.images.size()))
-        m.baseColorImage = importImage(tex.source, where);
+        source = tex.source;
     else
         warn_(where + ": base colour texture " + str(info.index) +
              " has no usable image source (e.g. only KHR_texture_basisu / EXT_texture_webp); alpha from the factor only");
@@ -79,7 +71,7 @@ Material MaterialImporter::convert(int index) {
         m.wrapRepeat = !(s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE && s.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
     }
     applyTextureTransform(info, m, where);
-    if (m.baseColorImage >= 0 && m.baseColorTexCoord != 0)
+    if (source >= 0 && m.baseColorTexCoord != 0)
         warn_(where + ": base colour texture uses TEXCOORD_" + str(m.baseColorTexCoord) +
              "; only TEXCOORD_0 is loaded and used instead");
     return m;
@@ -120,27 +112,73 @@ void MaterialImporter::applyTextureTransform(const tg::TextureInfo& info, Materi
     m.uvTransform = glm::mat3(transform);
 }
 
-int MaterialImporter::importImage(int index, const std::string& where) {
-    int& cached = imageCache_[std::size_t(index)];
-    if (cached != kNotImported) return cached;
-    const tg::Image& src = model_.images[std::size_t(index)];
-    Image image;
-    std::string why;
-    if (decodeImage(images_, index, image, why)) {
-        cached = int(sceneImages_.size());
-        sceneImages_.push_back(std::move(image));
-        return cached;
-    }
-    const std::string name = !src.uri.empty() ? " '" + src.uri + "'" : !src.name.empty() ? " '" + src.name + "'" : "";
-    warn_(where + ": image " + str(index) + name + " " + why + "; texture ignored (alpha from the factor only)");
-    return cached = -1;
-}
-
 }  // namespace
 
-void importMaterials(const tg::Model& model, const EncodedImages& images, Scene& scene, const Warn& warn) {
-    MaterialImporter importer(model, images, scene.images, warn);
-    for (std::size_t i = 0; i < model.materials.size(); ++i) scene.materials.push_back(importer.convert(int(i)));
+std::vector<int> importMaterials(const tg::Model& model, Scene& scene, const Warn& warn) {
+    MaterialImporter importer(model, warn);
+    std::vector<int> sources(model.materials.size(), -1);
+    for (std::size_t i = 0; i < model.materials.size(); ++i)
+        scene.materials.push_back(importer.convert(int(i), sources[i]));
+    return sources;
+}
+
+std::string importMaterialImages(const tg::Model& model, const EncodedImages& images,
+                                 const std::vector<int>& baseColorSources, Scene& scene, DecodeBudget& budget,
+                                 const Warn& warn) {
+    // The materials drawn: those of the meshes the instances use (a material no drawn primitive names costs nothing).
+    std::vector<char> drawn(scene.materials.size(), 0);
+    for (const Instance& instance : scene.instances) {
+        const int material = scene.meshes[std::size_t(instance.mesh)].material;
+        if (material >= 0 && std::size_t(material) < drawn.size()) drawn[std::size_t(material)] = 1;
+    }
+    // Each image once: sized from its header and counted against the budget before anything is decoded.
+    constexpr int kUnusable = -1, kNotSeen = -2;
+    std::vector<int> sceneImage(model.images.size(), kNotSeen);  // by canonical glTF image
+    std::vector<int> toDecode;                                   // canonical glTF images, in order of first use
+    std::vector<std::size_t> firstUser;                          // by position in toDecode: the first material
+    for (std::size_t m = 0; m < scene.materials.size() && m < baseColorSources.size(); ++m) {
+        if (!drawn[m] || baseColorSources[m] < 0) continue;
+        const int source = images.canonical(baseColorSources[m]);
+        if (source < 0 || std::size_t(source) >= sceneImage.size()) continue;
+        int& slot = sceneImage[std::size_t(source)];
+        if (slot != kNotSeen) continue;
+        std::string why;
+        const std::optional<ImageSize> size = imageSize(images, source, why);
+        if (!size) {
+            warn("material '" + scene.materials[m].name + "': " + imageLabel(model, source) + " " + why +
+                 "; texture ignored (alpha from the factor only)");
+            slot = kUnusable;
+            continue;
+        }
+        if (!budget.take(size->decodedBytes()))
+            return imageLabel(model, source) + " (base colour of material '" + scene.materials[m].name +
+                   "') decodes to " + str(size->width) + "x" + str(size->height) + " RGBA8 = " +
+                   str(size->decodedBytes() >> 20) + " MiB, which passes the scene's " + str(kMaxDecodedBytes >> 20) +
+                   " MiB limit: " + str(budget.used >> 20) + " MiB of buffers, vertex data and images come before it";
+        slot = int(toDecode.size());
+        toDecode.push_back(source);
+        firstUser.push_back(m);
+    }
+    std::vector<int> decodedAs(toDecode.size(), kUnusable);  // by position in toDecode: the Scene image
+    for (std::size_t i = 0; i < toDecode.size(); ++i) {
+        Image image;
+        std::string why;
+        if (decodeImage(images, toDecode[i], image, why)) {
+            decodedAs[i] = int(scene.images.size());
+            scene.images.push_back(std::move(image));
+        } else {
+            warn("material '" + scene.materials[firstUser[i]].name + "': " + imageLabel(model, toDecode[i]) + " " +
+                 why + "; texture ignored (alpha from the factor only)");
+        }
+    }
+    for (std::size_t m = 0; m < scene.materials.size() && m < baseColorSources.size(); ++m) {
+        if (!drawn[m] || baseColorSources[m] < 0) continue;
+        const int source = images.canonical(baseColorSources[m]);
+        if (source < 0 || std::size_t(source) >= sceneImage.size()) continue;
+        const int slot = sceneImage[std::size_t(source)];
+        scene.materials[m].baseColorImage = slot >= 0 ? decodedAs[std::size_t(slot)] : -1;
+    }
+    return {};
 }
 
 }  // namespace shadowlab::gltf

@@ -483,7 +483,8 @@ TEST(GltfLoader, MissingEmptyAndCorruptImagesAreWarnings) {
     for (int i = 0; i < 3; ++i)
         g.j["materials"].push_back({{"alphaMode", "MASK"},
                                     {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 0.25}}, {"baseColorTexture", {{"index", i}}}}}});
-    g.scene({g.node({{"mesh", addQuadMesh(g, {{"material", 2}})}})});
+    g.scene({g.node({{"mesh", addQuadMesh(g, {{"material", 0}})}}), g.node({{"mesh", addQuadMesh(g, {{"material", 1}})}}),
+             g.node({{"mesh", addQuadMesh(g, {{"material", 2}})}})});
     const SceneLoadResult r = loadGltfScene(g.write(dir, "images"));
     ASSERT_TRUE(r.ok()) << r.error;
     const Scene& s = *r.scene;
@@ -495,6 +496,38 @@ TEST(GltfLoader, MissingEmptyAndCorruptImagesAreWarnings) {
     EXPECT_TRUE(anyWarningContains(s, "missing.png")) << allWarnings(s);
     EXPECT_TRUE(anyWarningContains(s, "empty.png")) << allWarnings(s);
     EXPECT_TRUE(anyWarningContains(s, "corrupt.png")) << allWarnings(s);
+}
+
+// Forty image entries naming one file, each through its own texture and drawn material, are one image decoded once;
+// images no drawn material uses (an undrawn material's, one no texture names) are not decoded at all.
+TEST(GltfLoader, AnImageIsDecodedOnceAndOnlyWhenADrawnMaterialUsesIt) {
+    TempDir dir;
+    std::vector<std::uint8_t> rgba;
+    for (int i = 0; i < 8; ++i) rgba.insert(rgba.end(), {1, 2, 3, std::uint8_t(i * 30)});
+    writeTga(dir.file("leaf.tga"), 4, 2, rgba);
+    writeText(dir.file("corrupt.png"), "this is not a png");
+    GltfBuilder g;
+    std::vector<int> roots;
+    for (int i = 0; i < 40; ++i) {
+        g.j["images"].push_back({{"uri", "leaf.tga"}});
+        g.j["textures"].push_back({{"source", i}});
+        g.j["materials"].push_back({{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
+        roots.push_back(g.node({{"mesh", addQuadMesh(g, {{"material", i}})}}));
+    }
+    g.j["images"].push_back({{"uri", "corrupt.png"}});  // image 40: an undrawn material's
+    g.j["textures"].push_back({{"source", 40}});
+    g.j["materials"].push_back({{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 40}}}}}});
+    g.j["images"].push_back({{"uri", "corrupt.png"}, {"name", "no texture names it"}});
+    g.scene(roots);
+    const SceneLoadResult r = loadGltfScene(g.write(dir, "shared"));
+    ASSERT_TRUE(r.ok()) << r.error;
+    const Scene& s = *r.scene;
+    EXPECT_EQ(s.invariantError(), "");
+    ASSERT_EQ(s.images.size(), 1u);
+    EXPECT_EQ(s.images[0].rgba, rgba);
+    for (int i = 0; i < 40; ++i) EXPECT_EQ(s.materials[std::size_t(i)].baseColorImage, 0) << "material " << i;
+    EXPECT_EQ(s.materials[40].baseColorImage, -1);
+    EXPECT_FALSE(anyWarningContains(s, "corrupt.png")) << allWarnings(s);
 }
 
 TEST(GltfLoader, GlbIsRecognisedByItsMagic) {

@@ -341,8 +341,86 @@ TEST(HostileGltf, PngClaimingHundredThousandSquaredSaysItsSize) {
     ASSERT_TRUE(r.ok()) << r.error;
     std::string all;
     for (const auto& w : r.scene->warnings) all += w + "\n";
-    EXPECT_TRUE(contains(all, "is a PNG of 100000x100000 pixels")) << all;
+    EXPECT_TRUE(contains(all, "is 100000x100000 pixels: decoded (RGBA8) it would take 38147.0 MiB, more than the "
+                              "8192x8192 (256.0 MiB) limit for a texture")) << all;
     EXPECT_FALSE(contains(all, "Unknown image format")) << all;
+}
+
+namespace {
+
+// One mesh and node per material, so that every material is drawn (the triangle's accessor shared).
+void drawEachMaterial(json& j, int materials) {
+    j["meshes"] = json::array();
+    j["nodes"] = json::array();
+    j["scenes"][0]["nodes"] = json::array();
+    for (int i = 0; i < materials; ++i) {
+        j["meshes"].push_back({{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"material", i}}}}});
+        j["nodes"].push_back({{"mesh", i}});
+        j["scenes"][0]["nodes"].push_back(i);
+    }
+}
+
+// Image i -> texture i -> MASK material i, drawn.
+void texturedMaterials(json& j, const std::vector<std::string>& uris) {
+    j["images"] = json::array();
+    for (std::size_t i = 0; i < uris.size(); ++i) {
+        j["images"].push_back({{"uri", uris[i]}});
+        j["textures"].push_back({{"source", i}});
+        j["materials"].push_back({{"alphaMode", "MASK"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", i}}}}}});
+    }
+    drawEachMaterial(j, int(uris.size()));
+}
+
+// A PNG signature and IHDR claiming w x h RGBA, no pixels: its header gives the size, decoding it would allocate
+// for that size. `tag` (a byte after IHDR) makes files of the same size differ.
+void writePngHeader(const std::string& path, std::uint32_t w, std::uint32_t h, unsigned char tag = 0) {
+    std::vector<unsigned char> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R'};
+    for (std::uint32_t v : {w, h})
+        for (int shift = 24; shift >= 0; shift -= 8) png.push_back(static_cast<unsigned char>(v >> shift));
+    png.insert(png.end(), {8, 6, 0, 0, 0, 0, 0, 0, 0, tag});
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+}
+
+}  // namespace
+
+// The texture limit holds for every format, read from the header before decoding: a 16000x16000 JPEG (2.45 GB
+// decoded before) and a 9000x9000 TGA are refused with their size, the file tiny.
+TEST(HostileGltf, EveryImageFormatHasTheTextureSizeLimit) {
+    TempDir dir;
+    const unsigned char jpeg[] = {0xFF, 0xD8, 0xFF, 0xC0, 0x00, 0x11, 8, 0x3E, 0x80, 0x3E, 0x80, 3,
+                                  1, 0x11, 0, 2, 0x11, 0, 3, 0x11, 0};  // SOI, SOF0: 16000x16000, 3 components
+    std::ofstream(dir.file("huge.jpg"), std::ios::binary).write(reinterpret_cast<const char*>(jpeg), sizeof jpeg);
+    unsigned char tga[18] = {0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0x28, 0x23, 0x28, 0x23, 32, 0x28};  // 9000x9000 RGBA
+    std::ofstream(dir.file("huge.tga"), std::ios::binary).write(reinterpret_cast<const char*>(tga), sizeof tga);
+    const auto start = std::chrono::steady_clock::now();
+    const SceneLoadResult r = loadText(dir, triangleGltf([](json& j) { texturedMaterials(j, {"huge.jpg", "huge.tga"}); }));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    ASSERT_TRUE(r.ok()) << r.error;
+    const std::string all = joined(r.scene->warnings);
+    EXPECT_TRUE(contains(all, "image 0 'huge.jpg' is 16000x16000 pixels: decoded (RGBA8) it would take 976.6 MiB, "
+                              "more than the 8192x8192 (256.0 MiB) limit for a texture")) << all;
+    EXPECT_TRUE(contains(all, "image 1 'huge.tga' is 9000x9000 pixels")) << all;
+    EXPECT_TRUE(r.scene->images.empty());
+}
+
+// Decoded images count against the scene's limit, from their headers, before any is decoded: five distinct
+// 8192x8192 textures (256 MiB each decoded, 40 bytes each on disk) pass the 1 GiB limit and the scene is refused
+// naming the image, its decoded size and the limit.
+TEST(HostileGltf, DecodedImagesCountAgainstTheSceneLimitBeforeDecoding) {
+    TempDir dir;
+    std::vector<std::string> uris;
+    for (int i = 0; i < 5; ++i) {
+        uris.push_back("big" + std::to_string(i) + ".png");
+        writePngHeader(dir.file(uris.back()), 8192, 8192, static_cast<unsigned char>(i));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const SceneLoadResult r = loadText(dir, triangleGltf([&](json& j) { texturedMaterials(j, uris); }));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+    ASSERT_FALSE(r.ok());
+    EXPECT_TRUE(contains(r.error, dir.file("hostile.gltf") + ": image 3 'big3.png' (base colour of material "
+                                  "'material 3') decodes to 8192x8192 RGBA8 = 256 MiB, which passes the scene's "
+                                  "1024 MiB limit: 768 MiB of buffers, vertex data and images come before it"))
+        << r.error;
 }
 
 TEST(HostileGltf, NegativeByteOffsetsAreRefusedNotReadAsZero) {
