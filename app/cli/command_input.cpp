@@ -91,6 +91,13 @@ std::string checkOutputs(const std::vector<NamedPath>& outputs, const std::vecto
     return {};
 }
 
+std::string checkPictureOutput(const NamedPath& output, const PictureSize& size) {
+    if (output.path.empty()) return {};
+    if (std::string error = pictureSizeError(size); !error.empty())
+        return std::string(output.option) + " " + output.path + ": " + error;
+    return {};
+}
+
 std::string checkMeasureMemory(int width, int height) {
     const double bytes = double(width) * double(height) * kMeasureBytesPerPixel;
     const long pages = ::sysconf(_SC_AVPHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);

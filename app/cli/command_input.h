@@ -1,6 +1,7 @@
 #pragma once
 // What every CLI command does before its work: report a failure, check the view size and output folders, load the
 // scene.
+#include "image/picture_size.h"
 #include "scene/scene_source.h"
 
 #include "settings/settings.h"
@@ -47,6 +48,10 @@ struct NamedPath {
 // the same file as another output (`sweep --json o --csv o`) or as an input (`render --scene mine.glb --out
 // mine.glb`, `measure --preset p.json --overlay p.json`). Empty paths are skipped. "" or the first problem.
 std::string checkOutputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs = {});
+
+// "" or why the picture `output` names cannot be written at `size` (image/picture_size.h: its bytes, the PNG
+// writer's limit), naming the option and the path; checked before the work that makes the picture. "" for no path.
+std::string checkPictureOutput(const NamedPath& output, const PictureSize& size);
 
 // What a measurement holds per view pixel, summed over its buffers (G-buffer readback with double positions and
 // normals, the tool's frame and shadow factor, reference classes and Lambert, boundary search, overlay: ~180

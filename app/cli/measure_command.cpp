@@ -23,6 +23,10 @@ int runMeasure(const MeasureOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    // The pictures' limits first: they hold on any machine, the memory check depends on this one.
+    for (const NamedPath& overlay : {NamedPath{options.overlay, "--overlay"}, NamedPath{options.causeOverlay, "--cause-overlay"}})
+        if (std::string error = checkPictureOutput(overlay, {options.width, options.height, 4, 4, true, {}}); !error.empty())
+            return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkOutputs({{options.json, "--json"}, {options.overlay, "--overlay"},
                                           {options.causeOverlay, "--cause-overlay"}},

@@ -97,6 +97,10 @@ int runMeasureMotion(const MeasureOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
+    // The pictures' limits first: they hold on any machine, the memory check depends on this one.
+    for (const NamedPath& picture : {NamedPath{options.overlay, "--overlay"}, NamedPath{options.framesOut, "--frames-out"}})
+        if (error = checkPictureOutput(picture, {options.width, options.height, 4, 4, true, {}}); !error.empty())
+            return fail(error);
     if (error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     if (error = checkOutputs({{options.json, "--json"}, {options.overlay, "--overlay"}},
                              {{options.scene, "--scene"}, {options.preset, "--preset"}});

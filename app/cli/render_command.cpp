@@ -10,6 +10,7 @@
 #include "gl/gl_errors.h"
 #include "image/image_io.h"
 #include "image/split_view.h"
+#include "light/scene_lights.h"
 #include "scene/scene_source.h"
 #include "settings/preset_io.h"
 #include "settings/settings_fields.h"
@@ -41,6 +42,9 @@ int runRender(const RenderOptions& options) {
                                           {options.compare, "--compare"}});
         !error.empty())
         return fail(error);
+    if (std::string error = checkPictureOutput({options.out, "--out"}, {options.width, options.height, 4, 4, true, {}});
+        !error.empty())
+        return fail(error);
 
     std::optional<Settings> settingsB;
     if (!options.compare.empty()) {
@@ -55,6 +59,27 @@ int runRender(const RenderOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
+
+    // The map files' light and size are known before the render: a point light's faces unfold into a 4 x 3 cross.
+    std::optional<std::size_t> mapLight;
+    if (!options.shadowMapExr.empty() || !options.shadowMapPng.empty()) {
+        // Without --light: the only light that casts, never light 0 of several silently.
+        std::string chooseError;
+        mapLight = chooseOneLight(*settings, scene, options.light,
+                                  options.shadowMapExr.empty() ? "--shadow-map-png" : "--shadow-map", chooseError);
+        if (!mapLight) return fail(chooseError);
+        const LightSettings light = effectiveLights(*settings, scene)[*mapLight];  // a copy: the list is a temporary
+        const int face = light.shadow.resolution;
+        const bool cube = light.type == LightType::Point;
+        const int width = cube ? 4 * face : face, height = cube ? 3 * face : face;
+        const std::string what = "light " + std::to_string(*mapLight) + "'s " +
+                                 (cube ? "six " + std::to_string(face) + "² faces as one cross"
+                                       : std::to_string(face) + "² map") + ", float depth";
+        for (const auto& [output, png] : {std::pair{NamedPath{options.shadowMapPng, "--shadow-map-png"}, true},
+                                          std::pair{NamedPath{options.shadowMapExr, "--shadow-map"}, false}})
+            if (std::string error = checkPictureOutput(output, {width, height, 1, 4, png, what}); !error.empty())
+                return fail(error);
+    }
 
     try {
 #ifndef NDEBUG
@@ -110,14 +135,8 @@ int runRender(const RenderOptions& options) {
         std::cout << "wrote " << options.out << " (" << target.width() << "x" << target.height() << ")\n";
 
         if (!options.shadowMapExr.empty() || !options.shadowMapPng.empty()) {
-            // The chosen light's map; a point light's six faces as an unfolded cross. Without --light: the only
-            // light that casts, never light 0 of several silently.
-            std::string chooseError;
-            const std::optional<std::size_t> chosen = chooseOneLight(
-                *settings, scene, options.light, options.shadowMapExr.empty() ? "--shadow-map-png" : "--shadow-map",
-                chooseError);
-            if (!chosen) return fail(chooseError);
-            const std::size_t light = *chosen;
+            // The chosen light's map; a point light's six faces as an unfolded cross.
+            const std::size_t light = *mapLight;
             const ShadowMap* map = renderer.viewMap(light, -1);
             std::array<const ShadowMap*, 6> faces{};
             for (int f = 0; f < 6; ++f) faces[std::size_t(f)] = renderer.viewMap(light, f);

@@ -1,6 +1,7 @@
 #include "frame/screenshot.h"
 
 #include "image/image_io.h"
+#include "image/picture_size.h"
 #include "settings/user_config.h"
 #include "shadow/shadow_map_files.h"
 
@@ -65,6 +66,14 @@ ScreenshotResult writePicture(const std::vector<std::uint8_t>& pixels, int width
     const std::string failed = "screenshot not saved: ";
     if (width < 1 || height < 1 || pixels.size() < std::size_t(width) * std::size_t(height) * 4) {
         result.error = failed + "the view has not been rendered yet";
+        return result;
+    }
+    // Sizes first, before any file is reserved: the view and, when asked, the map as float depth.
+    std::string tooLarge = pictureSizeError({width, height, 4, 4, true, "the view"});
+    if (tooLarge.empty() && shadowMap && shadowMap->valid())
+        tooLarge = pictureSizeError({shadowMap->resolution(), shadowMap->resolution(), 1, 4, true, "the shadow map"});
+    if (!tooLarge.empty()) {
+        result.error = failed + tooLarge;
         return result;
     }
     const fs::path dir = folder.empty() ? fs::path(".") : fs::path(folder);

@@ -1,5 +1,6 @@
 #include "image/image_io.h"
 
+#include "image/picture_size.h"
 #include "settings/atomic_file.h"
 
 #include <ImfChannelList.h>
@@ -83,9 +84,8 @@ std::string writePng(const std::string& path, int width, int height, int channel
     if (width <= 0 || height <= 0) return failed + "empty image (" + std::to_string(width) + "x" + std::to_string(height) + ")";
     if (channels < 1 || channels > 4) return failed + "unsupported channel count " + std::to_string(channels);
     if (!pixels) return failed + "no pixel data";
-    // stb computes sizes in int, filtered rows included.
-    if ((static_cast<long long>(width) * channels + 1) * height > INT_MAX / 2)
-        return failed + "image too large for the PNG writer";
+    if (std::string tooLarge = pictureSizeError({width, height, channels, channels, true, {}}); !tooLarge.empty())
+        return failed + tooLarge;
     // Flip by handing stb the last row and a negative stride: no copy of the image.
     const int rowBytes = width * channels;
     const std::uint8_t* first = flipVertically ? pixels + static_cast<std::size_t>(height - 1) * rowBytes : pixels;
