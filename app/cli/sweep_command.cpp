@@ -34,6 +34,7 @@ void printRow(std::ostream& out, std::size_t labelWidth, const std::vector<std::
 }
 
 std::vector<std::string> rowCells(const SweepPointResult& p) {
+    if (p.failed()) return {p.label, "failed: " + p.error};
     const AccuracyNumbers& n = p.accuracy;
     return {p.label + (p.onFront ? " *" : ""),
             std::to_string(p.resolution) + " " + depthFormatName(p.format),
@@ -49,6 +50,22 @@ std::vector<std::string> rowCells(const SweepPointResult& p) {
             formatted("%.2f", n.edgeErrorP95Texels),
             formatted("%.3g", n.edgeErrorP95World),
             formatted("%.1f", n.edgeErrorP95ScreenPixels)};
+}
+
+// --json and --csv from the sweep as it stands (each rewritten whole, atomically): "" or why not.
+std::string writeTables(const SweepOptions& options, const SweepResult& result) {
+    if (!options.json.empty()) {
+        nlohmann::json doc = sweepToJson(result);
+        doc["scene"] = options.scene;
+        doc["preset"] = options.preset;
+        const std::string text = doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+        if (std::string error = writeFileAtomically(options.json, text); !error.empty())
+            return "--json " + options.json + ": " + error;
+    }
+    if (!options.csv.empty())
+        if (std::string error = writeFileAtomically(options.csv, sweepToCsv(result)); !error.empty())
+            return "--csv " + options.csv + ": " + error;
+    return {};
 }
 
 }  // namespace
@@ -69,6 +86,9 @@ int runSweep(const SweepOptions& options) {
                                          {{options.scene, "--scene"}, {options.preset, "--preset"}});
         !error.empty())
         return fail(error);
+    if (std::string error = checkPictureOutput({options.chart, "--chart"}, {options.chartWidth, options.chartHeight, 4, 4, true, {}});
+        !error.empty())
+        return fail(error);
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
@@ -85,12 +105,21 @@ int runSweep(const SweepOptions& options) {
         run.width = options.width;
         run.height = options.height;
         run.frames = options.frames;
+        // Each finished point is in the files at once: a point that fails later, or a kill, loses none before it.
+        std::string writeError;
+        run.onResult = [&](const SweepResult& soFar) {
+            if (writeError.empty()) writeError = writeTables(options, soFar);
+        };
         const SweepResult result = shadowlab::runSweep(
             scene, *base, plan, run, [](const SweepPointResult& p, std::size_t done, std::size_t total) {
-                std::fprintf(stderr, "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  main %.3f ms  wrong %.3f %%%s\n",
-                             done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.mainMs,
-                             p.accuracy.wrongPercent, p.referenceReused ? "" : "  (reference computed)");
+                if (p.failed())
+                    std::fprintf(stderr, "[%zu/%zu] %-24s failed: %s\n", done, total, p.label.c_str(), p.error.c_str());
+                else
+                    std::fprintf(stderr, "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  main %.3f ms  wrong %.3f %%%s\n",
+                                 done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.mainMs,
+                                 p.accuracy.wrongPercent, p.referenceReused ? "" : "  (reference computed)");
             });
+        if (!writeError.empty()) return fail(writeError);
         if (!result.ok) return fail(result.error);
 
         const bool cpu = result.softwareRasterizer();
@@ -152,20 +181,9 @@ int runSweep(const SweepOptions& options) {
         for (const SweepPointResult& p : result.points)
             for (const std::string& w : p.warnings) std::cerr << "warning: " << p.label << ": " << w << "\n";
 
-        if (!options.json.empty()) {
-            nlohmann::json doc = sweepToJson(result);
-            doc["scene"] = options.scene;
-            doc["preset"] = options.preset;
-            const std::string text = doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-            if (std::string error = writeFileAtomically(options.json, text); !error.empty())
-                return fail("--json " + options.json + ": " + error);
-            std::cout << "wrote " << options.json << "\n";
-        }
-        if (!options.csv.empty()) {
-            if (std::string error = writeFileAtomically(options.csv, sweepToCsv(result)); !error.empty())
-                return fail("--csv " + options.csv + ": " + error);
-            std::cout << "wrote " << options.csv << "\n";
-        }
+        if (std::string error = writeTables(options, result); !error.empty()) return fail(error);
+        for (const std::string& path : {options.json, options.csv})
+            if (!path.empty()) std::cout << "wrote " << path << "\n";
         if (!options.chart.empty()) {
             const PlotImage image = drawLinePlot(sweepChart(result), options.chartWidth, options.chartHeight);
             if (std::string error = writePng(options.chart, image.width, image.height, 4, image.rgba.data(), false);
@@ -173,6 +191,13 @@ int runSweep(const SweepOptions& options) {
                 return fail("--chart " + options.chart + ": " + error);
             std::cout << "wrote " << options.chart << "\n";
         }
+        const auto failed = std::count_if(result.points.begin(), result.points.end(),
+                                          [](const SweepPointResult& p) { return p.failed(); });
+        if (failed > 0 || (result.preset && result.preset->failed()))
+            return fail(std::to_string(failed) + " of " + std::to_string(result.points.size()) +
+                        " points failed (their reasons are in the table" +
+                        (options.json.empty() && options.csv.empty() ? "" : " and the files") +
+                        "); the others are kept");
     } catch (const std::exception& e) {
         return fail(e.what());
     }

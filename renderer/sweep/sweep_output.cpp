@@ -43,6 +43,7 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
             {"referenceReused", p.referenceReused},
             {"measureMs", p.measureMs},
             {"warnings", p.warnings},
+            {"error", p.error},
             {"settings", presetToJson(p.settings)}};
 }
 
@@ -95,7 +96,7 @@ std::string sweepToCsv(const SweepResult& result) {
     std::ostringstream out;
     out << "label,preset,paretoFront,shadowPassMs,mainPassMs,costMs,bareDrawMs,shadowPassOverBareDraw,resolution,"
            "depthFormat,shadowMapBytes,wrongPixelsPercent,meanError,acnePercent,acneSeverity,leakPercent,"
-           "edgeErrorP95Texels,edgeErrorP95World,edgeErrorP95ScreenPixels,kTexels,coarseMap";
+           "edgeErrorP95Texels,edgeErrorP95World,edgeErrorP95ScreenPixels,kTexels,coarseMap,error";
     // A column per key of the settings with the most lights (a light axis may add lights).
     const Settings* widest = nullptr;
     for (const SweepPointResult& p : result.points)
@@ -111,7 +112,7 @@ std::string sweepToCsv(const SweepResult& result) {
             << "," << depthFormatName(p.format) << "," << p.mapBytes << "," << n.wrongPercent << "," << n.meanError
             << "," << n.acnePercent << "," << n.acneSeverity << "," << n.leakPercent << "," << n.edgeErrorP95Texels
             << "," << n.edgeErrorP95World << "," << n.edgeErrorP95ScreenPixels << "," << p.kTexels << ","
-            << (p.coarseMap ? 1 : 0);
+            << (p.coarseMap ? 1 : 0) << "," << csvField(p.error);
         for (const SettingsField* field : columns) {
             const nlohmann::json value = field->get(p.settings);
             out << "," << csvField(value.is_string() ? value.get<std::string>() : value.dump());
@@ -143,6 +144,7 @@ LinePlot sweepChart(const SweepResult& result) {
     points.label = "points (axis values)";
     points.color = {70, 110, 200, 255};
     for (const SweepPointResult& p : result.points) {
+        if (p.failed()) continue;  // no numbers to place
         points.x.push_back(p.costMs);
         points.y.push_back(p.accuracy.wrongPercent);
         points.labels.push_back(p.label);
@@ -156,7 +158,7 @@ LinePlot sweepChart(const SweepResult& result) {
     const SweepPointResult* base = result.presetPoint < result.points.size() ? &result.points[result.presetPoint]
                                    : extra                                  ? &*result.preset
                                                                             : nullptr;
-    if (base) {
+    if (base && !base->failed()) {
         preset.x.push_back(base->costMs);
         preset.y.push_back(base->accuracy.wrongPercent);
         preset.labels.push_back(extra ? base->label : "");
@@ -171,6 +173,7 @@ std::size_t sweepPointAt(const SweepResult& result, int width, int height, doubl
     std::size_t best = result.points.size();
     double bestDistance = radius;
     for (std::size_t i = 0; i < result.points.size(); ++i) {
+        if (result.points[i].failed()) continue;  // not drawn
         const double d = std::hypot(frame.px(result.points[i].costMs) - x,
                                     frame.py(result.points[i].accuracy.wrongPercent) - y);
         if (d <= bestDistance) best = i, bestDistance = d;

@@ -1,6 +1,7 @@
 #include "sweep/sweep_runner.h"
 
 #include "frame/timed_frames.h"
+#include "accuracy/light_isolation.h"
 #include "settings/settings_fields.h"
 #include "sweep/pareto_front.h"
 
@@ -30,11 +31,16 @@ std::string frontStepText(const SweepPointResult& from, const SweepPointResult& 
 
 void markParetoFront(SweepResult& result) {
     std::vector<double> cost, error;
-    for (const SweepPointResult& p : result.points) {
+    std::vector<std::size_t> measured;  // the points with numbers; the front is over them only
+    for (std::size_t i = 0; i < result.points.size(); ++i) {
+        const SweepPointResult& p = result.points[i];
+        if (p.failed()) continue;
+        measured.push_back(i);
         cost.push_back(p.costMs);
         error.push_back(p.accuracy.wrongPercent);
     }
     result.front = paretoFront(cost, error);
+    for (std::size_t& k : result.front) k = measured[k];
     for (SweepPointResult& p : result.points) p.onFront = false;
     for (std::size_t i : result.front) result.points[i].onFront = true;
 }
@@ -77,12 +83,11 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
     result.presetPoint = plan.basePoint;
     const double aspect = double(options.width) / double(options.height);
 
-    auto runPoint = [&](const SweepPoint& point, std::size_t index, std::size_t done) -> std::optional<std::string> {
-        SweepPointResult r;
-        r.index = index;
-        r.values = point.values;
-        r.label = index < plan.points.size() ? point.label() : "preset (" + point.label() + ")";
-        r.settings = point.settings;
+    // Times and measures one point into r: nullopt when cancelled, else "" or why it failed.
+    auto measurePoint = [&](const SweepPoint& point, SweepPointResult& r, std::size_t done) -> std::optional<std::string> {
+        if (castingLights(point.settings, scene).empty())
+            return std::string("no light casts a shadow with these values (every light is off or has "
+                               "castsShadows=false): nothing to time or measure");
         if (progress) {
             progress->base = float(done) / float(total);
             progress->span = 1.0f / float(total);
@@ -93,7 +98,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
                                   ? *options.camera
                                   : cameraFor(point.settings.camera, scene, aspect);
         const TimedFrames timed = timeFrames(renderer, scene, point.settings, camera, target, options.frames);
-        if (!timed.ok) return "point " + r.label + ": " + timed.error;
+        if (!timed.ok) return timed.error;
         result.timingSource = timed.timingSource;
         r.warnings = timed.last.warnings;
         r.shadowMs = timed.shadowMs;
@@ -132,7 +137,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         const AccuracyReport report =
             meter.measure(scene, point.settings, camera, options.width, options.height, progress);
         if (report.cancelled) return std::nullopt;
-        if (!report.ok) return "point " + r.label + ": " + report.error;
+        if (!report.ok) return report.error;
         r.measureMs = msSince(measureStart);
         if (!report.cost.referenceReused) {
             result.referenceMs += report.cost.gbufferMs + report.cost.traceMs + report.cost.bvhBuildMs;
@@ -143,13 +148,55 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         r.kTexels = report.kTexels;
         r.coarseMap = !report.coarseMapWarning.empty();
         for (const std::string& w : report.warnings) r.warnings.push_back(w);
-        if (index < plan.points.size())
-            measured[index] = r;
-        else
-            result.preset = r;
-        if (onPoint) onPoint(r, done + 1, total);
         return "";
     };
+
+    // The sweep so far, for options.onResult: the finished points in plan order and their front.
+    auto soFar = [&] {
+        SweepResult partial = result;
+        if (plan.basePoint < plan.points.size()) partial.presetPoint = plan.points.size();  // until its point is done
+        for (const std::optional<SweepPointResult>& p : measured)
+            if (p) {
+                if (p->index == plan.basePoint) partial.presetPoint = partial.points.size();
+                partial.points.push_back(*p);
+            }
+        markParetoFront(partial);
+        partial.wallMs = msSince(start);
+        partial.ok = true;
+        return partial;
+    };
+    // A finished point, measured or failed: kept, reported, and the sweep so far handed on.
+    auto finish = [&](SweepPointResult& r, std::size_t done) {
+        if (r.index < plan.points.size())
+            measured[r.index] = r;
+        else
+            result.preset = r;
+        if (options.onResult) options.onResult(soFar());  // first: a point reported done is in the files
+        if (onPoint) onPoint(r, done + 1, total);
+    };
+
+    // nullopt: cancelled; else "" or why the point failed (it is kept with its error).
+    auto runPoint = [&](const SweepPoint& point, std::size_t index, std::size_t done) -> std::optional<std::string> {
+        SweepPointResult r;
+        r.index = index;
+        r.values = point.values;
+        r.label = index < plan.points.size() ? point.label() : "preset (" + point.label() + ")";
+        r.settings = point.settings;
+        const std::optional<std::string> outcome = measurePoint(point, r, done);
+        if (!outcome) return outcome;
+        if (!outcome->empty()) {  // kept with its reason only: numbers from a half-done point would mislead
+            SweepPointResult failed;
+            failed.index = r.index;
+            failed.values = r.values;
+            failed.label = r.label;
+            failed.settings = r.settings;
+            failed.error = *outcome;
+            r = std::move(failed);
+        }
+        finish(r, done);
+        return outcome;
+    };
+
 
     // Run order: grouped by the values of the axes the reference depends on (light and camera), plan order within.
     std::vector<std::size_t> order(plan.points.size());
@@ -186,7 +233,6 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
             result.cancelled = true;
             return fail("cancelled");
         }
-        if (!outcome->empty()) return fail(*outcome);
     }
     if (presetExtra) {
         SweepPoint preset;
@@ -197,10 +243,12 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
             result.cancelled = true;
             return fail("cancelled");
         }
-        if (!outcome->empty()) return fail(*outcome);
     }
 
     for (std::optional<SweepPointResult>& p : measured) result.points.push_back(std::move(*p));
+    if (std::all_of(result.points.begin(), result.points.end(), [](const SweepPointResult& p) { return p.failed(); }))
+        return fail("every point failed; the first, " + result.points.front().label + ": " +
+                    result.points.front().error);
     markParetoFront(result);
     result.wallMs = msSince(start);
     if (progress) {

@@ -41,6 +41,9 @@ struct SweepPointResult {
     bool referenceReused = false;     // the reference came from the sweep's cache
     double measureMs = 0.0;
     bool onFront = false;
+
+    std::string error;  // not empty: the point failed, and why; its numbers are unset, it is on no front or chart
+    bool failed() const { return !error.empty(); }
 };
 
 struct SweepResult {
@@ -71,18 +74,23 @@ struct SweepRunOptions {
     // The view to time and measure (the editor's orbit camera); unset: each point's camera settings (auto-framed
     // unless they say otherwise). A point whose camera.* keys differ from the base's always uses its own.
     std::optional<Camera> camera;
+    // Called after each point (a failed one too) with the sweep so far: the finished points in plan order, the
+    // front among them. The CLI rewrites its JSON and CSV from it, so a point that fails later loses nothing.
+    std::function<void(const SweepResult& soFar)> onResult;
 };
 
 // Called after each point (and the preset) with the point and how many of the total are done.
 using SweepPointCallback = std::function<void(const SweepPointResult& point, std::size_t done, std::size_t total)>;
 
-// Runs the plan (which must have no error). Points that share the reference (the same light.* and camera.* values)
+// Runs the plan (which must have no error). A point that fails (no light casts with its values, a GL error, a
+// measurement that cannot be made) is kept with its error and the sweep goes on; the result fails only when every
+// point did, or on cancel. Points that share the reference (the same light.* and camera.* values)
 // run one after another, so an axis over the light recomputes the reference once per light, not once per point. Every point's map size is checked against GL_MAX_TEXTURE_SIZE before any
 // work. `progress` (optional) gets the fraction and stage and carries a cancel request.
 SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
                      const SweepPointCallback& onPoint = {}, AccuracyProgress* progress = nullptr);
 
-// Sets result.front and each point's onFront from the points so far (a partial sweep's chart draws it live).
+// Sets result.front and each point's onFront from the points so far (failed points excluded) (a partial sweep's chart draws it live).
 void markParetoFront(SweepResult& result);
 
 // What the cost of going from one front point to the next buys: "+0.8 ms: wrong pixels 2.1 % -> 0.9 %".
