@@ -191,10 +191,14 @@ int runSweep(const SweepOptions& options) {
                 return fail("--chart " + options.chart + ": " + error);
             std::cout << "wrote " << options.chart << "\n";
         }
-        const auto failed = std::count_if(result.points.begin(), result.points.end(),
-                                          [](const SweepPointResult& p) { return p.failed(); });
-        if (failed > 0 || (result.preset && result.preset->failed()))
-            return fail(std::to_string(failed) + " of " + std::to_string(result.points.size()) +
+        // The preset's own row counts as a point here: it ran like one.
+        const std::size_t ran = result.points.size() + (result.preset ? 1 : 0);
+        const std::size_t failed =
+            std::size_t(std::count_if(result.points.begin(), result.points.end(),
+                                      [](const SweepPointResult& p) { return p.failed(); })) +
+            (result.preset && result.preset->failed() ? 1 : 0);
+        if (failed > 0)
+            return fail(std::to_string(failed) + " of " + std::to_string(ran) +
                         " points failed (their reasons are in the table" +
                         (options.json.empty() && options.csv.empty() ? "" : " and the files") +
                         "); the others are kept");

@@ -218,5 +218,42 @@ TEST_F(SweepTest, AMapAboveTheGpuLimitIsRefusedBeforeAnyWork) {
     EXPECT_EQ(calls, 0u) << "no point was run";
 }
 
+// A point that fails is kept with its reason and the sweep goes on; after each point the sweep so far (plan order,
+// failed points included, the front among the measured) is handed on for the files.
+TEST_F(SweepTest, AFailingPointIsKeptWithItsReasonAndTheOthersAreMeasured) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    const SweepPlan plan = planSweep(base, {"lights.0.castsShadows=false,true", "shadow.resolution=64,256"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 64;
+    options.height = 36;
+    options.frames = 1;
+    options.measurePreset = false;
+    std::vector<std::size_t> sizes;
+    options.onResult = [&](const SweepResult& soFar) {
+        sizes.push_back(soFar.points.size());
+        for (std::size_t k : soFar.front) EXPECT_FALSE(soFar.points[k].failed()) << soFar.points[k].label;
+    };
+    const SweepResult r = runSweep(scene, base, plan, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(sizes, (std::vector<std::size_t>{1, 2, 3, 4}));
+    ASSERT_EQ(r.points.size(), 4u);
+    for (const SweepPointResult& p : r.points) {
+        const bool casts = p.values[0] == "true";
+        EXPECT_EQ(p.failed(), !casts) << p.label << ": " << p.error;
+        if (casts) {
+            EXPECT_GT(p.costMs, 0.0) << p.label;
+        } else {
+            EXPECT_NE(p.error.find("no light casts a shadow with these values"), std::string::npos) << p.error;
+            EXPECT_EQ(p.costMs, 0.0);
+            EXPECT_FALSE(p.onFront);
+        }
+    }
+    EXPECT_FALSE(r.front.empty());
+    const LinePlot chart = sweepChart(r);
+    EXPECT_EQ(chart.points[0].x.size(), 2u) << "failed points are not drawn";
+}
+
 }  // namespace
 }  // namespace shadowlab::test

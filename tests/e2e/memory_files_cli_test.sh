@@ -60,7 +60,7 @@ sweep=("$SHADOWLAB" sweep --scene builtin:fence --width 64 --height 48)
 "${sweep[@]}" --frames 1 --axis lights.0.castsShadows=true,false --axis shadow.resolution=64,128 --json f.json --csv f.csv \
   >f.out 2>f.err
 rc=$?
-[ $rc -ne 0 ] && grep -q "error: 2 of 4 points failed" f.err && pass "sweep with failing points: exit $rc, said" \
+[ $rc -ne 0 ] && grep -q "error: 2 of 5 points failed" f.err && pass "sweep with failing points: exit $rc, said" \
   || fail "sweep exit $rc: $(tail -2 f.err)"
 grep -q "^\[3/5\] false 64 *failed: no light casts a shadow with these values" f.err \
   && pass "a failed point's progress line gives its reason" || fail "progress: $(cat f.err)"

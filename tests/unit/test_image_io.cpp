@@ -1,5 +1,6 @@
 // Image files: PNG and EXR depth round trips (with the GL bottom-up flip), exact float depth, clear errors.
 #include "image/image_io.h"
+#include "image/picture_size.h"
 
 #include <gtest/gtest.h>
 
@@ -128,4 +129,24 @@ TEST(ImageIo, ExrErrorsAreClear) {
     std::ofstream(dir / "garbage.exr") << "not an exr";
     EXPECT_FALSE(readExrDepth(dir / "garbage.exr", &error));
     EXPECT_TRUE(contains(error, "garbage.exr")) << error;
+}
+
+// The picture limits, as figures: stb_image_write's PNG encoder holds (width x channels + 1) x height bytes in an int
+// that must stay under INT_MAX / 2 (16384x16383 RGBA fits, 16384x16384 is 16 KiB over), and a picture's pixels take
+// at most 1 GiB (a point light's 8192² faces as one 32768x24576 float cross take 3 GiB).
+TEST(PictureSize, ThePngWriterLimitAndThePictureLimitAreSaidWithTheirFigures) {
+    EXPECT_EQ(pictureSizeError({16384, 16383, 4, 4, true, {}}), "");
+    EXPECT_EQ(pictureSizeError({16384, 16384, 4, 4, true, {}}),
+              "a 16384x16384 PNG of 4 channels needs 1073758208 bytes of encoder rows ((width x channels + 1) x "
+              "height), more than the PNG writer's limit of 1073741823 (it counts in int); at this width at most "
+              "16383 rows fit");
+    EXPECT_EQ(pictureSizeError({16384, 16384, 4, 4, false, {}}), "");  // an EXR has no PNG encoder
+    EXPECT_EQ(pictureSizeError({32768, 24576, 1, 4, true, "a cross"}),
+              "a 32768x24576 picture (a cross) needs 3221225472 bytes (4 a pixel), more than the limit of 1073741824 "
+              "bytes for a picture (16384x16384 RGBA)");
+    EXPECT_EQ(pictureSizeError({16384, 12288, 1, 4, true, {}}), "");  // 4096² faces: a 16384x12288 cross
+    // writePng says the same before it reads a pixel.
+    const std::uint8_t pixel[4] = {};
+    EXPECT_NE(writePng("/nonexistent/never.png", 16384, 16384, 4, pixel, false).find("1073758208 bytes of encoder rows"),
+              std::string::npos);
 }
