@@ -45,8 +45,9 @@ struct ImageSize {
 // used.
 std::optional<ImageSize> imageSize(const EncodedImages& images, int index, std::string& why);
 
-// glTF image `index` as RGBA8 (gray, gray+alpha, RGB, 16-bit and float sources are converted). Check imageSize
-// first: this allocates what the header says. false + why when it cannot be used.
+// glTF image `index` as RGBA8 (gray, gray+alpha, RGB, 16-bit and float sources are converted). It refuses what
+// imageSize refuses; the caller counts imageSize's decodedBytes against the scene's budget first, since this
+// allocates them. false + why when it cannot be used.
 bool decodeImage(const EncodedImages& images, int index, Image& out, std::string& why);
 
 // "image 3 'leaves.png'" (the uri, else the name) for messages.

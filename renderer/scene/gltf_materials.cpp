@@ -133,14 +133,14 @@ std::string importMaterialImages(const tg::Model& model, const EncodedImages& im
     }
     // Each image once: sized from its header and counted against the budget before anything is decoded.
     constexpr int kUnusable = -1, kNotSeen = -2;
-    std::vector<int> sceneImage(model.images.size(), kNotSeen);  // by canonical glTF image
-    std::vector<int> toDecode;                                   // canonical glTF images, in order of first use
-    std::vector<std::size_t> firstUser;                          // by position in toDecode: the first material
+    std::vector<int> planned(model.images.size(), kNotSeen);  // by canonical glTF image: its place in toDecode
+    std::vector<int> toDecode;                                // canonical glTF images, in order of first use
+    std::vector<std::size_t> firstUser;                       // by place in toDecode: the first material using it
     for (std::size_t m = 0; m < scene.materials.size() && m < baseColorSources.size(); ++m) {
         if (!drawn[m] || baseColorSources[m] < 0) continue;
         const int source = images.canonical(baseColorSources[m]);
-        if (source < 0 || std::size_t(source) >= sceneImage.size()) continue;
-        int& slot = sceneImage[std::size_t(source)];
+        if (source < 0 || std::size_t(source) >= planned.size()) continue;
+        int& slot = planned[std::size_t(source)];
         if (slot != kNotSeen) continue;
         std::string why;
         const std::optional<ImageSize> size = imageSize(images, source, why);
@@ -174,8 +174,8 @@ std::string importMaterialImages(const tg::Model& model, const EncodedImages& im
     for (std::size_t m = 0; m < scene.materials.size() && m < baseColorSources.size(); ++m) {
         if (!drawn[m] || baseColorSources[m] < 0) continue;
         const int source = images.canonical(baseColorSources[m]);
-        if (source < 0 || std::size_t(source) >= sceneImage.size()) continue;
-        const int slot = sceneImage[std::size_t(source)];
+        if (source < 0 || std::size_t(source) >= planned.size()) continue;
+        const int slot = planned[std::size_t(source)];
         scene.materials[m].baseColorImage = slot >= 0 ? decodedAs[std::size_t(slot)] : -1;
     }
     return {};
