@@ -3,7 +3,8 @@
 # view, 2 frames a row, small maps). Every time is present, finite and positive; the JSON describes the lights it
 # timed: their count, index and type from the preset, a point light's six views, each view's light; map memory is
 # every light's maps at the row's resolution; bench --lights moves the spot it says and renders only its view, and the
-# main-pass rows count 1, 2, 4 shadowed lights; a preset without lights has no light and no shadow time.
+# main-pass rows count 1, 2, 4 shadowed lights; a scene's own lights (useSceneLights) are the ones listed and sized; a
+# preset without lights has no light and no shadow time.
 # Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
 set -uo pipefail
 : "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
@@ -21,6 +22,9 @@ python3 - "$SOURCE_DIR/presets/courtyard.json" <<'PY'
 import json, sys
 p = json.load(open(sys.argv[1])); p["lights"] = []; json.dump(p, open("none.json", "w"))
 PY
+# The scene's own lights (useSceneLights): the JSON lists them and every row's resolution applies to their maps.
+expect_ok bench-scene "$SHADOWLAB" bench --scene builtin:courtyard --preset default --set useSceneLights=true \
+  --width 64 --height 36 --frames 2 --resolutions 32 64 --filters point --json scene-lights.json
 expect_ok bench-none "$SHADOWLAB" bench --scene builtin:courtyard --preset ./none.json --width 64 --height 36 \
   --frames 2 --resolutions 64 --filters point --json no-lights.json
 
@@ -83,6 +87,14 @@ for r in rows:
         positive(r, key, f"mainPassByShadowedLights[{r['lights']}]")
     check(math.isfinite(r["shadowTapsMs"]) and abs(r["shadowTapsMs"] - (r["shadowedMainMs"] - r["unshadowedMainMs"])) < 1e-9,
           f"shadowTapsMs {r['shadowTapsMs']} is not shadowed - unshadowed")
+
+sl = json.load(open("scene-lights.json"))
+check([(x.get("index"), x.get("type"), x.get("views")) for x in sl.get("lights") or []] ==
+      [(0, "directional", 1), (1, "spot", 1), (2, "spot", 1), (3, "point", 6)], f"scene lights: {sl.get('lights')}")
+for r in sl["rows"]:
+    want = 9 * r["resolution"] ** 2 * 4 / 2**20
+    check(abs(r["shadowMapMiB"] - want) < 1e-9, f"scene-light row {r['resolution']}: shadowMapMiB {r['shadowMapMiB']}, "
+          f"the scene's 9 views at {r['resolution']}^2 are {want} MiB")
 
 n = json.load(open("no-lights.json"))
 check(n.get("lights") == [], f"no-light bench: lights {n.get('lights')}")
