@@ -67,7 +67,8 @@ std::vector<WindowTriangle> windowTriangles(const DepthPassInput& input) {
             std::vector<ClipVertex> polygon;
             for (std::uint32_t v = 0; v < 3; ++v) {
                 const std::uint32_t index = input.indices[draw.firstIndex + k + v];
-                const glm::dvec4 p(glm::dvec3(input.positions[std::size_t(std::int64_t(index) + draw.baseVertex)]), 1.0);
+                const std::size_t vertex = std::size_t(std::int64_t(index) + draw.baseVertex);
+                const glm::dvec4 p(glm::dvec3(input.positions[vertex]), 1.0);
                 const glm::dvec4 world = glm::dmat4(draw.model) * p;
                 const glm::dvec4 worldError = kDot4 * (absolute(glm::dmat4(draw.model)) * glm::abs(p));
                 polygon.push_back({viewProjection * world,
@@ -131,83 +132,82 @@ RoundingBound rasterRoundingBound(const DepthPassInput& input, const std::vector
     const DepthFormat format = input.format == VK_FORMAT_D16_UNORM ? DepthFormat::D16 : DepthFormat::D32F;
     const double towardFar = input.reversedZ ? -1.0 : 1.0;
     const double slopeFactor = double(bias.slopeScaledDepthBias);
-    const double undeterminedBias = slopeFactor == 0.0 ? 0.0 : bias.depthBiasClamp > 0.0f ? double(bias.depthBiasClamp) : -1.0;
+    const double undeterminedBias =
+        slopeFactor == 0.0 ? 0.0 : bias.depthBiasClamp > 0.0f ? double(bias.depthBiasClamp) : -1.0;
     const std::size_t texels = std::size_t(res) * std::size_t(res);
     RoundingBound out;
     out.depth.assign(texels, -1.0);
     std::vector<double> nearest(texels, std::numeric_limits<double>::infinity());  // |written - gl| of the chosen one
 
     for (const WindowTriangle& t : windowTriangles(input)) {
-        {
-            const glm::dmat2 edges(t.p[1] - t.p[0], t.p[2] - t.p[0]);  // columns e1, e2
-            const double det = glm::determinant(edges);
-            if (!(std::abs(det) > 0.0)) continue;  // zero area: never rasterized
-            const std::optional<glm::dvec2> gradient = windowDepthGradient(
-                {t.p[0], t.z[0]}, {t.p[1], t.z[1]}, {t.p[2], t.z[2]});
-            if (!gradient) continue;
-            const glm::dvec2 g = *gradient;
-            const glm::dmat2 inverse = glm::inverse(edges);
-            const double offset = towardFar * polygonOffsetDepth(bias, format, std::max({t.z[0], t.z[1], t.z[2]}),
-                                                                 std::max(std::abs(g.x), std::abs(g.y)));
-            const double kappa = frobenius(inverse) * 4.0 * grid;
-            const bool determined = kappa < 0.5;
-            // Each vertex's depth may differ by dz between the two (float products and division, bounded above): the
-            // plane moves by up to max dz x the barycentric weights' sum at c, its gradient by ||E^-1|| |(dz1 + dz0,
-            // dz2 + dz0)|.
-            const double depthGradientChange =
-                frobenius(inverse) * std::hypot(t.dz[0] + t.dz[1], t.dz[0] + t.dz[2]);
-            const double vertexDepth = std::max({t.dz[0], t.dz[1], t.dz[2]});
-            const double gradientChange =
-                determined ? glm::length(g) * kappa / (1.0 - kappa) + depthGradientChange : 0.0;
-            const double slopeTerm = slopeFactor * gradientChange;
+        const glm::dmat2 edges(t.p[1] - t.p[0], t.p[2] - t.p[0]);  // columns e1, e2
+        const double det = glm::determinant(edges);
+        if (!(std::abs(det) > 0.0)) continue;  // zero area: never rasterized
+        const std::optional<glm::dvec2> gradient = windowDepthGradient(
+            {t.p[0], t.z[0]}, {t.p[1], t.z[1]}, {t.p[2], t.z[2]});
+        if (!gradient) continue;
+        const glm::dvec2 g = *gradient;
+        const glm::dmat2 inverse = glm::inverse(edges);
+        const double offset = towardFar * polygonOffsetDepth(bias, format, std::max({t.z[0], t.z[1], t.z[2]}),
+                                                             std::max(std::abs(g.x), std::abs(g.y)));
+        const double kappa = frobenius(inverse) * 4.0 * grid;
+        const bool determined = kappa < 0.5;
+        // Each vertex's depth may differ by dz between the two (float products and division, bounded above): the
+        // plane moves by up to max dz x the barycentric weights' sum at c, its gradient by ||E^-1|| |(dz1 + dz0,
+        // dz2 + dz0)|.
+        const double depthGradientChange =
+            frobenius(inverse) * std::hypot(t.dz[0] + t.dz[1], t.dz[0] + t.dz[2]);
+        const double vertexDepth = std::max({t.dz[0], t.dz[1], t.dz[2]});
+        const double gradientChange =
+            determined ? glm::length(g) * kappa / (1.0 - kappa) + depthGradientChange : 0.0;
+        const double slopeTerm = slopeFactor * gradientChange;
 
-            // Texels whose centre is inside, or within two grid steps of an edge.
-            const double reach = 2.0 * grid;
-            const int x0 = std::max(0, int(std::floor(std::min({t.p[0].x, t.p[1].x, t.p[2].x}) - reach - 0.5)));
-            const int x1 = std::min(res - 1, int(std::ceil(std::max({t.p[0].x, t.p[1].x, t.p[2].x}) + reach - 0.5)));
-            const int y0 = std::max(0, int(std::floor(std::min({t.p[0].y, t.p[1].y, t.p[2].y}) - reach - 0.5)));
-            const int y1 = std::min(res - 1, int(std::ceil(std::max({t.p[0].y, t.p[1].y, t.p[2].y}) + reach - 0.5)));
-            const double orientation = det > 0.0 ? 1.0 : -1.0;
-            for (int y = y0; y <= y1; ++y)
-                for (int x = x0; x <= x1; ++x) {
-                    const glm::dvec2 c(x + 0.5, y + 0.5);
-                    bool inside = true;
-                    for (int e = 0; e < 3 && inside; ++e) {
-                        const glm::dvec2 a = t.p[e], b = t.p[(e + 1) % 3];
-                        const glm::dvec2 d = b - a;
-                        // Signed distance of c from the edge, positive inside.
-                        const double distance = orientation * (d.x * (c.y - a.y) - d.y * (c.x - a.x)) / glm::length(d);
-                        inside = distance >= -reach;
-                    }
-                    if (!inside) continue;
-                    const std::size_t i = std::size_t(y) * std::size_t(res) + std::size_t(x);
-                    double written = t.z[0] + glm::dot(g, c - t.p[0]) + offset;
-                    if (input.raster.depthClampEnable) written = std::clamp(written, 0.0, 1.0);
-                    const double apart = std::abs(written - double(glMap[i]));
-                    if (apart >= nearest[i]) continue;
-                    nearest[i] = apart;
-                    if (!determined) {
-                        // Thinner than the grid: its plane is not determined, but a depth it interpolates lies between
-                        // its corners' depths, and its bias between the constant term and the clamp (none without a
-                        // clamp unless the slope factor is 0).
-                        out.depth[i] = undeterminedBias < 0.0 ? -1.0
-                                                              : std::max({t.z[0], t.z[1], t.z[2]}) -
-                                                                    std::min({t.z[0], t.z[1], t.z[2]}) + vertexDepth +
-                                                                    undeterminedBias;
-                        continue;
-                    }
-                    // The plane at c through the vertex nearest c: |dg| |c - p| + |g'| |dp|.
-                    double toVertex = std::numeric_limits<double>::infinity();
-                    for (const glm::dvec2& p : t.p) toVertex = std::min(toVertex, glm::length(c - p));
-                    // Barycentric weights of c (they sum to 1; beyond an edge by `reach` one is slightly negative).
-                    const glm::dvec2 w12 = inverse * (c - t.p[0]);
-                    const double weights = std::abs(1.0 - w12.x - w12.y) + std::abs(w12.x) + std::abs(w12.y);
-                    const double planeTerm = (gradientChange - depthGradientChange) * toVertex +
-                                             (glm::length(g) + gradientChange) * std::sqrt(2.0) * grid +
-                                             vertexDepth * weights;
-                    out.depth[i] = planeTerm + slopeTerm;
+        // Texels whose centre is inside, or within two grid steps of an edge.
+        const double reach = 2.0 * grid;
+        const int x0 = std::max(0, int(std::floor(std::min({t.p[0].x, t.p[1].x, t.p[2].x}) - reach - 0.5)));
+        const int x1 = std::min(res - 1, int(std::ceil(std::max({t.p[0].x, t.p[1].x, t.p[2].x}) + reach - 0.5)));
+        const int y0 = std::max(0, int(std::floor(std::min({t.p[0].y, t.p[1].y, t.p[2].y}) - reach - 0.5)));
+        const int y1 = std::min(res - 1, int(std::ceil(std::max({t.p[0].y, t.p[1].y, t.p[2].y}) + reach - 0.5)));
+        const double orientation = det > 0.0 ? 1.0 : -1.0;
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x) {
+                const glm::dvec2 c(x + 0.5, y + 0.5);
+                bool inside = true;
+                for (int e = 0; e < 3 && inside; ++e) {
+                    const glm::dvec2 a = t.p[e], b = t.p[(e + 1) % 3];
+                    const glm::dvec2 d = b - a;
+                    // Signed distance of c from the edge, positive inside.
+                    const double distance = orientation * (d.x * (c.y - a.y) - d.y * (c.x - a.x)) / glm::length(d);
+                    inside = distance >= -reach;
                 }
-        }
+                if (!inside) continue;
+                const std::size_t i = std::size_t(y) * std::size_t(res) + std::size_t(x);
+                double written = t.z[0] + glm::dot(g, c - t.p[0]) + offset;
+                if (input.raster.depthClampEnable) written = std::clamp(written, 0.0, 1.0);
+                const double apart = std::abs(written - double(glMap[i]));
+                if (apart >= nearest[i]) continue;
+                nearest[i] = apart;
+                if (!determined) {
+                    // Thinner than the grid: its plane is not determined, but a depth it interpolates lies between
+                    // its corners' depths, and its bias between the constant term and the clamp (none without a
+                    // clamp unless the slope factor is 0).
+                    out.depth[i] = undeterminedBias < 0.0 ? -1.0
+                                                          : std::max({t.z[0], t.z[1], t.z[2]}) -
+                                                                std::min({t.z[0], t.z[1], t.z[2]}) + vertexDepth +
+                                                                undeterminedBias;
+                    continue;
+                }
+                // The plane at c through the vertex nearest c: |dg| |c - p| + |g'| |dp|.
+                double toVertex = std::numeric_limits<double>::infinity();
+                for (const glm::dvec2& p : t.p) toVertex = std::min(toVertex, glm::length(c - p));
+                // Barycentric weights of c (they sum to 1; beyond an edge by `reach` one is slightly negative).
+                const glm::dvec2 w12 = inverse * (c - t.p[0]);
+                const double weights = std::abs(1.0 - w12.x - w12.y) + std::abs(w12.x) + std::abs(w12.y);
+                const double planeTerm = (gradientChange - depthGradientChange) * toVertex +
+                                         (glm::length(g) + gradientChange) * std::sqrt(2.0) * grid +
+                                         vertexDepth * weights;
+                out.depth[i] = planeTerm + slopeTerm;
+            }
     }
     for (std::size_t i = 0; i < texels; ++i) {
         const bool written = input.reversedZ ? glMap[i] > 0.0f : glMap[i] < 1.0f;

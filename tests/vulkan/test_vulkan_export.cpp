@@ -38,8 +38,8 @@ struct MapDifference {
     std::vector<std::uint8_t> picture;  // grey: the GL map; orange: over one step; red: over the bound
 };
 
-MapDifference compareMaps(const std::vector<float>& gl, const std::vector<float>& vk, const RoundingBound& bound, bool d16,
-                          bool reversedZ = false) {
+MapDifference compareMaps(const std::vector<float>& gl, const std::vector<float>& vk, const RoundingBound& bound,
+                          bool d16, bool reversedZ = false) {
     MapDifference d;
     const std::vector<std::uint8_t> grey = depthToGray(gl, writtenDepthRange(gl));
     d.picture.resize(gl.size() * 3);
