@@ -4,10 +4,10 @@
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/timed_frames.h"
+#include "light/scene_lights.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
 #include "settings/settings_fields.h"
-#include "shadow/shadow_map.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +37,17 @@ bool applyFilter(const std::string& name, Settings& settings) {
 
 }  // namespace
 
+nlohmann::json benchLightsJson(const Settings& effective) {
+    nlohmann::json lights = nlohmann::json::array();
+    for (std::size_t i = 0; i < effective.lights.size(); ++i) {
+        const LightSettings& l = effective.lights[i];
+        const bool casts = l.enabled && l.castsShadows;
+        lights.push_back({{"index", i}, {"type", lightTypeName(l.type)}, {"enabled", l.enabled},
+                          {"castsShadows", casts}, {"views", casts ? (l.type == LightType::Point ? 6 : 1) : 0}});
+    }
+    return lights;
+}
+
 int runBench(const BenchOptions& options) {
     std::optional<Settings> base = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!base) return 2;
@@ -65,6 +76,8 @@ int runBench(const BenchOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene);
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
+    // The lights the frames use (a scene's own with useSceneLights): the rows set each one's map resolution.
+    const Settings effective = withEffectiveLights(*base, scene);
     try {
         HeadlessContext context;
         Renderer renderer;
@@ -74,7 +87,7 @@ int runBench(const BenchOptions& options) {
         std::cout << "bench: " << scene.name << " (" << scene.triangleCount() << " triangles), view " << options.width
                   << "x" << options.height << ", " << options.frames << " frames per row, shadow pass every frame\n"
                   << "gl: " << info.renderer << "\n";
-        const std::size_t lightCount = base->lights.size();
+        const std::size_t lightCount = effective.lights.size();
         std::cout << (lightCount == 0 ? std::string("lights: none (no shadow pass: the rows time the main pass only)")
                       : lightCount == 1 ? std::string("lights: 1 (the resolution column is its map's)")
                                         : "lights: " + std::to_string(lightCount) +
@@ -92,7 +105,7 @@ int runBench(const BenchOptions& options) {
                 continue;
             }
             for (const std::string& filter : options.filters) {
-                Settings settings = *base;
+                Settings settings = effective;
                 for (LightSettings& light : settings.lights) light.shadow.resolution = resolution;  // every light's map
                 applyFilter(filter, settings);  // checked above
                 const TimedFrames timed = timeFrames(renderer, scene, settings, camera, target, options.frames);
@@ -101,7 +114,7 @@ int runBench(const BenchOptions& options) {
                     return 1;
                 }
                 timing = timed.timingSource;
-                const double mib = double(renderer.shadowMap().memoryBytes()) / (1024.0 * 1024.0);
+                const double mib = double(timed.last.shadowMapBytes) / (1024.0 * 1024.0);  // every light's maps
                 const double shadow = timed.shadowMs, main = timed.mainMs, wall = timed.wallMsPerFrame;
                 std::cout << std::left << std::setw(12) << resolution << std::setw(13) << filter << std::setw(12)
                           << std::fixed << std::setprecision(1) << mib << std::setw(14) << std::setprecision(3)
@@ -115,7 +128,8 @@ int runBench(const BenchOptions& options) {
             nlohmann::json doc = {{"scene", scene.name},      {"triangles", scene.triangleCount()},
                                   {"glRenderer", info.renderer}, {"timingSource", timing},
                                   {"width", options.width},     {"height", options.height},
-                                  {"frames", options.frames},   {"rows", rows}};
+                                  {"frames", options.frames},   {"lights", benchLightsJson(effective)},
+                                  {"rows", rows}};
             const std::string text = doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
             if (std::string error = writeFileAtomically(options.json, text); !error.empty())
                 return fail("--json " + options.json + ": " + error);

@@ -1,6 +1,10 @@
 #pragma once
 // `shadowlab bench`: what accuracy costs in time. Renders a scene repeatedly per configuration (shadow-map
 // resolution x filter), re-running the shadow pass every frame, and prints median per-pass times and map memory.
+#include "settings/settings.h"
+
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -20,5 +24,9 @@ struct BenchOptions {
 };
 
 int runBench(const BenchOptions& options);
+
+// The lights a bench JSON describes (its "lights" array): each effective light's index, type, whether it is enabled
+// and casts, and its shadow views (1, a point light 6; 0 without a shadow).
+nlohmann::json benchLightsJson(const Settings& effective);
 
 }  // namespace shadowlab::cli

@@ -7,13 +7,12 @@
 #include "light/scene_lights.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
+#include "settings/settings_fields.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <iomanip>
-#include "settings/settings_fields.h"
-
 #include <iostream>
 #include <map>
 
@@ -47,7 +46,8 @@ int runBenchLights(const BenchOptions& options) {
                   << options.width << "x" << options.height << ", " << base.lights.size() << " lights, "
                   << options.frames << " frames per row\ngl: " << renderer.glInfo().renderer << "\n";
         nlohmann::json doc = {{"scene", scene.name}, {"width", options.width}, {"height", options.height},
-                              {"frames", options.frames}, {"glRenderer", renderer.glInfo().renderer}};
+                              {"frames", options.frames}, {"glRenderer", renderer.glInfo().renderer},
+                              {"lights", benchLightsJson(base)}};
 
         // 1. Every view forced each frame: the median time of each view.
         std::map<std::string, std::vector<double>> perView;
@@ -78,7 +78,8 @@ int runBenchLights(const BenchOptions& options) {
             std::cout << "  " << std::left << std::setw(14) << v.name << std::setw(12) << lightTypeName(light.type)
                       << std::setw(8) << v.resolution << std::fixed << std::setprecision(3) << ms << " ms  "
                       << v.castersDrawn << " casters\n";
-            views.push_back({{"view", v.name}, {"kind", lightTypeName(light.type)}, {"resolution", v.resolution},
+            views.push_back({{"view", v.name}, {"light", v.light}, {"face", v.face}, {"kind", lightTypeName(light.type)},
+                             {"resolution", v.resolution},
                              {"ms", ms}, {"castersDrawn", v.castersDrawn}});
         }
         std::cout << "  all views " << std::setprecision(3) << allViews << " ms; main pass " << medianOf(mainAll)

@@ -1,6 +1,7 @@
 #include "export/export_snippets.h"
 
 #include "export/shadow_shader_code.h"
+#include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
 
 #include <nlohmann/json.hpp>
@@ -430,10 +431,6 @@ nlohmann::json jsonOf(const ShadowExport& e) {
 }
 
 }  // namespace
-
-const char* lightTypeName(LightType type) {
-    return type == LightType::Directional ? "directional" : type == LightType::Spot ? "spot" : "point";
-}
 
 std::string exportSnippet(const ShadowExport& values, ExportFormat format) {
     switch (format) {

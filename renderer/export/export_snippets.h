@@ -13,7 +13,5 @@ std::string exportSnippet(const ShadowExport& values, ExportFormat format);
 // Every light of the set, each section naming its light (a light without a shadow is listed as such); a set where
 // nothing casts says so.
 std::string exportSnippet(const ShadowExportSet& set, ExportFormat format);
-// "directional" | "spot" | "point".
-const char* lightTypeName(LightType type);
 
 }  // namespace shadowlab

@@ -94,6 +94,12 @@ void compare(const std::string& name, const Scene& scene, bool strictlyLess) {
     const Camera camera = cameraFor(start.camera, scene, 480.0 / 270.0);
     const TuneResult r = tuneBias(meter, scene, start, camera, 480, 270, 0.1);
     ASSERT_TRUE(r.ok) << r.error;
+    // The comparison is between settings that reach the limit: the tuner reached it, and its result measured again is
+    // within it.
+    ASSERT_TRUE(r.reachedLimit) << name << ": closest acne " << r.report.acnePercent << " %";
+    const AccuracyReport again = meter.measure(scene, r.best, camera, 480, 270);
+    ASSERT_TRUE(again.ok) << again.error;
+    EXPECT_LE(again.acnePercent, 0.1) << name;
     const Best b = bestOf(r);
     ASSERT_TRUE(b.slopeOnly && b.plane) << name << ": the tuner searched both ways";
     for (const auto& [label, s] : {std::pair{"slope-scaled only", *b.slopeOnly}, std::pair{"receiver plane", *b.plane}})

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end: `shadowlab measure` and `shadowlab tune`, headless. Checks exit codes, the printed numbers (metrics
 # version 2, causes, the coarse-map warning), the JSON, both overlay PNGs, that a tuned preset loads back and measures
-# within the acne limit, that tune writes nothing when no setting reaches the limit, that --remeasure-bench's GPU and
-# CPU paths agree, and that bad input is refused.
+# within the acne limit (tune --light 1: light 1 measured again), that tune writes nothing when no setting reaches
+# the limit, that --remeasure-bench's GPU and CPU paths agree, and that bad input is refused.
 # Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
 set -uo pipefail
 : "${SHADOWLAB:?}" "${SOURCE_DIR:?}" "${OUT_DIR:?}"
@@ -135,12 +135,23 @@ expect_error tune-light-5 "lights.5: no such light" "$SHADOWLAB" tune --scene bu
 expect_error light-no-shadow "lights.1.castsShadows is false" "$SHADOWLAB" measure --scene builtin:textbook \
   --preset ./two-lights.json --set lights.1.castsShadows=false --light 1 --width 32 --height 32
 expect_ok tune-light1 "$SHADOWLAB" tune --scene builtin:textbook --preset ./two-lights.json --light 1 --width 320 \
-  --height 180 --out two-tuned.json
+  --height 180 --max-acne 0.1 --out two-tuned.json
 python3 -c "
 import json; a = json.load(open('two-lights.json')); b = json.load(open('two-tuned.json'))
-assert b['lights'][0]['shadow'] == a['lights'][0]['shadow'], 'light 0 must stay'
-assert b['lights'][1]['shadow'] != a['lights'][1]['shadow'], 'light 1 must be tuned'" \
-  && pass "tune --light 1 writes light 1's bias and keeps light 0's" || fail "tune --light 1: $(grep '^result' tune-light1.out)"
+assert b['lights'][0]['shadow'] == a['lights'][0]['shadow'], 'light 0 must stay'" \
+  && pass "tune --light 1 keeps light 0's bias" || fail "tune --light 1 changed light 0: $(grep '^result' tune-light1.out)"
+# What tune wrote is what it promised: light 1 measured again with the tuned preset (same view) is within the limit,
+# where it started far above it.
+expect_ok measure-tuned-light1 "$SHADOWLAB" measure --scene builtin:textbook --preset ./two-tuned.json --light 1 \
+  --width 320 --height 180 --json light1-tuned.json
+python3 -c "
+import json; before = json.load(open('light1.json'))['lights'][0]; after = json.load(open('light1-tuned.json'))['lights'][0]
+assert after['index'] == 1, after['index']
+print('light 1 acne', before['acnePercent'], '% before tune,', after['acnePercent'], '% after (limit 0.1 %)')
+assert before['acnePercent'] > 0.1, 'light 1 must start above the limit for the check to mean anything'
+assert after['acnePercent'] <= 0.1, after['acnePercent']" \
+  && pass "tune --light 1: light 1 measured again is within the limit it was given" \
+  || fail "tune --light 1 re-measured: $(grep -A2 '^lights.1' measure-tuned-light1.out | head -3)"
 
 # Live accuracy: --remeasure-bench times re-measures after a bias change on the GPU path and the CPU path, and both
 # count the same frame alike.
