@@ -15,6 +15,7 @@
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -36,6 +37,7 @@ struct Host {
     int framesAfterInput = 3;  // ImGui needs a few frames to settle after an event (hover, popups)
     long buttonEvents = 0;     // mouse presses and releases received
     long keyEvents = 0;        // key presses and releases handed to ImGui
+    std::atomic<bool> woken{false};  // a worker has something to show (set on its thread)
 };
 
 Host& hostOf(GLFWwindow* window) { return *static_cast<Host*>(glfwGetWindowUserPointer(window)); }
@@ -163,7 +165,10 @@ int runEdit(const EditOptions& options) {
             editorOptions.preset = options.preset;
             editorOptions.screenshotDir =
                 options.screenshotDir.empty() ? userScreenshotsDir().string() : options.screenshotDir;
-            editorOptions.wake = [] { glfwPostEmptyEvent(); };  // thread-safe: wakes glfwWaitEvents
+            editorOptions.wake = [&host] {  // on a worker's thread
+                host.woken = true;
+                glfwPostEmptyEvent();  // thread-safe: ends glfwWaitEvents
+            };
             editorPtr = std::make_unique<editor::Editor>(editorOptions);
         } catch (const std::exception& e) {
             std::cerr << "shadowlab edit: " << e.what() << "\n";
@@ -191,6 +196,9 @@ int runEdit(const EditOptions& options) {
                     glfwPollEvents();
                 else
                     glfwWaitEventsTimeout(*wait);
+                // What a worker brought (a result, a scene) settles like input: ImGui lays new content out over a
+                // few frames.
+                if (host.woken.exchange(false)) host.framesAfterInput = 3;
                 if (glfwWindowShouldClose(window)) {
                     glfwSetWindowShouldClose(window, GLFW_FALSE);
                     ed.requestQuit();
