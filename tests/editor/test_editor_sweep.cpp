@@ -33,15 +33,18 @@ TEST(EditorSweep, RunHoverAndApplyAPoint) {
     // starves the sweep's GL context (its first point's frames then take seconds each).
     const std::optional<double> hostWait = h.editor().secondsUntilNextFrame();
     ASSERT_TRUE(hostWait.has_value()) << "a running sweep's progress is redrawn on a timer";
+    h.takeWakes();
     const long framesBefore = h.framesDrawn();
     h.framesUntil([&] { return !s.running; }, "the sweep to finish", kWorkerCeilingSeconds, int(*hostWait * 1000.0));
     const long framesDuring = h.framesDrawn() - framesBefore;
+    const int wakes = h.takeWakes();  // the sweep's thread woke the host for each point and at its end
     h.frame(2);
     EXPECT_GE(framesDuring, 1) << "the UI keeps drawing while the sweep runs";
     ASSERT_TRUE(s.result.has_value());
     ASSERT_TRUE(s.result->ok) << s.result->error;
     ASSERT_EQ(s.result->points.size(), 4u);
     ASSERT_TRUE(s.result->preset.has_value()) << "the default preset (2048 pcf) is not on these axes: measured too";
+    EXPECT_GE(wakes, int(s.result->points.size()) + 2) << "a wake per point, the preset's point and the end";
     const ControlRect view = h.rect("viewport.image");
     EXPECT_EQ(s.result->width, int(view.w)) << "the sweep measures this view";
     EXPECT_GT(s.result->points[0].accuracy.wrongPercent, s.result->points[2].accuracy.wrongPercent)
