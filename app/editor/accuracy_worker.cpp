@@ -13,7 +13,7 @@ struct AccuracyWorker::Gl {
     AccuracyMeter meter;
 };
 
-AccuracyWorker::AccuracyWorker() = default;
+AccuracyWorker::AccuracyWorker(std::function<void()> finished) : finishedCallback_(std::move(finished)) {}
 
 AccuracyWorker::~AccuracyWorker() {
     {
@@ -63,6 +63,11 @@ std::vector<TuneStep> AccuracyWorker::steps() const {
     return steps_;
 }
 
+void AccuracyWorker::setStepHook(std::function<void(const AccuracyProgress&)> hook) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stepHook_ = std::move(hook);
+}
+
 std::optional<AccuracyJobResult> AccuracyWorker::poll() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (!finished_) return std::nullopt;
@@ -85,8 +90,11 @@ void AccuracyWorker::loop() {
             id = pendingId_;
         }
         AccuracyJobResult result = run(job, id);
-        std::lock_guard<std::mutex> lock(mutex_);
-        finished_ = std::move(result);
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            finished_ = std::move(result);
+        }
+        if (finishedCallback_) finishedCallback_();
     }
     // The meter and context end on the thread they were current on.
     measuredScene_.reset();
@@ -150,8 +158,13 @@ AccuracyJobResult AccuracyWorker::run(const AccuracyJob& job, std::uint64_t id) 
         } else {
             TuneResult tune = tuneBias(gl_->meter, *job.scene, *one, job.camera, job.width, job.height,
                                        job.maxAcnePercent, &progress_, [this](const TuneStep& step) {
-                                           std::lock_guard<std::mutex> lock(mutex_);
-                                           steps_.push_back(step);
+                                           std::function<void(const AccuracyProgress&)> hook;
+                                           {
+                                               std::lock_guard<std::mutex> lock(mutex_);
+                                               steps_.push_back(step);
+                                               hook = stepHook_;
+                                           }
+                                           if (hook) hook(progress_);
                                        });
             result.report = tune.report;
             if (!tune.ok) {

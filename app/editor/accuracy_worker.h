@@ -13,6 +13,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -48,7 +49,8 @@ struct AccuracyJobResult {
 
 class AccuracyWorker {
 public:
-    AccuracyWorker();
+    // `finished` runs on the worker thread once a result is ready to poll (the editor wakes its host with it).
+    explicit AccuracyWorker(std::function<void()> finished = {});
     ~AccuracyWorker();  // cancels a running job and joins the thread (its GL context ends on it)
     AccuracyWorker(const AccuracyWorker&) = delete;
     AccuracyWorker& operator=(const AccuracyWorker&) = delete;
@@ -64,10 +66,17 @@ public:
     std::vector<TuneStep> steps() const;
     // The finished job's result, once; then running() is false.
     std::optional<AccuracyJobResult> poll();
+    // For tests: runs on the worker thread after each candidate of a bias search is recorded, before the next one is
+    // measured, with the job's progress (a test holds it there until progress.cancel to act while the search
+    // certainly runs). Set it while no job runs.
+    void setStepHook(std::function<void(const AccuracyProgress&)> hook);
 
 private:
     void loop();
     AccuracyJobResult run(const AccuracyJob& job, std::uint64_t id);
+
+    const std::function<void()> finishedCallback_;
+    std::function<void(const AccuracyProgress&)> stepHook_;  // guarded by mutex_
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -25,6 +25,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The real clock: the editor's default clock, and the wall time a frame's rendering took (a measurement shown in
+// Stats, not a decision).
 double secondsNow() {
     using namespace std::chrono;
     static const steady_clock::time_point start = steady_clock::now();
@@ -46,12 +48,16 @@ bool isGltfPath(const std::string& path) {
 }  // namespace
 
 Editor::Editor(EditorOptions options) : options_(std::move(options)) {
+    if (!options_.clock) options_.clock = secondsNow;
     renderer_ = std::make_unique<Renderer>();
     frustum_ = std::make_unique<LightFrustumOverlay>();
     mapView_ = std::make_unique<ShadowMapView>();
-    accuracyWorker_ = std::make_unique<AccuracyWorker>();
+    // Workers wake the host when they have something to show, so an idle host needs no timer to notice them.
+    accuracyWorker_ = std::make_unique<AccuracyWorker>(options_.wake);
+    state_.sweep.worker = std::make_unique<SweepWorker>(options_.wake);
+    loader_.setFinishedCallback(options_.wake);
     state_.limits.maxTextureSize = renderer_->glInfo().maxTextureSize;
-    state_.time = secondsNow();
+    state_.time = now();
 
     if (options_.shippedPresetsDir.empty()) options_.shippedPresetsDir = SHADOWLAB_PRESET_DIR;
     if (options_.userPresetsDir.empty()) options_.userPresetsDir = userPresetsDir().string();
@@ -97,9 +103,9 @@ Editor::~Editor() {
 // Frame work (before the UI)
 
 void Editor::renderFrame() {
-    const double now = secondsNow();
-    const double dt = std::clamp(now - state_.time, 0.0, 0.25);
-    state_.time = now;
+    const double t = now();
+    const double dt = std::clamp(t - state_.time, 0.0, 0.25);
+    state_.time = t;
     pollSceneLoad();
     if (state_.animateLight) {
         state_.animatedAzimuthDeg = std::fmod(state_.animatedAzimuthDeg + state_.animateDegreesPerSecond * dt, 360.0);
@@ -471,7 +477,7 @@ void Editor::dropFiles(const std::vector<std::string>& paths) {
 }
 
 bool Editor::busy() const {
-    if (loader_.busy() || state_.animateLight || screenshotRequested_ || windowScreenshotPath_ || state_.probe.request)
+    if (state_.animateLight || screenshotRequested_ || windowScreenshotPath_ || state_.probe.request)
         return true;
     // Nothing to draw into (no scene yet, or a minimized window): wait for events rather than spin.
     if (!state_.scene || !orbit_ || viewportRect_.z < 16.0f || viewportRect_.w < 16.0f) return false;

@@ -16,6 +16,7 @@
 
 #include <imgui.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,12 @@ struct EditorOptions {
     std::string userPresetsDir;             // empty = userPresetsDir() (see settings/user_config.h)
     std::string recentFilesPath;            // empty = recentFilesPath(); "-" = do not remember
     std::string screenshotDir = "screenshots";
+    // Seconds on a steady clock, read for every timing decision (Auto's delay, the light animation). Empty = the
+    // real steady clock; a test sets its own and moves it.
+    std::function<double()> clock;
+    // Called from any thread when a worker has something to show (an accuracy job or a scene load finished, a sweep
+    // point measured): the window host wakes its event loop with it (glfwPostEmptyEvent). Must be thread-safe.
+    std::function<void()> wake;
 };
 
 class Editor final : public EditorActions {
@@ -42,12 +49,12 @@ public:
     void renderFrame();
     void buildUi();
 
-    // True while frames must keep coming without input (a scene loading, the light animating, a change not yet
-    // rendered); otherwise the host may sleep until the next event.
+    // True while frames must keep coming without input (the light animating, a change not yet rendered, a
+    // screenshot or probe asked for); otherwise the host may sleep (see secondsUntilNextFrame).
     bool busy() const;
-    // How long a host that is not busy() may sleep waiting for input: short while an accuracy job runs or an
-    // automatic measurement is due (a modest redraw rate leaves the cores to the worker), else long.
-    double idleWaitSeconds() const;
+    // When a host with no input pending needs the next frame: 0 = now (busy), a time in seconds (a worker's progress
+    // to show, Auto's delay falling due), or nullopt = only on input or options.wake (nothing is running or due).
+    std::optional<double> secondsUntilNextFrame() const;
     // Ctrl+Q or the window's close button: asks about unsaved changes first. quitConfirmed() once it may close.
     void requestQuit();
     bool quitConfirmed() const { return quitConfirmed_; }
@@ -65,6 +72,7 @@ public:
     std::vector<std::uint8_t> mapViewPixels() const { return mapView_->readPixels(); }
     const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
     ImVec4 viewportRect() const { return viewportRect_; }  // x, y, w, h in window pixels
+    AccuracyWorker& accuracyWorker() { return *accuracyWorker_; }  // for tests (its step hook)
 
     // EditorActions
     void requestScene(const std::string& spec) override;
@@ -100,6 +108,7 @@ private:
         bool operator==(const RenderKey&) const = default;
     };
 
+    double now() const { return options_.clock(); }  // the editor's clock (seconds)
     void pollSceneLoad();
     void adoptScene(std::shared_ptr<const Scene> scene, const std::string& spec);
     void renderViewport();

@@ -116,7 +116,10 @@ void Editor::pollAccuracy() {
     }
 
     const std::optional<AccuracyViewKey> now = accuracyKey();
-    if (!now) return;
+    if (!now) {
+        autoDue_ = false;  // nothing to measure: no timer either
+        return;
+    }
     if (!lastSeenAccuracyKey_ || !(*lastSeenAccuracyKey_ == *now)) {
         lastSeenAccuracyKey_ = now;
         lastAccuracyChange_ = state_.time;
@@ -265,13 +268,18 @@ void Editor::uploadAccuracyOverlay() {
     a.uploadedKind = a.overlayKind;
 }
 
-double Editor::idleWaitSeconds() const {
-    // 20 redraws a second: progress shows, and the worker keeps the cores (flat out on llvmpipe starves it).
-    if (state_.accuracy.running || state_.accuracy.liveRunning || autoDue_) return 0.05;
-    // A sweep times passes: 4 redraws a second show its progress without disturbing its timings (on llvmpipe a
-    // faster UI also starves the sweep's own GL context).
+std::optional<double> Editor::secondsUntilNextFrame() const {
+    if (busy()) return 0.0;
+    // A worker's progress is redrawn at a modest rate (drawing flat out on llvmpipe starves the worker; a sweep times
+    // passes, and a faster UI would disturb its timings); its end wakes the host through options.wake at once.
+    if (state_.accuracy.running || state_.accuracy.liveRunning) return 0.05;
     if (state_.sweep.running) return 0.25;
-    return 0.5;
+    if (loader_.busy()) return 0.1;
+    // Auto's full measure falls due once the view has been still for kAutoDelaySeconds (a held mouse button waits
+    // for its release, which is input).
+    if (autoDue_ && !ImGui::IsAnyMouseDown())
+        return std::max(0.0, lastAccuracyChange_ + AccuracyState::kAutoDelaySeconds - now());
+    return std::nullopt;  // nothing running or due: only input or a worker's wake brings the next frame
 }
 
 }  // namespace shadowlab::editor

@@ -42,29 +42,35 @@ bool SweepWorker::start(std::shared_ptr<const Scene> scene, const Settings& base
             HeadlessContext context;
             result = runSweep(*scene, base, plan, options,
                               [this, pointCount](const SweepPointResult& point, std::size_t, std::size_t) {
-                                  std::lock_guard<std::mutex> lock(mutex_);
-                                  if (point.index >= pointCount)
-                                      live_.preset = point;  // the preset's own extra point (the marker)
-                                  else
-                                      live_.points.push_back(point);
-                                  markParetoFront(live_);
+                                  {
+                                      std::lock_guard<std::mutex> lock(mutex_);
+                                      if (point.index >= pointCount)
+                                          live_.preset = point;  // the preset's own extra point (the marker)
+                                      else
+                                          live_.points.push_back(point);
+                                      markParetoFront(live_);
+                                  }
+                                  if (changedCallback_) changedCallback_();
                               },
                               &progress_);
         } catch (const std::exception& e) {
             result.ok = false;
             result.error = std::string("sweep: ") + e.what();
         }
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (!result.ok) {
-            // Keep what was measured: a cancelled sweep still charts its points.
-            SweepResult partial = live_;
-            partial.ok = false;
-            partial.cancelled = result.cancelled;
-            partial.error = result.error;
-            result = std::move(partial);
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (!result.ok) {
+                // Keep what was measured: a cancelled sweep still charts its points.
+                SweepResult partial = live_;
+                partial.ok = false;
+                partial.cancelled = result.cancelled;
+                partial.error = result.error;
+                result = std::move(partial);
+            }
+            live_ = result;
+            finished_ = std::move(result);
         }
-        live_ = result;
-        finished_ = std::move(result);
+        if (changedCallback_) changedCallback_();
     });
     return true;
 }

@@ -6,6 +6,7 @@
 #include "scene/scene.h"
 #include "sweep/sweep_runner.h"
 
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,7 +16,9 @@ namespace shadowlab::editor {
 
 class SweepWorker {
 public:
-    SweepWorker() = default;
+    // `changed` runs on the sweep's thread after each finished point and when the sweep ends (the editor wakes its
+    // host with it, so the chart fills in and the result shows without a timer).
+    explicit SweepWorker(std::function<void()> changed = {}) : changedCallback_(std::move(changed)) {}
     ~SweepWorker();
     SweepWorker(const SweepWorker&) = delete;
     SweepWorker& operator=(const SweepWorker&) = delete;
@@ -34,6 +37,7 @@ public:
 private:
     void join();
 
+    const std::function<void()> changedCallback_;
     mutable std::mutex mutex_;
     std::thread thread_;
     bool busy_ = false;

@@ -13,11 +13,14 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,9 @@ struct Host {
     editor::Editor* editor = nullptr;
     KeyEventQueue keys;
     int framesAfterInput = 3;  // ImGui needs a few frames to settle after an event (hover, popups)
+    long buttonEvents = 0;     // mouse presses and releases received
+    long keyEvents = 0;        // key presses and releases handed to ImGui
+    std::atomic<bool> woken{false};  // a worker has something to show (set on its thread)
 };
 
 Host& hostOf(GLFWwindow* window) { return *static_cast<Host*>(glfwGetWindowUserPointer(window)); }
@@ -47,6 +53,7 @@ void installCallbacks(GLFWwindow* window) {
     });
     glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int mods) {
         ImGui_ImplGlfw_MouseButtonCallback(w, button, action, mods);
+        ++hostOf(w).buttonEvents;
         hostOf(w).framesAfterInput = 3;
     });
     glfwSetScrollCallback(window, [](GLFWwindow* w, double x, double y) {
@@ -77,11 +84,16 @@ int noWindow(const std::string& why) {
     return 1;
 }
 
-// Writes the controls' rectangles for scripts when $SHADOWLAB_EDITOR_CONTROLS names a file and they changed.
-void writeControlsFile(editor::Editor& ed, std::string& lastWritten) {
+// Writes the controls' rectangles for scripts when $SHADOWLAB_EDITOR_CONTROLS names a file and they changed, with
+// "input": the mouse position the frame just drawn saw and how many mouse-button and key events the window handled
+// before it, so a script waits until the editor has seen its input instead of sleeping.
+void writeControlsFile(editor::Editor& ed, const Host& host, std::string& lastWritten) {
     static const char* path = std::getenv("SHADOWLAB_EDITOR_CONTROLS");
     if (!path || !*path) return;
-    const std::string json = ed.state().controls.toJson();
+    nlohmann::json out = nlohmann::json::parse(ed.state().controls.toJson());
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    out["input"] = {{"mouse", {int(mouse.x), int(mouse.y)}}, {"buttons", host.buttonEvents}, {"keys", host.keyEvents}};
+    const std::string json = out.dump(1);
     if (json == lastWritten) return;
     if (writeFileAtomically(path, json).empty()) lastWritten = json;
 }
@@ -153,6 +165,10 @@ int runEdit(const EditOptions& options) {
             editorOptions.preset = options.preset;
             editorOptions.screenshotDir =
                 options.screenshotDir.empty() ? userScreenshotsDir().string() : options.screenshotDir;
+            editorOptions.wake = [&host] {  // on a worker's thread
+                host.woken = true;
+                glfwPostEmptyEvent();  // thread-safe: ends glfwWaitEvents
+            };
             editorPtr = std::make_unique<editor::Editor>(editorOptions);
         } catch (const std::exception& e) {
             std::cerr << "shadowlab edit: " << e.what() << "\n";
@@ -168,17 +184,26 @@ int runEdit(const EditOptions& options) {
 
             std::string title, controlsWritten;
             while (!ed.quitConfirmed()) {
-                if (ed.busy() || !host.keys.empty() || host.framesAfterInput > 0)
+                // Idle, the window sleeps until input or a worker's wake (editorOptions.wake); while a worker runs
+                // it wakes at a modest rate for the progress (redrawing flat out on llvmpipe starves the worker),
+                // and for Auto's delay exactly when it falls due.
+                const std::optional<double> wait = !host.keys.empty() || host.framesAfterInput > 0
+                                                       ? std::optional<double>(0.0)
+                                                       : ed.secondsUntilNextFrame();
+                if (!wait)
+                    glfwWaitEvents();
+                else if (*wait <= 0.0)
                     glfwPollEvents();
                 else
-                    // Idle: no pass runs, and the window sleeps until input; while an accuracy job runs it wakes
-                    // at a modest rate (redrawing flat out on a software rasterizer starves the worker).
-                    glfwWaitEventsTimeout(ed.idleWaitSeconds());
+                    glfwWaitEventsTimeout(*wait);
+                // What a worker brought (a result, a scene) settles like input: ImGui lays new content out over a
+                // few frames.
+                if (host.woken.exchange(false)) host.framesAfterInput = 3;
                 if (glfwWindowShouldClose(window)) {
                     glfwSetWindowShouldClose(window, GLFW_FALSE);
                     ed.requestQuit();
                 }
-                host.keys.deliver(window);
+                host.keyEvents += host.keys.deliver(window);
 
                 ed.renderFrame();
                 ImGui_ImplOpenGL3_NewFrame();
@@ -205,7 +230,7 @@ int runEdit(const EditOptions& options) {
                     glfwSetWindowTitle(window, now.c_str());
                     title = now;
                 }
-                writeControlsFile(ed, controlsWritten);
+                writeControlsFile(ed, host, controlsWritten);
                 if (io.WantSaveIniSettings) saveLayout(iniPath);
                 if (host.framesAfterInput > 0) --host.framesAfterInput;
             }

@@ -5,7 +5,8 @@
 
 namespace shadowlab::editor_window {
 
-void KeyEventQueue::deliver(GLFWwindow* window) {
+int KeyEventQueue::deliver(GLFWwindow* window) {
+    int keys = 0;
     while (!events_.empty()) {
         const Event e = events_.front();
         events_.pop_front();
@@ -15,13 +16,15 @@ void KeyEventQueue::deliver(GLFWwindow* window) {
         }
         if (e.action == GLFW_REPEAT) continue;  // ImGui repeats held keys itself
         ImGui_ImplGlfw_KeyCallback(window, e.key, e.scancode, e.action, e.mods);
+        ++keys;
         // While a text field has the keyboard, a printable key without Ctrl / Alt / Super only brings its character
         // (ImGui types from characters; no shortcut reads those keys then): it needs no frame of its own, so a burst
         // of typing costs one frame instead of two per key (each a whole window redraw on a software rasterizer).
         const bool textKey = e.key >= GLFW_KEY_SPACE && e.key <= GLFW_KEY_GRAVE_ACCENT &&
                              !(e.mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER));
-        if (!(textKey && ImGui::GetIO().WantTextInput)) return;
+        if (!(textKey && ImGui::GetIO().WantTextInput)) return keys;
     }
+    return keys;
 }
 
 }  // namespace shadowlab::editor_window

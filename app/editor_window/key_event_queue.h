@@ -16,8 +16,8 @@ public:
     void pushKey(int key, int scancode, int action, int mods) { events_.push_back({false, key, scancode, action, mods, 0}); }
     void pushChar(unsigned int c) { events_.push_back({true, 0, 0, 0, 0, c}); }
     bool empty() const { return events_.empty(); }
-    // Hands ImGui the characters up to and including the next key event.
-    void deliver(GLFWwindow* window);
+    // Hands ImGui the characters up to and including the next key event; returns how many key events it handed.
+    int deliver(GLFWwindow* window);
 
 private:
     struct Event {

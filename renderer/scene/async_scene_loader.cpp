@@ -39,6 +39,11 @@ void AsyncSceneLoader::request(const std::string& spec) {
     wake_.notify_all();
 }
 
+void AsyncSceneLoader::setFinishedCallback(std::function<void()> finished) {
+    std::lock_guard lock(mutex_);
+    finishedCallback_ = std::move(finished);
+}
+
 std::optional<FinishedSceneLoad> AsyncSceneLoader::poll() {
     std::lock_guard lock(mutex_);
     std::optional<FinishedSceneLoad> out = std::move(finished_);
@@ -72,11 +77,18 @@ void AsyncSceneLoader::work() {
         SceneLoadResult result = loadScene(spec);
         lock.lock();
         // Only the newest request's result is kept; an older one finishing late is dropped.
-        if (loading_->id == newestId_) {
+        const bool newest = loading_->id == newestId_;
+        if (newest) {
             const double seconds = std::chrono::duration<double>(Clock::now() - loading_->requested).count();
             finished_ = FinishedSceneLoad{spec, std::move(result), seconds};
         }
         loading_.reset();
+        if (newest && finishedCallback_) {
+            const std::function<void()> finished = finishedCallback_;
+            lock.unlock();  // the callback may take the host's locks
+            finished();
+            lock.lock();
+        }
     }
 }
 

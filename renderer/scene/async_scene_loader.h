@@ -8,6 +8,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -45,6 +46,10 @@ public:
     std::optional<SceneLoadProgress> progress() const;
     bool busy() const { return progress().has_value(); }
 
+    // Runs on the loader's thread each time a result becomes ready to poll (a window host wakes its event loop with
+    // it instead of polling on a timer). Set it before the first request.
+    void setFinishedCallback(std::function<void()> finished);
+
 private:
     using Clock = std::chrono::steady_clock;
     struct Request {
@@ -62,6 +67,7 @@ private:
     std::optional<FinishedSceneLoad> finished_;  // the newest request's result, not yet polled
     std::uint64_t newestId_ = 0;
     bool stopping_ = false;
+    std::function<void()> finishedCallback_;
     std::thread worker_;
 };
 

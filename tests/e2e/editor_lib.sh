@@ -1,6 +1,8 @@
 # Shared by the scripts that drive the real editor in a virtual X display (source it after e2e_lib.sh, in $OUT_DIR).
 # start_editor W H ARGS... starts Xvfb (W x H) and `shadowlab edit --width W --height H ARGS...`, which writes its
-# controls' rectangles to controls.json; sets $wid. control / has_control / click / wait_for work on that file.
+# controls' rectangles to controls.json, with "input": the mouse position and the mouse-button and key events its
+# newest frame has seen; sets $wid. control / has_control / click / move_mouse / send_keys / wait_for work on that
+# file: each input helper waits until the editor has seen its input (no fixed sleeps).
 # Xvfb and the editor are always killed on exit. Needs: SHADOWLAB, OUT_DIR.
 for tool in Xvfb xdotool python3; do
   command -v $tool >/dev/null || { echo "FAIL: $tool is not installed (scripts/install-deps)"; exit 1; }
@@ -52,9 +54,38 @@ PY
 # wait_for CONDITION-COMMAND... (up to ~30 s; WAIT_TRIES=N for N tenths of a second)
 wait_for() { for _ in $(seq "${WAIT_TRIES:-300}"); do "$@" && return 0; kill -0 "$app_pid" 2>/dev/null || return 1; sleep 0.1; done; return 1; }
 has_control() { [ -f controls.json ] && [ -n "$(control "$1")" ]; }
+# input_seen mouse|buttons|keys -> what the editor's newest frame has seen ("x y" or a count).
+input_seen() {
+  python3 - "$1" <<'PY' 2>/dev/null
+import json, sys
+v = json.load(open("controls.json"))["input"][sys.argv[1]]
+print(*v) if isinstance(v, list) else print(v)
+PY
+}
+mouse_seen_at() { [ "$(input_seen mouse)" = "$1 $2" ]; }
+seen_at_least() { local n; n=$(input_seen "$1") && [ "$n" -ge "$2" ]; }
+# move_mouse X Y (window pixels): until a frame has seen the pointer there.
+move_mouse() {
+  xdotool mousemove --window "$wid" "$1" "$2"
+  wait_for mouse_seen_at "$1" "$2" || { fail "the editor never saw the pointer at $1,$2 (controls.json: $(input_seen mouse))"; return 1; }
+}
+# press_button: a left click where the pointer is, until the editor has seen its press and release.
+press_button() {
+  local before; before=$(input_seen buttons) || before=0
+  xdotool click 1
+  wait_for seen_at_least buttons $((before + 2)) || { fail "the editor never saw the click (buttons seen: $(input_seen buttons), wanted $((before + 2)))"; return 1; }
+}
+# send_keys COMBO...: xdotool key COMBO... (e.g. ctrl+s Return), until the editor has handled every press and release.
+send_keys() {
+  local before events=0 combo plus
+  before=$(input_seen keys) || before=0
+  for combo in "$@"; do plus=${combo//[^+]/}; events=$((events + 2 * (${#plus} + 1))); done
+  xdotool key "$@"
+  wait_for seen_at_least keys $((before + events)) || { fail "the editor never handled the keys $* (keys seen: $(input_seen keys), wanted $((before + events)))"; return 1; }
+}
 click() {
   local c; c=$(control "$1") || true
   [ -n "$c" ] || { fail "control $1 not drawn"; return 1; }
   set -- $c
-  xdotool mousemove --window "$wid" "$1" "$2" sleep 0.15 click 1 sleep 0.2
+  move_mouse "$1" "$2" && press_button
 }

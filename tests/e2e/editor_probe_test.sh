@@ -14,7 +14,6 @@ json() { python3 -c "import json,sys; d=json.load(open('$1')); print(eval(sys.ar
 start_editor 1280 720 --scene builtin:textbook --preset default --screenshot-dir shots
 WAIT_TRIES=1200 wait_for has_control viewport.image && WAIT_TRIES=1200 wait_for grep -q "loaded builtin:textbook" editor.out \
   || { echo "FAIL: the editor showed no scene: $(tail -3 editor.err)"; exit 1; }
-sleep 1
 
 # probe_at FX FY: click the view at that fraction of its size, save the probe, compare with the CLI's.
 shadowed=0 lit=0
@@ -22,7 +21,7 @@ probe_at() {
   local vx vy vw vh
   read -r vx vy vw vh <<<"$(control_rect viewport.image)"
   local x=$((vx + vw * $1 / 100)) y=$((vy + vh * $2 / 100))
-  xdotool mousemove --window "$wid" "$x" "$y" sleep 0.2 click 1 sleep 0.3
+  move_mouse "$x" "$y" && press_button
   wait_for has_control probe.saveJson || { fail "no probe after a click at $x,$y"; return; }
   # The panel may still show the previous pixel for a frame: save until the file holds this click's pixel.
   local file="" want="[$((x - vx)), $((y - vy))]"
@@ -34,7 +33,7 @@ probe_at() {
     # xdotool's pixel is the editor's up to the view's sub-pixel origin: accept the probe's own pixel if it is
     # within one of the click.
     if [ "$(json "$file" "abs(d['pixel'][0]-$((x - vx)))<=1 and abs(d['pixel'][1]-$((y - vy)))<=1")" = True ]; then break; fi
-    file=""; sleep 0.3
+    file=""
   done
   [ -n "$file" ] || { fail "the saved probe never showed pixel ~$want"; return; }
   grep -q "probe: $OUT_DIR/shots\|probe: shots" editor.out && pass "the status line says where the probe went" \

@@ -23,11 +23,11 @@ start_editor 1600 900 --scene builtin:textbook --screenshot-dir shots
 # loads the scene: on a loaded 2-core machine that can take over 30 s, so these two waits allow 2 minutes.
 WAIT_TRIES=1200 wait_for has_control tab:Stats && click tab:Stats
 WAIT_TRIES=1200 wait_for has_control stats.frames && pass "editor window up, a frame rendered" || fail "no frame: $(cat editor.err)"
-xdotool mousemove --window "$wid" 800 450 sleep 0.3
+move_mouse 800 450
 
-# F12: the viewport as PNG.
-xdotool key F12
-wait_for bash -c 'ls shots/shadowlab-*.png >/dev/null 2>&1' && sleep 0.5
+# F12: the viewport as PNG (the editor says where once it is written).
+send_keys F12
+wait_for grep -q "^shadowlab: screenshot: " editor.out
 shot=$(ls shots/shadowlab-*.png 2>/dev/null | head -1)
 if [ -z "$shot" ]; then fail "F12 wrote no screenshot: $(tail -3 editor.err)"; else
   read -r _ _ vw vh <<<"$(control viewport.image)"
@@ -43,10 +43,9 @@ fi
 # "1K", then Ctrl+S on the shipped default preset: Save As opens with "default-tuned"; Enter saves it.
 click "tab:Shadow map" && wait_for has_control shadow.resolution=1K
 click shadow.resolution=1K
-xdotool key ctrl+s
+send_keys ctrl+s
 wait_for has_control saveAs.name && pass "Ctrl+S on a shipped preset asks for a name" || fail "no Save As dialog"
-sleep 0.3
-xdotool key Return
+send_keys Return
 saved="$OUT_DIR/user-presets/default-tuned.json"
 if wait_for test -f "$saved"; then
   pass "preset saved to the user folder"
@@ -74,13 +73,13 @@ else fail "no preset at $saved: $(tail -3 editor.err)"; fi
 # A bad scene path: a message, the editor keeps running on its scene.
 click tab:Scene && wait_for has_control scene.path
 click scene.path
-xdotool key ctrl+a
+send_keys ctrl+a
 # Typed at full speed: printable keys reach a text field without a frame each, and every character arrives in order.
 xdotool type --delay 0 "/nonexistent/Missing_Scene-2 (copy).gltf"
 xdotool key Return
 if wait_for grep -qF "/nonexistent/Missing_Scene-2 (copy).gltf: " editor.err; then
-  sleep 0.5
-  kill -0 "$app_pid" 2>/dev/null && pass "bad scene path: message, editor still running" || fail "editor died"
+  # Still drawing frames after the message: it sees the pointer move.
+  move_mouse 790 440 && kill -0 "$app_pid" 2>/dev/null && pass "bad scene path: message, editor still running" || fail "editor died"
 else fail "no message for a bad scene path: $(tail -3 editor.err)"; fi
 
 # Measure in the Accuracy panel: the worker's numbers arrive while the window keeps running.
@@ -89,11 +88,11 @@ click accuracy.measure
 if wait_for grep -q "accuracy of light [0-9]*: acne" editor.out; then
   pass "Accuracy: Measure printed $(grep -m1 -o 'acne [0-9.]* %' editor.out)"
 else fail "no accuracy numbers: $(tail -3 editor.err)"; fi
-sleep 0.5
 
-# Ctrl+F12: the whole window.
-xdotool mousemove --window "$wid" 800 450 key ctrl+F12
-wait_for bash -c 'ls shots/shadowlab-window-*.png >/dev/null 2>&1' && sleep 0.5
+# Ctrl+F12: the whole window (the editor says where once it is written).
+move_mouse 800 450
+send_keys ctrl+F12
+wait_for grep -q "^shadowlab: window screenshot: " editor.out
 window_shot=$(ls shots/shadowlab-window-*.png 2>/dev/null | head -1)
 if [ -n "$window_shot" ] && info=$(png_check "$window_shot"); then
   read -r w h _ <<<"$info"

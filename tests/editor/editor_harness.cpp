@@ -8,7 +8,12 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <chrono>
 #include <memory>
+#include <optional>
+#include <thread>
+#include <utility>
 
 namespace shadowlab::editor::test {
 
@@ -74,7 +79,14 @@ EditorHarness::EditorHarness(const EditorOptions& options, int width, int height
 
     EXPECT_EQ(window_.resize(width, height), "");
 
-    editor_ = std::make_unique<Editor>(options);
+    EditorOptions hooked = options;
+    hooked.clock = [this] { return clock_; };
+    hooked.wake = [this] {
+        std::lock_guard<std::mutex> lock(wakeMutex_);
+        ++wakes_;
+        wakeSignal_.notify_all();
+    };
+    editor_ = std::make_unique<Editor>(hooked);
 }
 
 EditorHarness::~EditorHarness() {
@@ -99,14 +111,70 @@ void EditorHarness::frame(int count) {
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         // The IO is per frame: a wheel turn is seen once.
         ImGui::GetIO().MouseWheel = 0.0f;
+        ++framesDrawn_;
     }
+}
+
+bool EditorHarness::framesUntil(const std::function<bool()>& done, const std::string& what, double ceilingSeconds,
+                                int pauseMs) {
+    const auto start = std::chrono::steady_clock::now();
+    while (!done()) {
+        const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (waited > ceilingSeconds) {
+            ADD_FAILURE() << "waited " << waited << " s (the ceiling) for " << what << "; it did not happen";
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(pauseMs));
+        frame();
+    }
+    return true;
+}
+
+void EditorHarness::waitForAccuracyJob() {
+    framesUntil([this] { return !state().accuracy.running; },
+                "the accuracy job (" + state().accuracy.stage + ") to finish");
+    frame(2);
+}
+
+int EditorHarness::hostFrames(double seconds) {
+    const double end = clock_ + seconds;
+    int frames = 0;
+    while (clock_ < end) {
+        const std::optional<double> wait = editor_->secondsUntilNextFrame();
+        if (takeWakes() == 0) {
+            if (!wait) break;  // asleep until input: nothing more happens in this stretch
+            // A busy host draws at the display's rate (vsync): a 60 Hz frame.
+            clock_ = std::min(end, clock_ + std::max(*wait, 1.0 / 60.0));
+            if (clock_ >= end) break;
+        }
+        frame();
+        ++frames;
+    }
+    clock_ = std::max(clock_, end);
+    return frames;
+}
+
+int EditorHarness::takeWakes() {
+    std::lock_guard<std::mutex> lock(wakeMutex_);
+    return std::exchange(wakes_, 0);
+}
+
+bool EditorHarness::waitForWake(const std::string& what, double ceilingSeconds) {
+    std::unique_lock<std::mutex> lock(wakeMutex_);
+    if (!wakeSignal_.wait_for(lock, std::chrono::duration<double>(ceilingSeconds), [this] { return wakes_ > 0; })) {
+        ADD_FAILURE() << "no wake was posted in " << ceilingSeconds << " s while waiting for " << what;
+        return false;
+    }
+    wakes_ = 0;
+    return true;
 }
 
 void EditorHarness::settle(int maxFrames) {
     for (int i = 0; i < maxFrames; ++i) {
         frame();
-        if (state().scene && !editor_->busy()) {
+        if (state().scene && !state().loading && !editor_->busy()) {
             frame(2);
+            takeWakes();  // a host's frames have answered every wake posted so far
             return;
         }
     }

@@ -8,8 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <condition_variable>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -22,15 +25,43 @@ std::filesystem::path testFolder(const std::string& name);
 // recent-files file.
 EditorOptions testOptions(const std::filesystem::path& folder);
 
+// How long a test waits, in real time, for something a worker thread does (its speed depends on the machine's load,
+// which a test cannot control): a ceiling, never a duration a test expects to take.
+constexpr double kWorkerCeilingSeconds = 600.0;
+
 class EditorHarness {
 public:
+    // The editor runs on the harness's clock (options.clock is replaced): it starts at 0 and moves only when a test
+    // moves it (advanceClock, hostFrames), never with frames or real time, so Auto's delay and the light animation
+    // do not depend on the machine's speed. options.wake is replaced by the harness's wake count.
     explicit EditorHarness(const EditorOptions& options, int width = 1600, int height = 900);
     ~EditorHarness();
 
     // One frame as a host draws it: renderFrame, NewFrame, buildUi, Render, draw into the window FBO.
     void frame(int count = 1);
-    // Frames until the scene has loaded and nothing is pending (fails the test after `maxFrames`).
+    // Frames until the scene has loaded and nothing is pending (fails the test after `maxFrames`); the wakes posted
+    // so far count as answered.
     void settle(int maxFrames = 600);
+
+    // The editor's injected clock.
+    double clock() const { return clock_; }
+    void advanceClock(double seconds) { clock_ += seconds; }
+    long framesDrawn() const { return framesDrawn_; }
+    // Frames until `done()` holds, a frame per `pause` of real time (a host's modest rate while a worker runs).
+    // Fails the test naming `what` when the real-time ceiling passes first; returns whether `done()` holds.
+    bool framesUntil(const std::function<bool()>& done, const std::string& what,
+                     double ceilingSeconds = kWorkerCeilingSeconds, int pauseMs = 20);
+    // The window host's loop (app/editor_window/edit_command.cpp) over `seconds` of the injected clock, with no
+    // input: a frame when the editor is busy (1/60 s apart), when its timed wake falls due (the clock jumps there),
+    // or when a worker posted a wake; while it would sleep until input, the clock jumps to the end. Returns the
+    // frames drawn.
+    int hostFrames(double seconds);
+    // Frames until the running accuracy job has ended (then two more: its numbers are drawn).
+    void waitForAccuracyJob();
+    // Worker wakes (options.wake) since the last takeWakes; waitForWake blocks in real time until one is posted
+    // (fails the test naming `what` at the ceiling).
+    int takeWakes();
+    bool waitForWake(const std::string& what, double ceilingSeconds = kWorkerCeilingSeconds);
 
     // Input through ImGui's IO. Each call runs the frames ImGui needs to see it.
     void moveMouse(float x, float y);
@@ -66,6 +97,11 @@ public:
 
 private:
     int width_, height_;
+    double clock_ = 0.0;
+    long framesDrawn_ = 0;
+    std::mutex wakeMutex_;
+    std::condition_variable wakeSignal_;
+    int wakes_ = 0;
     RenderTarget window_;  // the window the UI is drawn into
     void* imguiContext_ = nullptr;
     std::unique_ptr<Editor> editor_;

@@ -8,11 +8,9 @@
 #include "image/split_view.h"
 #include "settings/preset_io.h"
 
-#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -53,17 +51,10 @@ protected:
             }
         return total ? double(differ) / double(total) : 0.0;
     }
-    // Measure in the Accuracy panel and wait for the numbers (at most two minutes).
+    // Measure in the Accuracy panel and wait for the numbers.
     void measure() {
         harness->click("accuracy.measure");
-        const auto start = std::chrono::steady_clock::now();
-        while (harness->state().accuracy.running) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-            harness->frame();
-            ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 120.0)
-                << "the measurement did not finish";
-        }
-        harness->frame(2);
+        harness->waitForAccuracyJob();
     }
     std::filesystem::path folder;
     std::unique_ptr<EditorHarness> harness;

@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <functional>
+#include <mutex>
 #include <thread>
 
 namespace shadowlab::editor::test {
@@ -19,6 +21,34 @@ namespace {
 
 // The smallest first-run layout: a viewport of about 650x450 keeps measurements quick on llvmpipe.
 constexpr int kWidth = 1280, kHeight = 720;
+
+// Holds a bias search on its worker thread after its first candidate until the job is cancelled (the worker's step
+// hook), so a test acts while the search certainly runs.
+class SearchGate {
+public:
+    explicit SearchGate(AccuracyWorker& worker) {
+        worker.setStepHook([this](const AccuracyProgress& progress) {
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                held_ = true;
+            }
+            signal_.notify_all();
+            const auto start = std::chrono::steady_clock::now();
+            while (!progress.cancel.load() &&
+                   std::chrono::steady_clock::now() - start < std::chrono::duration<double>(kWorkerCeilingSeconds))
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        });
+    }
+    bool waitUntilHeld() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        return signal_.wait_for(lock, std::chrono::duration<double>(kWorkerCeilingSeconds), [this] { return held_; });
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable signal_;
+    bool held_ = false;
+};
 
 class EditorAccuracy : public ::testing::Test {
 protected:
@@ -33,40 +63,26 @@ protected:
     }
     // Frames at a host's modest rate until the running job ends; returns how many UI frames were built meanwhile.
     // `eachFrame` sees the state after every frame built while the job still runs.
-    int waitForJob(double maxSeconds = 120.0, const std::function<void(const AccuracyState&)>& eachFrame = {}) {
-        const auto start = std::chrono::steady_clock::now();
+    int waitForJob(const std::function<void(const AccuracyState&)>& eachFrame = {}) {
         int frames = 0;
-        while (harness->state().accuracy.running) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-            harness->frame();
-            ++frames;
-            if (eachFrame && harness->state().accuracy.running) eachFrame(harness->state().accuracy);
-            if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > maxSeconds) {
-                ADD_FAILURE() << "the accuracy job did not finish in " << maxSeconds << " s";
-                break;
-            }
-        }
+        harness->framesUntil(
+            [&] {
+                const AccuracyState& a = harness->state().accuracy;
+                if (frames > 0 && eachFrame && a.running) eachFrame(a);
+                ++frames;
+                return !a.running;
+            },
+            "the accuracy job (" + harness->state().accuracy.stage + ") to finish");
         harness->frame(2);
-        return frames;
+        return frames - 1;
     }
-    // Frames until Auto has made `count` full measurements (each job waited for), at most `maxSeconds`: on a loaded
-    // machine one frame can take longer than the stillness Auto waits for, so a fixed time would be too short.
-    void framesUntilMeasured(int count, double maxSeconds = 60.0) {
-        const auto start = std::chrono::steady_clock::now();
-        while (harness->state().accuracy.measurements < count &&
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < maxSeconds) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-            harness->frame();
-            waitForJob();
-        }
-    }
-    // Frames for `seconds` of wall time.
-    void framesFor(double seconds) {
-        const auto start = std::chrono::steady_clock::now();
-        while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-            harness->frame();
-        }
+    // Auto's delay on the editor's clock: the view counts as still once the clock has moved this far.
+    void letTheViewBeStill() { harness->advanceClock(AccuracyState::kAutoDelaySeconds); }
+    // Frames until Auto has made `count` full measurements and no job runs.
+    void framesUntilMeasured(long count) {
+        const AccuracyState& a = harness->state().accuracy;
+        harness->framesUntil([&] { return a.measurements >= count && !a.running && !a.liveRunning; },
+                             "Auto's full measurement " + std::to_string(count));
     }
     std::filesystem::path folder;
     std::unique_ptr<EditorHarness> harness;
@@ -134,24 +150,39 @@ TEST_F(EditorAccuracy, AutoMeasuresOnceTheViewIsStillAndNeverTwiceForTheSameView
     open();
     EditorHarness& h = *harness;
     const AccuracyState& a = h.state().accuracy;
+    constexpr double kHalf = AccuracyState::kAutoDelaySeconds / 2.0;  // exact in binary: no rounding at the edge
     h.click("accuracy.auto");
     ASSERT_TRUE(a.autoMeasure);
-    // The view has been still since it opened: the first measurement comes without a click.
-    framesUntilMeasured(1);
+    // Frames alone do not move the editor's clock: however many are drawn (however slowly), the view has not yet
+    // been still for Auto's delay.
+    h.frame(5);
+    EXPECT_FALSE(a.running) << "Auto measured before the view was still for its delay";
+    // Still for the delay: the first measurement comes without a click, on that frame.
+    h.advanceClock(AccuracyState::kAutoDelaySeconds);
+    h.frame();
+    ASSERT_TRUE(a.running) << "the view was still for Auto's delay, and no measurement started";
+    waitForJob();
     ASSERT_EQ(a.measurements, 1);
     EXPECT_EQ(a.stale, "");
 
-    // An edit: nothing is measured while it is fresh, then once after the view has been still.
+    // An edit: a live count follows it, but no full measure while it is fresh; then one once the view has been still
+    // for the delay.
     h.drag("shadow.depthBias", 60.0f, 0.0f);
-    h.frame();
+    h.framesUntil([&] { return !a.liveRunning; }, "Auto's live count after the edit");
     EXPECT_FALSE(a.running) << "Auto waits until the view is still";
     EXPECT_EQ(a.measurements, 1);
-    EXPECT_FALSE(a.stale.empty());
+    h.advanceClock(kHalf);
+    h.frame();
+    EXPECT_FALSE(a.running) << "half of Auto's delay after the edit";
+    h.advanceClock(kHalf);
+    h.frame();
+    EXPECT_TRUE(a.running) << "Auto's delay after the edit: the full measure starts";
     framesUntilMeasured(2);
     EXPECT_EQ(a.measurements, 2);
     EXPECT_EQ(a.stale, "");
-    // Still: never again for the same view and settings.
-    framesFor(1.2);
+    // Still: never again for the same view and settings, however long it stays so.
+    h.advanceClock(3600.0);
+    h.frame(5);
     EXPECT_FALSE(a.running);
     EXPECT_EQ(a.measurements, 2);
 }
@@ -164,8 +195,8 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     EditorHarness& h = *harness;
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.auto");
-    framesFor(0.8);
-    waitForJob();
+    letTheViewBeStill();
+    framesUntilMeasured(1);
     ASSERT_EQ(a.measurements, 1);
     ASSERT_TRUE(a.report.has_value());
     ASSERT_FALSE(a.report->live);
@@ -187,12 +218,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
         h.frame();  // the slider's edit happened in the UI, after this frame's accuracy bookkeeping
         // Frames until the numbers describe exactly this view (the slider at its left end may still read 0: the
         // full measure's view).
-        const auto start = std::chrono::steady_clock::now();
-        while (!a.stale.empty() &&
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 120.0) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-            h.frame();
-        }
+        h.framesUntil([&] { return a.stale.empty(); }, "a live count of the slider's step " + std::to_string(step), kWorkerCeilingSeconds, 10);
         ASSERT_EQ(a.stale, "") << "no live count during the drag, step " << step;
         const float slope = findSettingsField("shadow.slopeScaledDepthBias")->get(h.state().settings).get<float>();
         if (slope != 0.0f) EXPECT_TRUE(a.report->live) << "step " << step;
@@ -220,14 +246,10 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     const AccuracyCounts live = a.report->counts;
     ImGui::GetIO().MouseDown[0] = false;
     h.frame(2);
-    // Frames until Auto's full measure has run (after half a second of stillness; a loaded machine takes longer).
+    // Auto's full measure runs once the view has been still for its delay.
     auto waitForMeasurements = [&](long n) {
-        const auto start = std::chrono::steady_clock::now();
-        while ((a.measurements < n || a.running) &&
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 240.0) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(20));
-            h.frame();
-        }
+        letTheViewBeStill();
+        framesUntilMeasured(n);
     };
     waitForMeasurements(2);
     ASSERT_EQ(a.measurements, 2);
@@ -273,7 +295,7 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     h.click("accuracy.suggest");
     std::size_t liveSteps = 0;  // the path table fills while the search runs
     float liveProgress = 0.0f;
-    const int frames = waitForJob(300.0, [&](const AccuracyState& s) {
+    const int frames = waitForJob([&](const AccuracyState& s) {
         liveSteps = std::max(liveSteps, s.steps.size());
         liveProgress = std::max(liveProgress, s.progress);
     });
@@ -390,10 +412,13 @@ TEST_F(EditorAccuracy, CancelStopsABiasSearchAndKeepsTheSettings) {
     EditorHarness& h = *harness;
     const AccuracyState& a = h.state().accuracy;
     const Settings before = h.state().settings;
+    // The search is held after its first candidate until Cancel arrives: it certainly runs when it does.
+    SearchGate gate(h.editor().accuracyWorker());
     h.click("accuracy.suggest");
-    ASSERT_TRUE(a.running) << "the search takes longer than a click";
+    ASSERT_TRUE(gate.waitUntilHeld()) << "the search never measured its first candidate";
+    ASSERT_TRUE(a.running);
     h.click("accuracy.cancel");
-    waitForJob(60.0);
+    waitForJob();
     EXPECT_FALSE(a.running);
     EXPECT_EQ(a.error, "cancelled");
     EXPECT_TRUE(h.state().settings == before) << "a cancelled search applies nothing";
@@ -424,10 +449,13 @@ TEST_F(EditorAccuracy, ASceneSwitchWhileMeasuringIsSafeAndMakesTheNumbersStale) 
 TEST_F(EditorAccuracy, ClosingTheEditorDuringASearchCancelsItAndEndsTheWorker) {
     open("acne");
     EditorHarness& h = *harness;
+    // The search is held after its first candidate until it is cancelled: the editor certainly goes while the
+    // worker is inside the search. It must cancel (else the gate holds the worker, and the join hangs into ctest's
+    // timeout), join and free its GL context, and this process's own context keeps working.
+    SearchGate gate(h.editor().accuracyWorker());
     h.click("accuracy.suggest");
+    ASSERT_TRUE(gate.waitUntilHeld()) << "the search never measured its first candidate";
     ASSERT_TRUE(h.state().accuracy.running);
-    // The editor goes while the worker is inside the search: it must cancel, join and free its GL context (a hang
-    // here ends in ctest's timeout), and this process's own context keeps working.
     harness.reset();
     open();
     EXPECT_TRUE(harness->state().stats.ok);
@@ -480,7 +508,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     h.saveWindow("accuracy-roof-by-cause");
 
     h.click("accuracy.suggest");
-    waitForJob(300.0);
+    waitForJob();
     ASSERT_TRUE(a.tune.has_value()) << a.error;
     ASSERT_TRUE(a.tune->reachedLimit);
     EXPECT_NE(h.state().settings.lights[0].shadow.cullMode, CullMode::Back) << "the applied settings carry the new cull mode";

@@ -6,9 +6,7 @@
 
 #include <imgui_internal.h>
 
-#include <chrono>
 #include <cmath>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -147,13 +145,7 @@ TEST(EditorLayoutMeasured, AccuracyTabsAndTheOverlayChoiceAreWholeAt1280x720) {
     h.click("shadow.cullMode");
     h.click("shadow.cullMode=back");  // the roof's caster is culled: a cause with a long name and remedy
     h.click("accuracy.measure");
-    const auto start = std::chrono::steady_clock::now();
-    while (h.state().accuracy.running &&
-           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 240.0) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        h.frame();
-    }
-    h.frame(2);
+    h.waitForAccuracyJob();
     ASSERT_TRUE(h.state().accuracy.report.has_value()) << h.state().accuracy.error;
     for (const std::string tab : {"numbers", "causes", "counts", "cost", "search", "flicker"}) {
         h.click("accuracy.tab." + tab);

@@ -3,8 +3,6 @@
 // probes the same pixel again; a measurement of the same view adds the exact verdict.
 #include "editor_harness.h"
 
-#include <chrono>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -117,13 +115,7 @@ TEST_F(EditorProbe, HoldingPProbesUnderTheCursorAndADragDoesNot) {
 TEST_F(EditorProbe, AMeasurementOfTheSameViewAddsTheExactVerdict) {
     EditorHarness& h = *harness;
     h.click("accuracy.measure");
-    const auto start = std::chrono::steady_clock::now();
-    while (h.state().accuracy.running &&
-           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 120.0) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        h.frame();
-    }
-    h.frame(2);
+    h.waitForAccuracyJob();
     ASSERT_TRUE(h.state().accuracy.report.has_value());
     const ImVec4 view = h.editor().viewportRect();
     const ImVec2 at = windowPoint(int(view.z / 2), int(view.w / 2));

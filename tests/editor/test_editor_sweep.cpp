@@ -4,8 +4,6 @@
 #include "editor_harness.h"
 #include "sweep/sweep_output.h"
 
-#include <chrono>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -31,22 +29,22 @@ TEST(EditorSweep, RunHoverAndApplyAPoint) {
     h.selectAllAndType("point,pcf");
     h.click("sweep.run");
     EXPECT_TRUE(s.running) << s.error;
-    const auto start = std::chrono::steady_clock::now();
-    int framesDuring = 0;
-    while (s.running) {
-        // The host's rate while a sweep runs (Editor::idleWaitSeconds): on llvmpipe a UI drawing much faster
-        // starves the sweep's GL context (its first point's frames then take seconds each).
-        std::this_thread::sleep_for(std::chrono::milliseconds(int(h.editor().idleWaitSeconds() * 1000.0)));
-        h.frame();
-        ++framesDuring;
-        ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 300.0);
-    }
+    // At the host's rate while a sweep runs (Editor::secondsUntilNextFrame): on llvmpipe a UI drawing much faster
+    // starves the sweep's GL context (its first point's frames then take seconds each).
+    const std::optional<double> hostWait = h.editor().secondsUntilNextFrame();
+    ASSERT_TRUE(hostWait.has_value()) << "a running sweep's progress is redrawn on a timer";
+    h.takeWakes();
+    const long framesBefore = h.framesDrawn();
+    h.framesUntil([&] { return !s.running; }, "the sweep to finish", kWorkerCeilingSeconds, int(*hostWait * 1000.0));
+    const long framesDuring = h.framesDrawn() - framesBefore;
+    const int wakes = h.takeWakes();  // the sweep's thread woke the host for each point and at its end
     h.frame(2);
     EXPECT_GE(framesDuring, 1) << "the UI keeps drawing while the sweep runs";
     ASSERT_TRUE(s.result.has_value());
     ASSERT_TRUE(s.result->ok) << s.result->error;
     ASSERT_EQ(s.result->points.size(), 4u);
     ASSERT_TRUE(s.result->preset.has_value()) << "the default preset (2048 pcf) is not on these axes: measured too";
+    EXPECT_GE(wakes, int(s.result->points.size()) + 2) << "a wake per point, the preset's point and the end";
     const ControlRect view = h.rect("viewport.image");
     EXPECT_EQ(s.result->width, int(view.w)) << "the sweep measures this view";
     EXPECT_GT(s.result->points[0].accuracy.wrongPercent, s.result->points[2].accuracy.wrongPercent)

@@ -2,6 +2,7 @@
 // optionally the shadow map as float EXR + PNG beside it, and failures that say why.
 #include "gl_fixture.h"
 
+#include "../support/as_unprivileged_user.h"
 #include "frame/screenshot.h"
 
 #include <sys/mount.h>
@@ -134,10 +135,16 @@ TEST_F(Screenshot, AFolderThatCannotBeCreatedSaysWhyAndWritesNothing) {
 }
 
 TEST_F(Screenshot, AReadOnlyFolderSaysWhy) {
-    if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders";
     fs::create_directories(dir_ / "locked");
-    fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec);
-    const ScreenshotResult shot = writeScreenshot(target_, (dir_ / "locked").string());
+    // Readable and searchable by everyone, writable by no one.
+    fs::permissions(dir_ / "locked", fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                         fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    ScreenshotResult shot;
+    {
+        const test::AsUnprivilegedUser user;  // root (CI) would write into the folder regardless
+        EXPECT_EQ(user.error(), "");
+        shot = writeScreenshot(target_, (dir_ / "locked").string());
+    }
     fs::permissions(dir_ / "locked", fs::perms::owner_all);
     EXPECT_FALSE(shot.ok());
     EXPECT_NE(shot.error.find("Permission denied"), std::string::npos) << shot.error;

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <filesystem>
+#include <mutex>
 #include <thread>
 
 using namespace shadowlab;
@@ -40,6 +42,34 @@ TEST(AsyncSceneLoader, DeliversTheSceneOnceAndThenIsIdle) {
     EXPECT_GE(done->seconds, 0.0);
     EXPECT_FALSE(loader.poll().has_value());  // delivered once
     EXPECT_FALSE(loader.busy());
+}
+
+// A window host sleeps until an event: the loader's finished callback is that event. It runs once a result is ready
+// to poll, once per delivered result, so a sleeping host needs no timer to notice a load.
+TEST(AsyncSceneLoader, TheFinishedCallbackRunsOnceAResultIsReadyToPoll) {
+    std::mutex mutex;
+    std::condition_variable signal;
+    int calls = 0;
+    bool readyWhenCalled = true;
+    AsyncSceneLoader loader;
+    loader.setFinishedCallback([&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        ++calls;
+        readyWhenCalled = readyWhenCalled && !loader.busy();
+        signal.notify_all();
+    });
+    loader.request("builtin:textbook");
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        ASSERT_TRUE(signal.wait_for(lock, 600s, [&] { return calls > 0; }))
+            << "no finished callback in 600 s for builtin:textbook";
+    }
+    EXPECT_TRUE(readyWhenCalled) << "the callback ran before the result was ready";
+    std::optional<FinishedSceneLoad> done = loader.poll();
+    ASSERT_TRUE(done.has_value()) << "the callback ran, but poll() had no result";
+    EXPECT_EQ(done->spec, "builtin:textbook");
+    std::lock_guard<std::mutex> lock(mutex);
+    EXPECT_EQ(calls, 1);
 }
 
 TEST(AsyncSceneLoader, BrokenAndMissingFilesGiveAClearError) {

@@ -1,5 +1,6 @@
 // Presets: JSON shape, partial presets over a base, warnings for unknown keys, all-or-nothing errors, exact float
 // round trips through files, atomic saves that never lose the previous file, and the shipped presets.
+#include "../support/as_unprivileged_user.h"
 #include "light/scene_lights.h"
 #include "scene/builtin_scenes.h"
 #include "settings/preset_io.h"
@@ -392,13 +393,19 @@ TEST(Presets, FailedWriteLeavesThePreviousFileIntact) {
 }
 
 TEST(Presets, FailedSaveInReadOnlyFolderLeavesThePreviousFileIntact) {
-    if (::geteuid() == 0) GTEST_SKIP() << "root ignores folder permissions";
     TempFolder dir;
     const std::string path = dir / "keep.json";
     ASSERT_EQ(savePresetFile(path, Settings{}, "old"), "");
     const std::string before = readFile(path);
-    fs::permissions(dir.path, fs::perms::owner_read | fs::perms::owner_exec);
-    std::string e = savePresetFile(path, awkwardSettings(), "new");
+    // Readable and searchable by everyone, writable by no one.
+    fs::permissions(dir.path, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                                  fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    std::string e;
+    {
+        const test::AsUnprivilegedUser user;  // root (CI) ignores folder permissions
+        EXPECT_EQ(user.error(), "");
+        e = savePresetFile(path, awkwardSettings(), "new");
+    }
     fs::permissions(dir.path, fs::perms::owner_all);
     EXPECT_TRUE(contains(e, "Permission denied")) << e;
     EXPECT_EQ(readFile(path), before);
