@@ -1,0 +1,41 @@
+#include "views/shadow_view.h"
+
+namespace shadowlab {
+
+std::string viewSuffix(ShadowViewKind kind, int index) {
+    switch (kind) {
+    case ShadowViewKind::Single: return "";
+    case ShadowViewKind::CubeFace: return index >= 0 && index < 6 ? cubeFaces()[std::size_t(index)].name : "?";
+    }
+    return "";
+}
+
+std::string viewName(std::size_t light, ShadowViewKind kind, int index) {
+    const std::string suffix = viewSuffix(kind, index);
+    return "light " + std::to_string(light) + (suffix.empty() ? "" : " " + suffix);
+}
+
+glm::dvec3 renderOriginOf(const Bounds& bounds) {
+    return bounds.centreOrOrigin();
+}
+
+std::optional<std::vector<ShadowView>> buildLightViews(const LightSettings& light, std::size_t lightIndex,
+                                                       const Bounds& bounds, const glm::dvec3& origin,
+                                                       std::string& error) {
+    std::vector<ShadowView> views;
+    std::string why;
+    if (light.type == LightType::Point) {
+        const auto faces = buildCubeFaceSpaces(light, bounds, origin, why);
+        if (faces)
+            for (int f = 0; f < 6; ++f) views.push_back({lightIndex, ShadowViewKind::CubeFace, f, (*faces)[std::size_t(f)]});
+    } else if (const auto space = buildLightSpace(light, bounds, origin, why)) {
+        views.push_back({lightIndex, ShadowViewKind::Single, 0, *space});
+    }
+    if (views.empty()) {
+        error = "lights." + std::to_string(lightIndex) + ": " + why;
+        return std::nullopt;
+    }
+    return views;
+}
+
+}  // namespace shadowlab
