@@ -15,6 +15,21 @@ std::string viewName(std::size_t light, ShadowViewKind kind, int index) {
     return "light " + std::to_string(light) + (suffix.empty() ? "" : " " + suffix);
 }
 
+std::optional<std::size_t> findView(const std::vector<ShadowView>& lightViews, const std::string& text,
+                                    std::string& error) {
+    std::string choices;
+    for (std::size_t v = 0; v < lightViews.size(); ++v) {
+        const std::string suffix = viewSuffix(lightViews[v].kind, lightViews[v].index);
+        if (!suffix.empty() && suffix == text) return v;
+        choices += (choices.empty() ? "" : ", ") + suffix;
+    }
+    const std::string light = lightViews.empty() ? "the light" : "light " + std::to_string(lightViews.front().light);
+    error = choices.empty() || lightViews.size() < 2
+                ? "--view " + text + ": " + light + " has one view (--view chooses among a point light's cube faces)"
+                : "--view " + text + ": " + light + " has no such view (its views: " + choices + ")";
+    return std::nullopt;
+}
+
 glm::dvec3 renderOriginOf(const Bounds& bounds) {
     return bounds.centreOrOrigin();
 }

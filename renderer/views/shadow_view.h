@@ -41,6 +41,11 @@ inline std::string viewName(const ShadowView& v) { return viewName(v.light, v.ki
 // The view's part of a name, as `--view` takes it: "" for a light's only view, "+X" for a cube face.
 std::string viewSuffix(ShadowViewKind kind, int index);
 
+// The view of `lightViews` (one light's) that `--view TEXT` names: its suffix ("+X" .. "-Z" for a cube face). nullopt
+// with `error` listing the light's views when none matches; a light with one view has nothing to choose.
+std::optional<std::size_t> findView(const std::vector<ShadowView>& lightViews, const std::string& text,
+                                    std::string& error);
+
 // The render origin every light space and GPU buffer of a scene is relative to: the scene bounds' centre (the origin
 // for an empty scene). Large world coordinates then lose no precision in float.
 glm::dvec3 renderOriginOf(const Bounds& bounds);

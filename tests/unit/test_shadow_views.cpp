@@ -57,6 +57,20 @@ TEST(ShadowViews, EachLightKindHasItsViews) {
     EXPECT_EQ(viewName((*faces)[1]), "light 2 -X");
 }
 
+TEST(ShadowViews, ViewOptionNamesACubeFaceAndListsTheChoicesOtherwise) {
+    const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
+    std::string error;
+    const auto faces = buildLightViews(lightOf(LightType::Point), 1, bounds, bounds.centreOrOrigin(), error);
+    ASSERT_TRUE(faces) << error;
+    EXPECT_EQ(findView(*faces, "-Y", error), std::optional<std::size_t>(3));
+    EXPECT_FALSE(findView(*faces, "up", error));
+    EXPECT_NE(error.find("its views: +X, -X, +Y, -Y, +Z, -Z"), std::string::npos) << error;
+    const auto spot = buildLightViews(lightOf(LightType::Spot), 0, bounds, bounds.centreOrOrigin(), error);
+    ASSERT_TRUE(spot) << error;
+    EXPECT_FALSE(findView(*spot, "+X", error));
+    EXPECT_NE(error.find("light 0 has one view"), std::string::npos) << error;
+}
+
 TEST(ShadowViews, AViewThatCannotBeFiniteNamesItsLight) {
     LightSettings l = lightOf(LightType::Spot);
     l.projection.autoFit = false;
