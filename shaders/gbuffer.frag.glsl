@@ -7,20 +7,12 @@ layout(location = 0) out uvec2 outIds;
 
 uniform uint uDrawId;
 #ifdef ALPHA_MASK
-uniform float uAlphaFactor;
-uniform float uAlphaCutoff;
-#ifdef BASE_COLOR_TEXTURE
-uniform sampler2D uBaseColorTexture;
-#endif
+#include "common/alpha_test.glsl"
 #endif
 
 void main() {
 #ifdef ALPHA_MASK
-    float alpha = uAlphaFactor;
-#ifdef BASE_COLOR_TEXTURE
-    alpha *= texture(uBaseColorTexture, vUv).a;
-#endif
-    if (alpha < uAlphaCutoff) discard;
+    if (!alphaTestPasses(vUv)) discard;
 #endif
     outIds = uvec2(uDrawId + 1u, uint(gl_PrimitiveID));
 }

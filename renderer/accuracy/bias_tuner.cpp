@@ -7,6 +7,7 @@
 #include "light/light_space.h"
 #include "settings/settings_fields.h"
 #include "shading/filters/filter_technique.h"
+#include "views/shadow_view.h"
 
 #include <algorithm>
 #include <chrono>
@@ -124,16 +125,12 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     // DepthBias units per texel, from the light space the renderer will build for these settings.
     Settings lit = start;
     lit = withEffectiveLights(start, scene);
-    const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
+    const glm::dvec3 origin = renderOriginOf(scene.bounds);
     std::string lightError;
     // A point light's six faces share near/far but see different receivers: the median of their figures.
     std::vector<LightSpace> spaces;
-    if (lit.lights[0].type == LightType::Point) {
-        if (const auto faces = buildCubeFaceSpaces(lit.lights[0], scene.bounds, origin, lightError))
-            spaces.assign(faces->begin(), faces->end());
-    } else if (const auto space = buildLightSpace(lit, scene.bounds, origin, lightError)) {
-        spaces.push_back(*space);
-    }
+    if (const auto views = buildLightViews(lit.lights[0], 0, scene.bounds, origin, lightError))
+        for (const ShadowView& view : *views) spaces.push_back(view.space);
     if (spaces.empty()) {
         result.error = lightError;
         return finish();

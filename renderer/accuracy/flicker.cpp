@@ -3,6 +3,7 @@
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/light_isolation.h"
 #include "light/light_space.h"
+#include "views/view_select.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -27,17 +28,12 @@ bool mapTexel(const LightSpace& space, const glm::dvec3& world, glm::dvec2& texe
     return true;
 }
 
-// The light spaces of `light` (a point light: its six faces), relative to the scene's centre; empty when they cannot
-// be built (the frame itself then fails with the reason).
-std::vector<LightSpace> lightSpaces(const LightSettings& light, const Bounds& bounds) {
-    const glm::dvec3 origin = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
+// The views of `light`, relative to the scene's centre; empty when they cannot be built (the frame itself then fails
+// with the reason).
+std::vector<ShadowView> lightViews(const LightSettings& light, const Bounds& bounds) {
     std::string error;
-    if (light.type == LightType::Point) {
-        const auto faces = buildCubeFaceSpaces(light, bounds, origin, error);
-        return faces ? std::vector<LightSpace>(faces->begin(), faces->end()) : std::vector<LightSpace>{};
-    }
-    const auto space = buildLightSpace(light, bounds, origin, error);
-    return space ? std::vector<LightSpace>{*space} : std::vector<LightSpace>{};
+    const auto views = buildLightViews(light, 0, bounds, renderOriginOf(bounds), error);
+    return views ? *views : std::vector<ShadowView>{};
 }
 
 // A light motion's step in map texels: the largest shift of the scene's bounding-box centre or a corner between
@@ -45,8 +41,8 @@ std::vector<LightSpace> lightSpaces(const LightSettings& light, const Bounds& bo
 // face the point lies in at frame 0).
 double lightStepTexels(const LightSettings& start, const Motion& motion, const Bounds& bounds) {
     if (bounds.empty) return 0.0;
-    const std::vector<LightSpace> before = lightSpaces(lightAtFrame(start, motion, bounds, 0), bounds);
-    const std::vector<LightSpace> after = lightSpaces(lightAtFrame(start, motion, bounds, 1), bounds);
+    const std::vector<ShadowView> before = lightViews(lightAtFrame(start, motion, bounds, 0), bounds);
+    const std::vector<ShadowView> after = lightViews(lightAtFrame(start, motion, bounds, 1), bounds);
     if (before.empty() || before.size() != after.size()) return 0.0;
     const glm::dvec3 centre(bounds.center());
     double largest = 0.0;
@@ -55,15 +51,11 @@ double lightStepTexels(const LightSettings& start, const Motion& motion, const B
             c == 8 ? glm::dvec3(0.0)
                    : glm::dvec3(c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
                                 c & 4 ? bounds.max.z : bounds.min.z) - centre;
-        std::size_t view = 0;
-        if (before.size() == 6) {  // the face whose axis is nearest the direction toward the corner
-            const glm::dvec3 toward = corner - before[0].position;
-            for (std::size_t f = 1; f < 6; ++f)
-                if (glm::dot(toward, before[f].direction) > glm::dot(toward, before[view].direction)) view = f;
-        }
+        const std::size_t view = std::size_t(std::max(selectView(before, corner).view, 0));
+        const LightSpace& from = before[view].space;
         glm::dvec2 a, b;
-        const double size = double(before[view].resolution);
-        if (mapTexel(before[view], corner, a) && mapTexel(after[view], corner, b) && a.x >= 0.0 && a.y >= 0.0 &&
+        const double size = double(from.resolution);
+        if (mapTexel(from, corner, a) && mapTexel(after[view].space, corner, b) && a.x >= 0.0 && a.y >= 0.0 &&
             a.x <= size && a.y <= size)
             largest = std::max(largest, glm::length(b - a));
     }

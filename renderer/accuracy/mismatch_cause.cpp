@@ -1,5 +1,7 @@
 #include "accuracy/mismatch_cause.h"
 
+#include "views/view_select.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -25,10 +27,10 @@ constexpr CauseInfo kCauses[kCauseCount] = {
     {"nearEdge", "within k of a true edge", "raise shadow.resolution or use a smaller filter.kernel", 120, 100, 70},
 };
 
-// A point light's cube face holding p sees it at this depth: its largest coordinate from the light (90-degree faces).
+// The depth at which a point light's cube face holding p (views/view_select.h) sees it: along that face's axis.
 double cubeFaceDepth(const ReferenceLight& light, const glm::dvec3& p) {
-    const glm::dvec3 d = glm::abs(p - light.position);
-    return std::max({d.x, d.y, d.z});
+    const glm::dvec3 d = p - light.position;
+    return glm::dot(d, cubeFaces()[std::size_t(cubeFaceOf(d))].look);
 }
 
 // The receiver's place in the map: outside [-1, 1] laterally, behind the light, or beyond the far plane. A point

@@ -30,7 +30,7 @@ glm::dvec3 unitDirection(const glm::dvec3& v) {
 }
 
 glm::dvec3 sceneCentre(const Bounds& bounds) {
-    return bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
+    return bounds.centreOrOrigin();
 }
 
 // What a light motion turns: a point light's offset from the scene's centre, else its direction.

@@ -1,6 +1,7 @@
 #include "accuracy/shadow_boundary.h"
 
 #include "reference/parallel_rows.h"
+#include "views/view_select.h"
 
 #include <glm/geometric.hpp>
 
@@ -29,15 +30,8 @@ glm::dvec2 toTexels(const LightSpace& light, const glm::dvec3& p) {
     return (ndc * 0.5 + 0.5) * double(light.resolution);
 }
 
-// Point light: d = p - light position. The cube face that sees d (0..5 = +X, -X, +Y, -Y, +Z, -Z), and d's texels on
-// the plane of face f (its two other axes over its depth; NaN behind the face or more than 63 degrees off its axis).
+// Point light: d = p - light position; cubeFaceOf(d) is the face that sees it. d's texels on the plane of face f (its two other axes over its depth; NaN behind the face or more than 63 degrees off its axis).
 constexpr double kFaceExtent = 2.0;  // |tan| on a face's plane: 1 = the face's edge, 2 = 63 degrees
-
-int cubeFace(const glm::dvec3& d) {
-    const glm::dvec3 a = glm::abs(d);
-    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
-    return 2 * axis + (d[axis] < 0.0 ? 1 : 0);
-}
 
 glm::dvec2 faceTexels(const glm::dvec3& d, int face, int resolution) {
     const int axis = face / 2;
@@ -80,7 +74,7 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
         if (!hasVisibility(classes[i])) continue;
         if (point_) {
             const glm::dvec3 d = samples.point[i] - probe.light.position;
-            face_[i] = std::uint8_t(cubeFace(d));
+            face_[i] = std::uint8_t(cubeFaceOf(d));  // the face the lookup selects
             texel_[i] = faceTexels(d, face_[i], light.resolution);
         } else {
             texel_[i] = toTexels(light, samples.point[i]);

@@ -2,6 +2,7 @@
 #include "export/shadow_export.h"
 
 #include "scene/scene.h"
+#include "views/shadow_view.h"
 #include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
@@ -113,7 +114,7 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
         return std::nullopt;
     }
     // The renderer's origin (the scene's centre); the light's sizes do not depend on it.
-    const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
+    const glm::dvec3 origin = renderOriginOf(scene.bounds);
     for (std::size_t i = 0; i < settings.lights.size(); ++i) {
         if (onlyLight && i != *onlyLight) continue;
         const LightSettings& l = settings.lights[i];
@@ -127,29 +128,16 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
             out.noShadowReason = "casts no shadow (lights." + std::to_string(i) +
                                  ".castsShadows = false): it shines everywhere, no shadow map";
         } else {
-            std::string lightError;
-            if (l.type == LightType::Point) {
-                const auto faces = buildCubeFaceSpaces(l, scene.bounds, origin, lightError);
-                if (!faces) {
-                    error = "lights." + std::to_string(i) + ": " + lightError;
-                    return std::nullopt;
-                }
-                ShadowExport e = makeShadowExport(settings, i, (*faces)[0], sceneLabel);
-                for (std::size_t f = 1; f < faces->size(); ++f) e.views.push_back(viewOf(i, l.type, (*faces)[f]));
-                e.renderOrigin = origin;
-                // The depth-bias report needs one view's receivers; a point light's are spread over six faces.
-                out.shadow = std::move(e);
-            } else {
-                const std::optional<LightSpace> light = buildLightSpace(l, scene.bounds, origin, lightError);
-                if (!light) {
-                    error = "lights." + std::to_string(i) + ": " + lightError;
-                    return std::nullopt;
-                }
-                ShadowExport e = makeShadowExport(settings, i, *light, sceneLabel);
-                e.renderOrigin = origin;
-                e.bias = biasReport(l.shadow, l.shadow.format, *light, receiverDepths(scene, *light, origin));
-                out.shadow = std::move(e);
-            }
+            const auto views = buildLightViews(l, i, scene.bounds, origin, error);
+            if (!views) return std::nullopt;
+            ShadowExport e = makeShadowExport(settings, i, views->front().space, sceneLabel);
+            for (std::size_t v = 1; v < views->size(); ++v) e.views.push_back(viewOf(i, l.type, (*views)[v].space));
+            e.renderOrigin = origin;
+            // The depth-bias report needs one view's receivers; a point light's are spread over six faces.
+            if (views->size() == 1)
+                e.bias = biasReport(l.shadow, l.shadow.format, views->front().space,
+                                    receiverDepths(scene, views->front().space, origin));
+            out.shadow = std::move(e);
         }
         set.lights.push_back(std::move(out));
     }

@@ -102,7 +102,7 @@ std::string clampToFar(const ShadowExport& e, const std::string& x) {
     return e.reversedZ ? "max(" + x + ", 0.0)" : "min(" + x + ", 1.0)";
 }
 
-// Directional and spot lights: shadow2D and receiverPlaneSlope of main.frag.glsl.
+// Directional and spot lights: shadow2D and receiverPlaneSlope of shaders/shadow/lookup_2d.glsl.
 std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     const Words w(t.language);
     const std::string p = "light" + std::to_string(e.lightIndex);
@@ -196,7 +196,7 @@ std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     return o.str();
 }
 
-// Point lights: shadowCube and faceDepth of main.frag.glsl.
+// Point lights: shadowCube and faceDepth of shaders/shadow/lookup_cube.glsl.
 std::string codeCube(const ShadowExport& e, const ShaderTarget& t) {
     const Words w(t.language);
     const std::string p = "light" + std::to_string(e.lightIndex);

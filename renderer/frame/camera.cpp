@@ -97,7 +97,7 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspe
     if (settings.autoFrame) {
         // A three-quarter view from above (by default across the default light, so shadows fall to the side, not
         // behind the objects), moved so the scene's vertices fill the frame.
-        const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
+        const glm::dvec3 center = bounds.centreOrOrigin();
         camera.target = center;
         camera.position = center + glm::normalize(glm::dvec3(scene.viewDirection));
         frameScene(camera, scene, aspect);
@@ -110,7 +110,7 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspe
 }
 
 void fitDepthRange(Camera& camera, const Bounds& bounds) {
-    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) : glm::dvec3(bounds.center());
+    const glm::dvec3 center = bounds.centreOrOrigin();
     const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
     const double reach = glm::length(camera.position - center) + radius;
     camera.farPlane = reach * 1.05;

@@ -3,6 +3,7 @@
 #include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings.h"
+#include "views/shadow_view.h"
 
 #include <glm/ext/matrix_double4x4.hpp>
 
@@ -22,6 +23,8 @@ struct PassStats {
 // skipped, and why. Lights that cast no shadow are listed once (face -1) with the reason.
 struct ShadowViewStats {
     std::size_t light = 0;  // index into the frame's lights (the effective ones: useSceneLights resolved)
+    ShadowViewKind kind = ShadowViewKind::Single;
+    int index = 0;          // the view's index among its light's views (a cube face: 0..5)
     int face = -1;          // a point light's cube face (0..5, GL order +X,-X,+Y,-Y,+Z,-Z); -1 otherwise
     std::string name;       // "light 0", "light 2 +X"
     bool hasView = false;   // false: the light casts no shadow (disabled, castsShadows off)

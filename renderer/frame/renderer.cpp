@@ -76,30 +76,17 @@ Renderer::Renderer()
 
 const ShadowMap& Renderer::shadowMap() const {
     static const ShadowMap empty;
-    const auto it = views_.find(firstView_);
-    return it == views_.end() ? empty : it->second.map;
+    const ShadowMap* first = firstView_ ? viewMap(*firstView_) : nullptr;
+    return first ? *first : empty;
 }
 
-const ShadowMap* Renderer::viewMap(std::size_t light, int face) const {
-    const auto it = views_.find({light, face});
+const ShadowMap* Renderer::viewMap(const ShadowViewId& view) const {
+    const auto it = views_.find(view);
     return it == views_.end() || !it->second.map.valid() ? nullptr : &it->second.map;
 }
 
-std::string Renderer::viewReason(const std::optional<ViewInputs>& last, const ViewInputs& now) {
-    if (!last) return "first frame";
-    if (now.mapGeneration != last->mapGeneration) return "shadow map reallocated";
-    std::vector<std::string> reasons;
-    if (now.sceneFingerprint != last->sceneFingerprint) reasons.push_back("scene changed");
-    // The light's keys that change its views (the key table's shadow-view tags), by name.
-    std::string keys;
-    for (const std::string& key : diffLight(last->light, now.light).keys) {
-        const SettingsField* field = findSettingsField("lights.0." + key);
-        if (field && (field->invalidates & kInvalidatesShadowView)) keys += (keys.empty() ? "" : ", ") + key;
-    }
-    if (!keys.empty()) reasons.push_back(keys + " changed");
-    if (keys.empty() && now.viewProjection != last->viewProjection) reasons.push_back("light space changed");
-    if (now.empty != last->empty) reasons.push_back(now.empty ? "no caster in its volume any more" : "casters entered its volume");
-    return joinLines(reasons);
+const ShadowMap* Renderer::viewMap(std::size_t light, int face) const {
+    return viewMap(face >= 0 ? ShadowViewId{light, ShadowViewKind::CubeFace, face} : ShadowViewId{light});
 }
 
 FrameStats Renderer::render(const Scene& scene, const Settings& requested, const Camera& camera,
@@ -122,9 +109,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     const std::size_t fingerprint = sceneFingerprint(scene);
     if (!gpuScene_ || &gpuScene_->scene() != &scene || gpuSceneFingerprint_ != fingerprint) {
-        // The render origin is the scene's centre: every matrix is built relative to it in double precision.
-        const glm::dvec3 origin = scene.bounds.empty ? glm::dvec3(0.0) : glm::dvec3(scene.bounds.center());
-        gpuScene_ = std::make_unique<GpuScene>(scene, origin);
+        // Every matrix is built relative to the render origin in double precision.
+        gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
         gpuSceneFingerprint_ = fingerprint;
     }
     stats.renderOrigin = gpuScene_->origin();
@@ -132,67 +118,31 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     const glm::dmat4 view = camera.view(stats.renderOrigin);
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
-    // Each casting light's views, grouped into map arrays by (2D or cube, resolution, format, depth convention).
-    struct PlannedView {
-        std::size_t light;
-        int face;
-        LightSpace space;
-        GroupKey group;
-        int layer = 0;
-    };
-    std::vector<PlannedView> planned;
-    std::map<GroupKey, int> layersPerGroup;
-    for (std::size_t i = 0; i < settings.lights.size(); ++i) {
-        LightSettings& light = settings.lights[i];
-        const std::string name = "light " + std::to_string(i);
-        if (!light.enabled || !light.castsShadows) {
-            ShadowViewStats entry;
-            entry.light = i;
-            entry.name = name;
-            entry.reason = !light.enabled ? "skipped: the light is off (enabled false)"
-                                          : "skipped: castsShadows is off (lit everywhere it reaches)";
-            stats.views.push_back(entry);
-            continue;
-        }
-        const bool cube = light.type == LightType::Point;
-        // A size the GPU refuses keeps the light's previous map (and says so); with no map at all there is no frame.
-        const auto previous = views_.find({i, cube ? 0 : -1});
-        const std::string kept = previous != views_.end() && previous->second.map.valid()
-                                     ? "keeping the " + std::to_string(previous->second.map.resolution()) + "² map"
-                                     : "no shadow map yet";
-        if (std::string refusal = shadowResolutionRefusal(light.shadow.resolution, info_.maxTextureSize, kept);
-            !refusal.empty()) {
-            if (previous == views_.end() || !previous->second.map.valid()) {
-                stats.error = refusal;
-                return stats;
-            }
-            stats.warnings.push_back(refusal);
-            light.shadow.resolution = previous->second.map.resolution();
-            light.shadow.format = previous->second.map.format();
-        }
-        const GroupKey group{cube, light.shadow.resolution, light.shadow.format, light.shadow.reversedZ};
-        std::string error;
-        if (cube) {
-            const auto faces = buildCubeFaceSpaces(light, scene.bounds, stats.renderOrigin, error);
-            if (!faces) {
-                stats.error = "lights." + std::to_string(i) + ": " + error;
-                return stats;
-            }
-            for (int f = 0; f < 6; ++f) planned.push_back({i, f, (*faces)[std::size_t(f)], group, 0});
-            layersPerGroup[group] += 6;
-        } else {
-            const auto space = buildLightSpace(light, scene.bounds, stats.renderOrigin, error);
-            if (!space) {
-                stats.error = (i == 0 ? std::string() : "lights." + std::to_string(i) + ": ") + error;
-                return stats;
-            }
-            planned.push_back({i, -1, *space, group, 0});
-            layersPerGroup[group] += 1;
-        }
+    // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention).
+    const ShadowPlan plan = planShadowViews(
+        settings, scene.bounds, stats.renderOrigin, casterSpheres(*gpuScene_), info_.maxTextureSize,
+        [&](std::size_t light) -> std::optional<KeptMap> {
+            // A light's current map: any of its views' (they share one size and format).
+            for (const auto& [id, state] : views_)
+                if (id.light == light && state.map.valid()) return KeptMap{state.map.resolution(), state.map.format()};
+            return std::nullopt;
+        });
+    if (!plan.error.empty()) {
+        stats.error = plan.error;
+        return stats;
+    }
+    settings = plan.settings;
+    stats.warnings.insert(stats.warnings.end(), plan.warnings.begin(), plan.warnings.end());
+    for (const LightWithoutView& l : plan.lightsWithoutViews) {
+        ShadowViewStats entry;
+        entry.light = l.light;
+        entry.name = viewName(l.light, ShadowViewKind::Single, 0);
+        entry.reason = l.reason;
+        stats.views.push_back(entry);
     }
 
-    // Allocate the arrays: each group's layers, reallocated when its count changes.
-    for (const auto& [group, layers] : layersPerGroup) {
+    // Allocate the arrays: each group's layers, reallocated when its count changes; unused arrays are freed.
+    for (const auto& [group, layers] : plan.layers) {
         ShadowMapArray& array = arrays_[group];
         const std::uint64_t before = array.generation();
         if (std::string error = array.ensure(group.cube, group.resolution, group.format, layers,
@@ -205,65 +155,60 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         array.setReversedZ(group.reversedZ);
         stats.shadowMapReallocated = stats.shadowMapReallocated || array.generation() != before;
     }
-    // Layers in light order within each array; unused arrays are freed.
-    std::map<GroupKey, int> nextLayer;
-    for (PlannedView& p : planned) p.layer = nextLayer[p.group]++;
     for (auto it = arrays_.begin(); it != arrays_.end();)
-        it = nextLayer.count(it->first) ? std::next(it) : arrays_.erase(it);
+        it = plan.layers.count(it->first) ? std::next(it) : arrays_.erase(it);
     for (auto it = views_.begin(); it != views_.end();) {
-        const bool used = std::any_of(planned.begin(), planned.end(), [&](const PlannedView& p) {
-            return p.light == it->first.first && p.face == it->first.second;
-        });
+        const bool used = std::any_of(plan.views.begin(), plan.views.end(),
+                                      [&](const PlannedView& p) { return p.view.id() == it->first; });
         it = used ? std::next(it) : views_.erase(it);
     }
 
-    // Run, clear or skip each view.
+    // Run, clear or skip each view, as the planner decides.
     double shadowMilliseconds = 0.0;
     bool anyMilliseconds = false;
     std::vector<std::string> ranReasons;
     bool anySkippedForOtherReason = false;
-    for (std::size_t v = 0; v < planned.size(); ++v) {
-        const PlannedView& p = planned[v];
-        const LightSettings& light = settings.lights[p.light];
-        ViewState& state = views_[{p.light, p.face}];
+    for (std::size_t v = 0; v < plan.views.size(); ++v) {
+        const PlannedView& p = plan.views[v];
+        const LightSettings& light = settings.lights[p.view.light];
+        ViewState& state = views_[p.view.id()];
         const ShadowMapArray& array = arrays_.at(p.group);
         if (std::string error = state.map.attach(array, p.layer); !error.empty()) {
             stats.error = error;
             return stats;
         }
         ShadowViewStats entry;
-        entry.light = p.light;
-        entry.face = p.face;
-        entry.name = "light " + std::to_string(p.light) + (p.face >= 0 ? std::string(" ") + cubeFaces()[std::size_t(p.face)].name : "");
+        entry.light = p.view.light;
+        entry.kind = p.view.kind;
+        entry.index = p.view.index;
+        entry.face = p.view.cubeFace();
+        entry.name = viewName(p.view);
         entry.hasView = true;
-        entry.space = p.space;
+        entry.space = p.view.space;
         entry.resolution = array.resolution();
         entry.format = array.format();
 
-        int inVolume = 0;
-        for (const GpuDraw& draw : gpuScene_->draws()) inVolume += casterInVolume(draw, p.space);
-        ViewInputs inputs{fingerprint, p.space.viewProjection(), light, state.map.generation(), inVolume == 0};
-        const std::string reason = viewReason(state.rendered, inputs);
-        if (reason.empty()) {
-            entry.reason = "unchanged: light, casters and shadow settings are the same";
-        } else if (!volumesOverlap(p.space.volumeViewProjection(), stats.cameraViewProjection)) {
-            // Its map is not read by any visible pixel: rendered once the camera sees its volume.
-            entry.reason = "skipped: its volume misses the camera's view";
-            anySkippedForOtherReason = true;
-        } else if (inVolume == 0) {
-            clearShadowMap(state.map, p.space.reversedZ);  // read as lit everywhere; no draw
+        const ViewInputs inputs{fingerprint, p.view.space.viewProjection(), light, state.map.generation(),
+                                p.castersInVolume == 0};
+        const ViewDecision decision = decideView(
+            state.rendered, inputs, volumesOverlap(p.view.space.volumeViewProjection(), stats.cameraViewProjection));
+        entry.reason = decision.reason;
+        switch (decision.action) {
+        case ViewAction::Keep: break;
+        case ViewAction::SkipUnseen: anySkippedForOtherReason = true; break;
+        case ViewAction::Clear:
+            clearShadowMap(state.map, p.view.space.reversedZ);  // read as lit everywhere; no draw
             state.rendered = inputs;
-            entry.reason = "skipped: no caster in its volume (map cleared)";
             anySkippedForOtherReason = true;
-        } else {
+            break;
+        case ViewAction::Render: {
             const int timed = PassTimer::kFirstViewPass + int(v);
             timer_.begin(timed);
             const ShadowPassCounts counts =
-                shadowPass_->run(*gpuScene_, p.space, light.shadow, light.depthClampApplies(), state.map);
+                shadowPass_->run(*gpuScene_, p.view.space, light.shadow, light.depthClampApplies(), state.map);
             timer_.end(timed);
             state.rendered = inputs;
             entry.ran = true;
-            entry.reason = reason;
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
             entry.castersSkipped = counts.castersSkipped;
@@ -276,13 +221,14 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
                 shadowMilliseconds += *entry.milliseconds;
                 anyMilliseconds = true;
             }
-            const std::string line = planned.size() == 1 ? reason : entry.name + ": " + reason;
-            ranReasons.push_back(line);
+            ranReasons.push_back(plan.views.size() == 1 ? decision.reason : entry.name + ": " + decision.reason);
+            break;
+        }
         }
         stats.views.push_back(entry);
     }
     std::stable_sort(stats.views.begin(), stats.views.end(), [](const ShadowViewStats& a, const ShadowViewStats& b) {
-        return a.light != b.light ? a.light < b.light : a.face < b.face;
+        return a.light != b.light ? a.light < b.light : a.index < b.index;
     });
     for (const auto& [group, array] : arrays_) stats.shadowMapBytes += array.memoryBytes();
     if (!ranReasons.empty()) {
@@ -290,17 +236,17 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
                                                                          : std::nullopt};
     } else {
         stats.shadowPass = {false,
-                            planned.empty() ? "no light casts a shadow"
+                            plan.views.empty() ? "no light casts a shadow"
                             : anySkippedForOtherReason ? "skipped: no view needed rendering (see the views)"
                                                        : "unchanged: light, casters and shadow settings are the same",
                             std::nullopt};
     }
 
     // The first view: what one-light reports (bias, the map viewer, the probe) describe.
-    if (!planned.empty()) {
-        const PlannedView& first = planned.front();
-        firstView_ = {first.light, first.face};
-        const ShadowMap& map = views_.at(firstView_).map;
+    if (!plan.views.empty()) {
+        const ShadowView& first = plan.views.front().view;
+        firstView_ = first.id();
+        const ShadowMap& map = views_.at(first.id()).map;
         stats.light = first.space;
         stats.shadowMapResolution = map.resolution();
         stats.shadowMapFormat = map.format();
@@ -317,7 +263,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         if (clamps && !shadowPass_->hasPolygonOffsetClamp())
             stats.warnings.push_back("shadow.depthBiasClamp: glPolygonOffsetClamp is not available; the clamp is ignored");
     } else {
-        firstView_ = {0, -2};
+        firstView_.reset();
     }
 
     // The main pass: every enabled light, each casting one with its map array and layer.
@@ -329,7 +275,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     in.viewProjection = stats.cameraViewProjection;
     in.cameraPosition = camera.position - stats.renderOrigin;
     in.renderOrigin = stats.renderOrigin;
-    std::map<GroupKey, int> arrayIndex;
+    std::map<MapGroup, int> arrayIndex;
     for (const auto& [group, array] : arrays_) {
         std::vector<GLuint>& list = group.cube ? in.mapsCube : in.maps2D;
         arrayIndex[group] = int(list.size());
@@ -340,9 +286,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         if (!settings.lights[i].enabled) continue;
         MainPassLight l;
         l.settings = &settings.lights[i];
-        const auto casting = std::find_if(planned.begin(), planned.end(), [&](const PlannedView& p) { return p.light == i; });
-        if (casting != planned.end()) {
-            l.space = &casting->space;
+        const auto casting = std::find_if(plan.views.begin(), plan.views.end(),
+                                          [&](const PlannedView& p) { return p.view.light == i; });
+        if (casting != plan.views.end()) {
+            l.space = &casting->view.space;
             l.mapArray = arrayIndex.at(casting->group);
             l.layer = casting->group.cube ? casting->layer / 6 : casting->layer;
         }

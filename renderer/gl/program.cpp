@@ -2,6 +2,7 @@
 
 #include "gl/shader_sources.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace shadowlab::gl {
@@ -18,35 +19,88 @@ std::string infoLog(GLuint object, GetParameter getParameter, GetLog getLog) {
     return log;
 }
 
-}  // namespace
-
-std::string preprocessedSource(const std::string& file, const std::vector<std::string>& defines) {
+const std::string& embeddedSource(const std::string& file) {
     const auto& sources = embeddedShaderSources();
-    auto it = sources.find(file);
+    const auto it = sources.find(file);
     if (it == sources.end()) throw std::runtime_error("shader source not embedded: " + file);
-    const std::string& text = it->second;
+    return it->second;
+}
+
+// `text` with each `#include "name"` line replaced by the embedded file (recursively, each file once), preceded by
+// "#line 1 K" (K: the file's number in `files`) and followed by a #line back to the includer's next line.
+std::string expandIncludes(const std::string& text, int number, std::vector<std::string>& files) {
+    std::string out;
+    std::size_t lineNumber = 0, begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(begin, end - begin);
+        ++lineNumber;
+        begin = end + 1;
+        if (line.rfind("#include", 0) != 0) {
+            out += line + "\n";
+            continue;
+        }
+        const std::size_t open = line.find('"'), close = line.rfind('"');
+        if (open == std::string::npos || close <= open)
+            throw std::runtime_error("shader " + files[std::size_t(number)] + " line " + std::to_string(lineNumber) +
+                                     ": #include needs a \"file\" name");
+        const std::string name = line.substr(open + 1, close - open - 1);
+        if (std::find(files.begin(), files.end(), name) == files.end()) {
+            files.push_back(name);
+            const int included = int(files.size()) - 1;
+            out += "#line 1 " + std::to_string(included) + "\n";
+            out += expandIncludes(embeddedSource(name), included, files);
+        }
+        out += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(number) + "\n";
+    }
+    return out;
+}
+
+std::string preprocess(const std::string& file, const std::vector<std::string>& defines, const std::string& source,
+                       std::vector<std::string>& files) {
     // Keep "#version" first: defines go right after its line.
     std::size_t versionEnd = 0;
-    if (text.rfind("#version", 0) == 0) versionEnd = text.find('\n') + 1;
-    std::string out = text.substr(0, versionEnd);
+    if (source.rfind("#version", 0) == 0) versionEnd = source.find('\n') + 1;
+    std::string out = source.substr(0, versionEnd);
     for (const std::string& d : defines) out += "#define " + d + "\n";
-    out += "#line 2\n";
-    out += text.substr(versionEnd);
+    out += "#line 2 0\n";
+    files = {file};
+    out += expandIncludes(source.substr(versionEnd), 0, files);
     return out;
+}
+
+// "source 1 = shadow/view_select.glsl, ...": which file each #line number is, for the compiler's log.
+std::string sourceLegend(const std::vector<std::string>& files) {
+    std::string legend;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        legend += (i ? ", " : "(sources: ") + std::to_string(i) + " = " + files[i];
+    return legend + ")";
+}
+
+}  // namespace
+
+std::string preprocessedSource(const std::string& file, const std::vector<std::string>& defines,
+                               const std::string& text) {
+    std::vector<std::string> files;
+    return preprocess(file, defines, text.empty() ? embeddedSource(file) : text, files);
 }
 
 Program buildProgram(const std::vector<ShaderStage>& stages, const std::vector<std::string>& defines) {
     Program program(glCreateProgram());
     std::vector<Shader> shaders;
     for (const ShaderStage& stage : stages) {
-        std::string source = preprocessedSource(stage.file, defines);
+        std::vector<std::string> files;
+        const std::string source =
+            preprocess(stage.file, defines, stage.text.empty() ? embeddedSource(stage.file) : stage.text, files);
         Shader shader(glCreateShader(stage.type));
         const char* text = source.c_str();
         glShaderSource(shader.id(), 1, &text, nullptr);
         glCompileShader(shader.id());
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
-        if (ok != GL_TRUE) throw std::runtime_error("compiling " + stage.file + ":\n" + infoLog(shader.id(), glGetShaderiv, glGetShaderInfoLog));
+        if (ok != GL_TRUE) throw std::runtime_error("compiling " + stage.file + " " + sourceLegend(files) + ":\n" +
+                                     infoLog(shader.id(), glGetShaderiv, glGetShaderInfoLog));
         glAttachShader(program.id(), shader.id());
         shaders.push_back(std::move(shader));
     }

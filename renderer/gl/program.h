@@ -1,6 +1,8 @@
 #pragma once
 // Links GLSL programs from the embedded shader sources, with #defines prepended after #version so one source
-// file yields the shader variants the renderer needs.
+// file yields the shader variants the renderer needs. A line `#include "common/alpha_test.glsl"` is replaced by that
+// embedded file (each file once per stage; #line keeps the compiler's line numbers, and a failure names the files),
+// so a snippet several shaders need is written once.
 #include "gl/gl_objects.h"
 
 #include <string>
@@ -11,13 +13,15 @@ namespace shadowlab::gl {
 struct ShaderStage {
     GLenum type;                       // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER
     std::string file;                  // name under shaders/, e.g. "main.frag.glsl"
+    std::string text;                  // when not empty: the source itself (tests), `file` only names it
 };
 
 // Defines are "NAME" or "NAME VALUE". Throws std::runtime_error with the compiler/linker log on failure
 // (a shader that does not compile is a bug in the tool, not a user error).
 Program buildProgram(const std::vector<ShaderStage>& stages, const std::vector<std::string>& defines);
 
-// The full text handed to the compiler for one stage (for logs and tests).
-std::string preprocessedSource(const std::string& file, const std::vector<std::string>& defines);
+// The full text handed to the compiler for one stage (for logs and tests): the embedded `file`, or `text` when given.
+std::string preprocessedSource(const std::string& file, const std::vector<std::string>& defines,
+                               const std::string& text = {});
 
 }  // namespace shadowlab::gl

@@ -134,7 +134,7 @@ std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Boun
     const glm::dmat3 basis = lightBasis(ls.direction);
 
     // The scene's bounding sphere, relative to the render origin (empty scenes get a unit sphere).
-    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) - origin : glm::dvec3(bounds.center()) - origin;
+    const glm::dvec3 center = bounds.centreOrOrigin() - origin;
     const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
 
     if (light.type == LightType::Directional) {
@@ -203,7 +203,7 @@ const std::array<CubeFace, 6>& cubeFaces() {
 std::optional<std::array<LightSpace, 6>> buildCubeFaceSpaces(const LightSettings& light, const Bounds& bounds,
                                                              const glm::dvec3& origin, std::string& error) {
     const glm::dvec3 position = glm::dvec3(light.position) - origin;
-    const glm::dvec3 center = bounds.empty ? glm::dvec3(0.0) - origin : glm::dvec3(bounds.center()) - origin;
+    const glm::dvec3 center = bounds.centreOrOrigin() - origin;
     const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
     const double distance = glm::length(center - position);
     double nearPlane = light.projection.nearPlane, farPlane = light.projection.farPlane;

@@ -37,7 +37,7 @@ struct LightSpace {
     // The world size of one shadow-map texel at distance `viewDepth` from the light (spot) or anywhere (directional).
     double texelSizeAt(double viewDepth) const;
     // The stored (window) depth of a clip-space point, in this view's convention: the one CPU copy of the shader's
-    // toLightTexture depth (main.frag.glsl).
+    // toLightTexture depth (shaders/shadow/light_data.glsl).
     double windowDepth(const glm::dvec4& clip) const;
     // Texture coordinates (x, y in [0, 1] inside the map) and window depth of a clip-space point.
     glm::dvec3 textureOf(const glm::dvec4& clip) const;

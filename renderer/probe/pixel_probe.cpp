@@ -4,6 +4,7 @@
 
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
+#include "views/view_select.h"
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -18,7 +19,7 @@ namespace shadowlab {
 namespace {
 
 // Window-space texture coordinate (x, y in [0, 1]) and depth of a render-origin-relative point in the view's depth
-// convention, as toLightTexture in main.frag.glsl computes it (there in float).
+// convention, as toLightTexture in shaders/shadow/light_data.glsl computes it (there in float).
 glm::dvec3 toLightTexture(const LightSpace& light, const glm::dvec3& p) {
     return light.textureOf(light.viewProjection() * glm::dvec4(p, 1.0));
 }
@@ -65,17 +66,26 @@ std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w
 
 namespace {
 
-// The cube face a direction from a point light selects (GL's rule: the largest magnitude, +X,-X,+Y,-Y,+Z,-Z), among
-// that light's views of the frame; `fallback` when the frame lacks it.
-const ShadowViewStats& cubeFaceView(const std::vector<ShadowViewStats>& views, const glm::dvec3& d,
-                                    const ShadowViewStats& fallback) {
-    const glm::dvec3 a = glm::abs(d);
-    const int face = a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0 : 1)
-                     : a.y >= a.z             ? (d.y >= 0.0 ? 2 : 3)
-                                              : (d.z >= 0.0 ? 4 : 5);
-    for (const ShadowViewStats& v : views)
-        if (v.hasView && v.light == fallback.light && v.face == face) return v;
-    return fallback;
+// The frame's views of the light holding `first` (their stats, in planning order) and, beside them, as ShadowViews
+// for the view selection (views/view_select.h).
+struct FrameLightViews {
+    std::vector<const ShadowViewStats*> stats;
+    std::vector<ShadowView> views;
+    // The stats of the view that holds render-origin-relative point p (the first view when none does).
+    const ShadowViewStats& holding(const glm::dvec3& p) const {
+        const int v = selectView(views, p).view;
+        return *stats[std::size_t(std::max(v, 0))];
+    }
+};
+
+FrameLightViews frameLightViews(const std::vector<ShadowViewStats>& all, const ShadowViewStats& first) {
+    FrameLightViews out;
+    for (const ShadowViewStats& v : all)
+        if (v.hasView && v.light == first.light) {
+            out.stats.push_back(&v);
+            out.views.push_back({v.light, v.kind, v.index, v.space});
+        }
+    return out;
 }
 
 }  // namespace
@@ -156,8 +166,9 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         return r;
     }
     const bool cube = view->face >= 0;
-    if (cube) view = &cubeFaceView(stats_.views, p - view->space.position, *view);
-    const ShadowMap* faceMap = renderer_->viewMap(view->light, view->face);
+    const FrameLightViews lightViews = frameLightViews(stats_.views, *view);
+    view = &lightViews.holding(p);
+    const ShadowMap* faceMap = renderer_->viewMap({view->light, view->kind, view->index});
     r.face = view->face;
     r.viewName = view->name;
     const LightSpace* space = &view->space;
@@ -211,8 +222,8 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     const glm::dvec3 lookup = p + r.shadingNormal * offsetWorld;
     // The GPU picks the cube face of the lookup (after the normal offset), not of the point.
     if (cube) {
-        view = &cubeFaceView(stats_.views, lookup - space->position, *view);
-        faceMap = renderer_->viewMap(view->light, view->face);
+        view = &lightViews.holding(lookup);
+        faceMap = renderer_->viewMap({view->light, view->kind, view->index});
         space = &view->space;
         r.face = view->face;
         r.viewName = view->name;
@@ -275,7 +286,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         t.offsetTexels = tap.offsetTexels;
         t.bilinear = tap.bilinear;
         t.texelCoord = (glm::dvec2(r.lightTexture) + tap.offsetTexels * texelStep) * double(res);
-        // A lookup inside the map keeps its taps half a texel inside its edge (main.frag.glsl's shadow2D).
+        // A lookup inside the map keeps its taps half a texel inside its edge (shaders/shadow/lookup_2d.glsl).
         if (r.insideMap) t.texelCoord = glm::clamp(t.texelCoord, glm::dvec2(0.5), glm::dvec2(double(res) - 0.5));
         Candidate c;
         for (int axis = 0; axis < 2; ++axis) {
@@ -327,7 +338,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         const Candidate& c = candidates[k];
         t.value = t.low = t.high = 0.0;
         // Receiver-plane bias: a nearest tap compares the plane at its texel's centre, a bilinear one at the tap.
-        // (to the tap actually read: after the clamp inside the map's edge, as main.frag.glsl does)
+        // (to the tap actually read: after the clamp inside the map's edge, as shaders/shadow/lookup_2d.glsl does)
         const glm::dvec2 toPlane = t.bilinear ? t.texelCoord - r.texelCoord
                                               : glm::floor(t.texelCoord) + 0.5 - r.texelCoord;
         const double planeTerm = glm::dot(plane, toPlane);

@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/ext/vector_double3.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -71,6 +72,7 @@ struct Bounds {
     glm::vec3 max{0.0f};
     bool empty = true;
     glm::vec3 center() const { return (min + max) * 0.5f; }
+    glm::dvec3 centreOrOrigin() const { return empty ? glm::dvec3(0.0) : glm::dvec3(center()); }  // empty: the origin
     float radius() const;  // half the diagonal (bounding sphere around the box)
     void extend(const glm::vec3& p);  // ignores non-finite points
 };

@@ -15,7 +15,7 @@ namespace {
 
 constexpr GLuint kLightsBinding = 0;
 
-// std140 layout of main.frag.glsl's LightData.
+// std140 layout of LightData (shaders/shadow/light_data.glsl).
 struct LightBlock {
     glm::mat4 viewProjection{1.0f};
     glm::vec4 position{0.0f};

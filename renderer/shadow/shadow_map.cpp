@@ -46,16 +46,6 @@ std::uint64_t nextGeneration() {
 
 }  // namespace
 
-std::string shadowResolutionRefusal(int resolution, int maxTextureSize, const std::string& kept) {
-    // The key's own range, narrowed by the GPU: the same bounds the preset table states.
-    const SettingsField& key = *findSettingsField("shadow.resolution");
-    const int lo = int(key.min), hi = std::min(int(key.max), maxTextureSize);
-    if (resolution >= lo && resolution <= hi) return {};
-    return "shadow.resolution: " + std::to_string(resolution) + " is outside what this GPU allows [" +
-           std::to_string(lo) + ", " + std::to_string(hi) + "] (GL_MAX_TEXTURE_SIZE " + std::to_string(maxTextureSize) +
-           "); " + kept;
-}
-
 std::string ShadowMapArray::ensure(bool cube, int resolution, DepthFormat format, int layers, int maxTextureSize,
                                    int maxArrayLayers) {
     if (texture_ && cube == cube_ && resolution == resolution_ && format == format_ && layers == layers_) return {};

@@ -3,6 +3,7 @@
 // renders into, and the comparison sampler the main pass reads them through.
 #include "gl/gl_objects.h"
 #include "settings/settings.h"
+#include "views/map_group.h"
 
 #include <cstdint>
 #include <memory>
@@ -20,9 +21,6 @@ int depthFormatBytes(DepthFormat format);
 // The maps of one resolution/format group: a 2D texture array (directional and spot views, a layer each) or a
 // cube-map array (point lights, six layers each). Immutable storage, reallocated only when the group's size, format
 // or layer count changes; an allocation the GPU refuses keeps the previous one.
-// "" when the shadow.resolution key and this GPU allow `resolution`, else the message saying the range and `kept`.
-std::string shadowResolutionRefusal(int resolution, int maxTextureSize, const std::string& kept);
-
 class ShadowMapArray {
 public:
     // Returns "" on success (or when nothing changed), else why the new array could not be made.

@@ -37,7 +37,7 @@ ShadowPass::CasterProgram::CasterProgram(gl::Program built) : program(std::move(
     uvTransform = glGetUniformLocation(p, "uUvTransform");
     alphaFactor = glGetUniformLocation(p, "uAlphaFactor");
     alphaCutoff = glGetUniformLocation(p, "uAlphaCutoff");
-    baseColor = glGetUniformLocation(p, "uBaseColor");
+    baseColor = glGetUniformLocation(p, "uBaseColorTexture");
 }
 
 ShadowPass::ShadowPass()
@@ -57,27 +57,14 @@ void clearShadowMap(const ShadowMap& map, bool reversedZ) {
     glClear(GL_DEPTH_BUFFER_BIT);
 }
 
-bool casterInVolume(const GpuDraw& draw, const LightSpace& light) {
-    if (!draw.hasFiniteBounds) return true;  // cannot tell: draw it (non-finite vertices are dropped at load)
-    const glm::dvec3 c = glm::dvec3(light.view * glm::dvec4(glm::dvec3(draw.boundsCenter), 1.0));
-    const double r = draw.boundsRadius;
-    const double depth = -c.z;  // distance along the light
-    if (depth - r > light.farPlane) return false;
-    if (!light.perspective) {
-        // Casters in front of the near plane still cast (depth clamp), so only the sides and far plane cull.
-        const double half = 0.5 * light.orthoSize;
-        return std::abs(c.x) - r <= half && std::abs(c.y) - r <= half;
-    }
-    if (depth + r < 0.0) return false;  // entirely behind the light
-    // Sphere against the four side planes of the square frustum (normals pointing inward).
-    const double t = light.tanHalfFov;
-    const double norm = std::sqrt(1.0 + t * t);
-    for (int axis = 0; axis < 2; ++axis) {
-        const double lateral = axis == 0 ? c.x : c.y;
-        if ((depth * t - lateral) / norm < -r) return false;
-        if ((depth * t + lateral) / norm < -r) return false;
-    }
-    return true;
+CasterSphere casterSphere(const GpuDraw& draw) {
+    return {glm::dvec3(draw.boundsCenter), double(draw.boundsRadius), draw.hasFiniteBounds};
+}
+
+std::vector<CasterSphere> casterSpheres(const GpuScene& scene) {
+    std::vector<CasterSphere> spheres;
+    for (const GpuDraw& draw : scene.draws()) spheres.push_back(casterSphere(draw));
+    return spheres;
 }
 
 ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light, const ShadowMapSettings& shadow,
@@ -106,7 +93,7 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     scene.bind();
     const Scene& model = scene.scene();
     for (const GpuDraw& draw : scene.draws()) {
-        if (!casterInVolume(draw, light)) {
+        if (!casterInVolume(casterSphere(draw), light)) {
             ++counts.castersSkipped;
             continue;
         }

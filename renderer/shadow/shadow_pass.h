@@ -6,15 +6,17 @@
 #include "gl/gl_objects.h"
 #include "light/light_space.h"
 #include "shadow/shadow_map.h"
+#include "views/shadow_planner.h"
 
 #include <set>
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
-// Whether a draw's bounding sphere reaches a view's volume (its sides and far plane; casters before the near plane of
-// a directional view still cast through depth clamp). Draws without finite bounds count as inside.
-bool casterInVolume(const GpuDraw& draw, const LightSpace& light);
+// A draw's bounding sphere, as the planner tests it against each view's volume (views/shadow_planner.h).
+CasterSphere casterSphere(const GpuDraw& draw);
+std::vector<CasterSphere> casterSpheres(const GpuScene& scene);
 
 // Clears a map to the far depth (1, or 0 reversed-Z): a view with no caster in its volume reads as lit everywhere.
 void clearShadowMap(const ShadowMap& map, bool reversedZ);

@@ -1,0 +1,56 @@
+#include "views/shadow_view.h"
+
+namespace shadowlab {
+
+std::string viewSuffix(ShadowViewKind kind, int index) {
+    switch (kind) {
+    case ShadowViewKind::Single: return "";
+    case ShadowViewKind::CubeFace: return index >= 0 && index < 6 ? cubeFaces()[std::size_t(index)].name : "?";
+    }
+    return "";
+}
+
+std::string viewName(std::size_t light, ShadowViewKind kind, int index) {
+    const std::string suffix = viewSuffix(kind, index);
+    return "light " + std::to_string(light) + (suffix.empty() ? "" : " " + suffix);
+}
+
+std::optional<std::size_t> findView(const std::vector<ShadowView>& lightViews, const std::string& text,
+                                    std::string& error) {
+    std::string choices;
+    for (std::size_t v = 0; v < lightViews.size(); ++v) {
+        const std::string suffix = viewSuffix(lightViews[v].kind, lightViews[v].index);
+        if (!suffix.empty() && suffix == text) return v;
+        choices += (choices.empty() ? "" : ", ") + suffix;
+    }
+    const std::string light = lightViews.empty() ? "the light" : "light " + std::to_string(lightViews.front().light);
+    error = choices.empty() || lightViews.size() < 2
+                ? "--view " + text + ": " + light + " has one view (--view chooses among a point light's cube faces)"
+                : "--view " + text + ": " + light + " has no such view (its views: " + choices + ")";
+    return std::nullopt;
+}
+
+glm::dvec3 renderOriginOf(const Bounds& bounds) {
+    return bounds.centreOrOrigin();
+}
+
+std::optional<std::vector<ShadowView>> buildLightViews(const LightSettings& light, std::size_t lightIndex,
+                                                       const Bounds& bounds, const glm::dvec3& origin,
+                                                       std::string& error) {
+    std::vector<ShadowView> views;
+    std::string why;
+    if (light.type == LightType::Point) {
+        const auto faces = buildCubeFaceSpaces(light, bounds, origin, why);
+        if (faces)
+            for (int f = 0; f < 6; ++f) views.push_back({lightIndex, ShadowViewKind::CubeFace, f, (*faces)[std::size_t(f)]});
+    } else if (const auto space = buildLightSpace(light, bounds, origin, why)) {
+        views.push_back({lightIndex, ShadowViewKind::Single, 0, *space});
+    }
+    if (views.empty()) {
+        error = "lights." + std::to_string(lightIndex) + ": " + why;
+        return std::nullopt;
+    }
+    return views;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,29 @@
+#include "views/view_select.h"
+
+#include <glm/common.hpp>
+
+namespace shadowlab {
+
+int cubeFaceOf(const glm::dvec3& d) {
+    const glm::dvec3 a = glm::abs(d);
+    const int axis = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+    return 2 * axis + (d[axis] < 0.0 ? 1 : 0);
+}
+
+ViewChoice selectView(const std::vector<ShadowView>& lightViews, const glm::dvec3& p) {
+    if (lightViews.empty()) return {};
+    if (lightViews.front().kind == ShadowViewKind::CubeFace) {
+        const int face = cubeFaceOf(p - lightViews.front().space.position);
+        for (std::size_t v = 0; v < lightViews.size(); ++v)
+            if (lightViews[v].index == face) return {int(v)};
+        return {};
+    }
+    return {0};
+}
+
+const ShadowView* viewHolding(const std::vector<ShadowView>& lightViews, const glm::dvec3& p) {
+    const ViewChoice choice = selectView(lightViews, p);
+    return choice.view < 0 ? nullptr : &lightViews[std::size_t(choice.view)];
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,56 @@
+// The shadow factor through a point light's cube map: the filter's taps moved across the face, each compared with
+// the receiver's depth in the face its direction selects (shadow/view_select.glsl).
+#include "shadow/light_data.glsl"
+#include "shadow/filter_taps.glsl"
+#include "shadow/view_select.glsl"
+
+#if MAP_ARRAYS_CUBE > 0
+uniform samplerCubeArrayShadow uMapsCube[MAP_ARRAYS_CUBE];
+#endif
+
+// Map arrays are read with constant indices only (see shadow/lookup_2d.glsl).
+#if MAP_ARRAYS_CUBE > 0
+float sampleMapCube(int map, vec4 coord, float ref) {
+#if MAP_ARRAYS_CUBE == 1
+    return texture(uMapsCube[0], coord, ref);
+#else
+    float result = 1.0;
+    for (int k = 0; k < MAP_ARRAYS_CUBE; ++k)
+        if (k == map) result = texture(uMapsCube[k], coord, ref);
+    return result;
+#endif
+}
+#endif
+
+#if MAP_ARRAYS_CUBE > 0
+// The stored value of a cube face is that face's perspective depth, so the reference is the receiver's depth in the
+// face the tap's direction selects: its distance along that face's axis, through the same near/far mapping.
+float faceDepth(vec3 fromLight, vec3 tapDirection, LightData L) {
+    vec3 axis = cubeFaceAxis(cubeFaceOf(tapDirection));
+    float near = L.depth.x, far = L.depth.y;
+    float z = max(dot(fromLight, axis), near);
+    if (reversedZ(L)) return near * (far - z) / (z * (far - near));  // zero-to-one, near 1, far 0
+    return ((far + near) / (far - near) - 2.0 * far * near / ((far - near) * z)) * 0.5 + 0.5;
+}
+
+float shadowCube(LightData L, vec3 lookup) {
+    vec3 v = lookup - L.position.xyz;
+    vec3 a = abs(v);
+    float major = max(a.x, max(a.y, a.z));
+    // The face's two tangent axes: taps move across the face by texels (2 / resolution at unit distance).
+    int axis = cubeFaceOf(v) / 2;
+    vec3 s = axis == 0 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+    vec3 t = axis == 1 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
+    float texelAtMajor = 2.0 * L.shadow.z * major;
+    int map = int(L.shadow.x);
+    float sum = 0.0;
+    FOR_EACH_TAP {
+        vec2 o = TAP_OFFSET * uFilterScale * texelAtMajor;
+        vec3 d = v + o.x * s + o.y * t;
+        float ref = clampToFar(L, faceDepth(v, d, L));
+        sum += sampleMapCube(map, vec4(d, L.shadow.y), ref);
+    }
+    return sum / float(FILTER_TAPS);
+}
+#endif
+
