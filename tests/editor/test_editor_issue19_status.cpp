@@ -65,6 +65,47 @@ TEST(EditorStatusIssue19, SavedPresetStaysOnTheStatusLineWhileAutoMeasuresUntilT
     EXPECT_EQ(statusText(h).rfind("accuracy of light 0", 0), 0u) << statusText(h);
 }
 
+// A frame's error that lasts (a map the GPU refuses, with no earlier map to keep) was said again by the next frame
+// drawn after any other message, so it replaced the answer to the user's next action on the status line.
+TEST(EditorStatusIssue19, AFramesLastingErrorIsSaidOnceNotAgainAfterTheUsersNextAction) {
+    const std::filesystem::path folder = testFolder("status-lasting-error");
+    const PresetLoadResult base = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/default.json");
+    ASSERT_TRUE(base.settings.has_value());
+    {
+        EditorHarness probe(testOptions(folder));
+        if (probe.state().limits.maxTextureSize >= 32768)
+            GTEST_SKIP() << "needs GL_MAX_TEXTURE_SIZE below the key's 32768 (llvmpipe: 16384) for a refused map";
+    }
+    // A preset may carry a map size this GPU refuses (presets do not know the GPU): its second light has no map.
+    Settings settings = *base.settings;
+    settings.lights.push_back(settings.lights[0]);
+    settings.lights[1].shadow.resolution = 32768;
+    const std::string path = (folder / "user-presets" / "too-big.json").string();
+    std::filesystem::create_directories(folder / "user-presets");
+    ASSERT_EQ(savePresetFile(path, settings, "too-big"), "");
+    EditorOptions options = testOptions(folder);
+    options.preset = path;
+    EditorHarness h(options, 1280, 720);
+    h.settle();
+    auto said = [&](const std::string& text) {
+        int n = 0;
+        for (const Message& m : h.state().messages) n += m.text == text;
+        return n;
+    };
+    ASSERT_NE(h.state().lastMessage(), nullptr);
+    const std::string error = h.state().lastMessage()->text;
+    ASSERT_TRUE(h.state().lastMessage()->error) << error;
+    ASSERT_NE(error.find("32768"), std::string::npos) << error;
+
+    h.click("preset.save");
+    const std::string saved = "saved preset " + path;
+    ASSERT_EQ(statusText(h), saved);
+    h.drag("viewport.image", 60.0f, 0.0f);  // the camera moves: new frames, the same refused map
+    h.frame(3);
+    EXPECT_EQ(said(error), 1) << "the lasting error was said again";
+    EXPECT_EQ(statusText(h), saved);
+}
+
 TEST(EditorStatusIssue19, AnErrorReplacesAStandingResultAndAutomaticNewsDoesNot) {
     EditorState state;
     state.say("saved preset a.json");
