@@ -4,7 +4,7 @@
 // that surfaces facing away from the light (striped in the shadow view, dark anyway) are not counted.
 #include "editor_harness.h"
 
-#include "editor/cause_shares.h"
+#include "accuracy/cause_shares.h"
 #include "settings/preset_io.h"
 
 #include <chrono>

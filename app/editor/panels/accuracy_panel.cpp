@@ -5,7 +5,7 @@
 // line when the numbers no longer describe the view; and Suggest bias: the search's path, its result applied to the
 // settings, and Save as preset. Flicker: the view played under a camera or light motion (flicker.h), its figures
 // and its overlay.
-#include "editor/cause_shares.h"
+#include "accuracy/cause_shares.h"
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 

@@ -1,8 +1,8 @@
-#include "editor/cause_shares.h"
+#include "accuracy/cause_shares.h"
 
 #include <cstdio>
 
-namespace shadowlab::editor {
+namespace shadowlab {
 
 std::string groupedCount(std::size_t n) {
     std::string digits = std::to_string(n), out;
@@ -35,4 +35,4 @@ std::string causeShares(const AccuracyReport& report, MismatchCause cause) {
     return text + " (" + groupedCount(c.causePixels[i]) + " px)";
 }
 
-}  // namespace shadowlab::editor
+}  // namespace shadowlab
