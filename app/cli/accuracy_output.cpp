@@ -1,5 +1,6 @@
 #include "cli/accuracy_output.h"
 
+#include "accuracy/cause_shares.h"
 #include "settings/settings_fields.h"
 
 #include <cstdio>
@@ -32,10 +33,9 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
         const std::size_t n = c.causePixels[std::size_t(cause)];
         if (n == 0) continue;
         const CauseInfo& info = causeInfo(cause);
-        out << "    " << std::left << std::setw(42) << info.name << std::right << std::setw(8) << n << " pixels, "
-            << std::setw(8) << c.causeWrong[std::size_t(cause)] << " wrong (" << std::setprecision(1)
-            << std::setw(5) << r.causePercentOfWrong(cause) << " % of wrong)  -> " << info.remedy << "\n"
-            << std::setprecision(3);
+        // Each cause's share of what it explains: acne of acne, leak of leak, wrong of wrong (cause_shares.h).
+        out << "    " << std::left << std::setw(42) << info.name << causeShares(r, cause) << std::right << "  -> "
+            << info.remedy << "\n";
     }
     out << "  pixels " << c.pixels << ": measured " << c.measured << ", background " << c.background
         << ", facing away " << c.facingAway << ", outside the cone " << c.outsideCone << ", beyond the range "
@@ -94,7 +94,11 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
     for (MismatchCause cause : allCauses())
         causes[causeInfo(cause).key] = {{"pixels", c.causePixels[std::size_t(cause)]},
                                         {"wrong", c.causeWrong[std::size_t(cause)]},
-                                        {"percentOfWrong", r.causePercentOfWrong(cause)}};
+                                        {"percentOfWrong", r.causePercentOfWrong(cause)},
+                                        {"acne", c.causeAcne[std::size_t(cause)]},
+                                        {"percentOfAcne", r.causePercentOfAcne(cause)},
+                                        {"leak", c.causeLeak[std::size_t(cause)]},
+                                        {"percentOfLeak", r.causePercentOfLeak(cause)}};
     nlohmann::json json = numbersToJson(r);
     json.update(nlohmann::json{
         {"metricsVersion", r.metricsVersion},

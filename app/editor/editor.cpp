@@ -8,6 +8,7 @@
 #include "scene/builtin_scenes.h"
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
+#include "settings/settings_fields.h"
 #include "settings/user_config.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -93,10 +94,83 @@ Editor::Editor(EditorOptions options) : options_(std::move(options)) {
     state_.scenePathInput = options_.scene;
     loader_.request(options_.scene);
     state_.loading = loader_.progress();
+    lastCheckedSettings_ = state_.settings;
+
+    // An autosave exists only after an exit that was not clean (a clean exit and a save remove it): offer it.
+    autosavePath_ = options_.autosavePath.empty() ? shadowlab::autosavePath().string()
+                    : options_.autosavePath == "-" ? std::string()
+                                                    : options_.autosavePath;
+    if (!autosavePath_.empty()) {
+        AutosaveRead found = readAutosave(autosavePath_);
+        if (!found.error.empty()) state_.say(found.error + " (left as it is)", true);
+        if (found.autosave) {
+            restoreOffer_ = std::move(found.autosave);
+            openRestoreDialog_ = true;
+        }
+    }
 }
 
 Editor::~Editor() {
     accuracyWorker_.reset();  // cancels a running job and joins the worker
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Autosave
+
+void Editor::keepSession() {
+    // Not before the user has answered the offer: the file still holds the work of the session that crashed.
+    if (autosavePath_.empty() || restoreOffer_) return;
+    if (!state_.preset.dirty(state_.settings)) {
+        dropAutosave();  // nothing unsaved: an older autosave would only offer stale edits
+        return;
+    }
+    if (autosaved_ && *autosaved_ == state_.settings) return;
+    std::string error = writeAutosave(autosavePath_, Autosave{state_.settings, state_.sceneSpec, state_.preset.path(),
+                                                              state_.preset.shipped(), {}});
+    if (error.empty()) {
+        autosaved_ = state_.settings;
+    } else if (error != autosaveError_) {
+        state_.say(error + " (unsaved work is not kept)", true);
+    }
+    autosaveError_ = std::move(error);
+}
+
+void Editor::keepSessionBeforeRiskyChange() {
+    if (state_.settings == lastCheckedSettings_) return;
+    const SettingsDiff diff = diffSettings(lastCheckedSettings_, state_.settings);
+    lastCheckedSettings_ = state_.settings;
+    if (diff.invalidates & kInvalidatesVariant) keepSession();
+}
+
+void Editor::dropAutosave() {
+    if (autosavePath_.empty() || restoreOffer_) return;
+    if (std::string error = removeAutosave(autosavePath_); !error.empty()) state_.say(error, true);
+    autosaved_.reset();
+}
+
+void Editor::restoreAutosave() {
+    Autosave a = std::move(*restoreOffer_);
+    restoreOffer_.reset();
+    // The preset they were edited from, as its baseline (so the unsaved marker shows), then the kept settings.
+    std::string note;
+    if (!a.presetPath.empty()) {
+        if (std::string error = state_.preset.load(a.presetPath, a.presetShipped, state_.settings); !error.empty())
+            note = "; its preset did not load (" + error + ")";
+    }
+    state_.settings = a.settings;
+    state_.fieldErrors.clear();
+    state_.clampSelectedLight();
+    lastCheckedSettings_ = state_.settings;
+    autosaved_ = state_.settings;  // the file holds them until a save or a clean exit
+    if (!a.scene.empty() && a.scene != state_.sceneSpec) {
+        loader_.request(a.scene);  // no question: these are the settings the user wants on it
+        state_.loading = loader_.progress();
+    } else if (state_.scene) {
+        resetCameraFromSettings();
+    }
+    state_.say("restored the unsaved settings of " + a.savedAt + " (preset " +
+               (a.presetPath.empty() ? std::string("built-in defaults") : presetNameFromPath(a.presetPath)) +
+               ", scene " + a.scene + ")" + note + "; save them to keep them");
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -125,10 +199,17 @@ void Editor::pollSceneLoad() {
             std::ostringstream text;
             text << "loaded " << done->spec << " (" << scene->triangleCount() << " triangles) in " << std::fixed
                  << std::setprecision(2) << done->seconds << " s";
+            // Edits declined with "Don't save" go now that the new scene is here (not before: the load could fail).
+            if (state_.preset.sceneLoadFinished(true, state_.settings)) {
+                state_.fieldErrors.clear();
+                state_.clampSelectedLight();
+            }
             adoptScene(std::move(scene), done->spec);
             state_.say(text.str());
         } else {
-            state_.say(done->result.error, true);
+            const bool kept = state_.preset.dirty(state_.settings);
+            state_.preset.sceneLoadFinished(false, state_.settings);
+            state_.say(done->result.error + (kept && state_.scene ? " (your unsaved edits are kept)" : ""), true);
             if (!state_.scene) {
                 // The start scene failed: show the default one so the editor is usable.
                 SceneLoadResult fallback = loadScene(kDefaultSceneSpec);
@@ -188,6 +269,7 @@ void Editor::renderViewport() {
         }
         lastRendered_.reset();
     }
+    keepSessionBeforeRiskyChange();  // also for changes made outside the UI (a search's result)
     RenderKey key{effectiveSettings(), orbit_->eye(), orbit_->target(), state_.scene.get(), w, h,
                   state_.showLightFrustum, state_.showLightFrustum ? state_.selectedLight : 0};
     // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
@@ -204,13 +286,17 @@ void Editor::renderViewport() {
 
     const double start = secondsNow();
     FrameStats stats = renderer_->render(*state_.scene, key.settings, orbit_->toCamera(), target_);
+    // A frame's error or warning is said when it appears, not again with every frame while it lasts (repeated,
+    // it would replace the result of whatever the user did meanwhile on the status line).
+    std::vector<std::string> problems = stats.ok ? stats.warnings : std::vector<std::string>{stats.error};
+    for (const std::string& problem : problems)
+        if (std::find(frameProblems_.begin(), frameProblems_.end(), problem) == frameProblems_.end())
+            state_.say(problem, true);
+    frameProblems_ = std::move(problems);
     if (!stats.ok) {
-        if (!state_.lastMessage() || state_.lastMessage()->text != stats.error) state_.say(stats.error, true);
         lastRendered_ = key;
         return;
     }
-    for (const std::string& warning : stats.warnings)
-        if (!state_.lastMessage() || state_.lastMessage()->text != warning) state_.say(warning, true);
     // A map the GPU refused (too big, out of memory): the settings go back to the map still in use.
     // The frame reports its first view's map: the GPU may have refused that light's size or format.
     const auto first = std::find_if(stats.views.begin(), stats.views.end(), [](const auto& v) { return v.hasView; });
@@ -347,8 +433,10 @@ void Editor::startSwitch(PendingSwitch pending) {
 void Editor::performSwitch(const PendingSwitch& pending) {
     switch (pending.kind) {
         case PendingSwitch::Scene:
-            // Unsaved edits were declined (or there were none): the scene opens with the preset as saved.
-            state_.preset.revert(state_.settings);
+            // Unsaved edits were declined (or there were none): the scene opens with the preset as saved, once it
+            // has loaded; until then (and if the load fails) the edits stay.
+            if (state_.preset.dirty(state_.settings)) state_.preset.discardEditsOnSceneLoad();
+            keepSession();  // a scene load compiles and allocates anew: keep the unsaved work first
             loader_.request(pending.target);
             state_.loading = loader_.progress();
             break;
@@ -366,6 +454,7 @@ void Editor::performSwitch(const PendingSwitch& pending) {
         }
         case PendingSwitch::Quit:
             quitConfirmed_ = true;
+            dropAutosave();  // a clean exit: the user saved or declined what was unsaved
             break;
     }
 }
@@ -381,6 +470,7 @@ void Editor::savePreset() {
         return;
     }
     state_.settings = saved;
+    dropAutosave();
     state_.say("saved preset " + state_.preset.path());
 }
 

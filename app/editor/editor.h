@@ -5,6 +5,7 @@
 //   ImGui::NewFrame(); editor.buildUi(); ImGui::Render();   // then draws ImGui's draw data
 // Rendering before the UI keeps every texture the UI shows valid for the frame that draws it.
 #include "editor/accuracy_worker.h"
+#include "editor/autosave.h"
 #include "editor/editor_state.h"
 #include "editor/panels/panel_registry.h"
 #include "frame/orbit_camera.h"
@@ -31,6 +32,7 @@ struct EditorOptions {
     std::string userPresetsDir;             // empty = userPresetsDir() (see settings/user_config.h)
     std::string recentFilesPath;            // empty = recentFilesPath(); "-" = do not remember
     std::string screenshotDir = "screenshots";
+    std::string autosavePath;               // empty = autosavePath() (see settings/user_config.h); "-" = none
     // Seconds on a steady clock, read for every timing decision (Auto's delay, the light animation). Empty = the
     // real steady clock; a test sets its own and moves it.
     std::function<double()> clock;
@@ -90,6 +92,9 @@ public:
     void measureFlicker() override;
     void cancelAccuracy() override;
     std::optional<AccuracyViewKey> currentView() const override { return accuracyKey(); }
+    void keepSession() override;
+    // The autosave found at start, while the user has not answered whether to restore it.
+    const std::optional<Autosave>& restoreOffer() const { return restoreOffer_; }
 
 private:
     struct PendingSwitch {
@@ -118,7 +123,7 @@ private:
     Settings effectiveSettings() const { return previewed(state_.settings); }  // the edited settings, previewed
     Settings previewed(Settings s) const;  // `s` plus the light animation's preview
     std::optional<AccuracyViewKey> accuracyKey() const;  // what a measurement now would be made for
-    void startAccuracyJob(AccuracyJobKind kind);
+    void startAccuracyJob(AccuracyJobKind kind, bool automatic = false);  // automatic: Auto's, not a button's
     void pollAccuracy();
     void adoptAccuracyResult(AccuracyJobResult result);
     void adoptFlickerResult(FlickerReport flicker, double seconds);
@@ -149,6 +154,12 @@ private:
     void drawPanels();
     void drawSidebar(Sidebar side, PanelContext& ctx, const Panel* wanted);
     void drawUnsavedChangesDialog();
+    void drawRestoreDialog();  // the autosave found at start: Restore / Discard
+    void restoreAutosave();
+    // A change of the settings that compiles shaders or allocates maps (a new variant: resolution, format, light set,
+    // filter) keeps the session first; checked after the UI and before the viewport renders, so before it acts.
+    void keepSessionBeforeRiskyChange();
+    void dropAutosave();  // a clean exit or a save: nothing unsaved to restore
     void drawSaveAsDialog();
     void drawStatusBar();
     void performSwitch(const PendingSwitch& pending);
@@ -164,6 +175,7 @@ private:
     AsyncSceneLoader loader_;
     std::optional<OrbitCamera> orbit_;
     std::optional<RenderKey> lastRendered_;
+    std::vector<std::string> frameProblems_;  // the newest rendered frame's error or warnings (said once each)
     bool cameraFromPreset_ = true;  // the next adopted scene / loaded preset sets the camera from the settings
     ImVec4 viewportRect_{0, 0, 0, 0};  // the image area, where the renderer draws
     // The camera was set before the viewport had a size: set it again (auto-framing depends on the aspect) once
@@ -187,6 +199,15 @@ private:
     std::string saveAsError_;
     bool quitConfirmed_ = false;
 
+    // Autosave (autosave.h): the file, what it holds now (not rewritten unchanged), the settings last checked for a
+    // risky change, the offer found at start and the last write error (said once).
+    std::string autosavePath_;
+    std::optional<Settings> autosaved_;
+    Settings lastCheckedSettings_;
+    std::optional<Autosave> restoreOffer_;
+    bool openRestoreDialog_ = false;
+    std::string autosaveError_;
+
     bool screenshotRequested_ = false;
     bool screenshotWithMap_ = false;
     std::optional<std::string> windowScreenshotPath_;
@@ -201,6 +222,7 @@ private:
     std::unique_ptr<AccuracyWorker> accuracyWorker_;
     std::unique_ptr<PixelProbe> probe_;  // made on the first probe (its G-buffer shaders)
     std::optional<AccuracyViewKey> accuracyJobKey_;
+    bool accuracyJobAutomatic_ = false;                   // the running job was started by Auto
     std::optional<AccuracyViewKey> lastSeenAccuracyKey_;  // the view as of the newest change
     double lastAccuracyChange_ = 0.0;                     // when the view or settings last changed
     std::optional<AccuracyViewKey> autoMeasured_;         // the view Auto last measured (never twice)

@@ -28,7 +28,7 @@ void Editor::cancelAccuracy() {
     state_.accuracy.stage = "cancelling...";
 }
 
-void Editor::startAccuracyJob(AccuracyJobKind kind) {
+void Editor::startAccuracyJob(AccuracyJobKind kind, bool automatic) {
     AccuracyState& a = state_.accuracy;
     const std::optional<AccuracyViewKey> key = accuracyKey();
     if (!key) {
@@ -39,6 +39,7 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
         queuedJob_ = kind;  // the worker is busy for a frame or so: start right after
         return;
     }
+    keepSession();  // the worker compiles and allocates its own frame: keep the unsaved work first
     AccuracyJob job;
     job.kind = kind;
     job.scene = state_.scene;  // shared: a scene switch meanwhile cannot free what the worker reads
@@ -54,6 +55,7 @@ void Editor::startAccuracyJob(AccuracyJobKind kind) {
         return;
     }
     accuracyJobKey_ = key;
+    accuracyJobAutomatic_ = automatic;
     a.running = true;
     a.runningTune = kind == AccuracyJobKind::SuggestBias;
     a.runningFlicker = kind == AccuracyJobKind::Flicker;
@@ -140,7 +142,7 @@ void Editor::pollAccuracy() {
     if (autoDue_ && !a.running && !a.liveRunning && !ImGui::IsAnyMouseDown() &&
         state_.time - lastAccuracyChange_ >= AccuracyState::kAutoDelaySeconds) {
         autoMeasured_ = now;
-        startAccuracyJob(AccuracyJobKind::Measure);
+        startAccuracyJob(AccuracyJobKind::Measure, /*automatic=*/true);
     }
 }
 
@@ -209,7 +211,11 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
                       "accuracy of light %zu: acne %.3f %%, leak %.3f %%, wrong pixels %.3f %%, mean error %.4f (%dx%d, %.2f s)",
                       key ? key->light : state_.selectedLight, result.report.acnePercent, result.report.leakPercent, result.report.wrongPercent,
                       result.report.meanError, result.report.width, result.report.height, result.seconds);
-        state_.say(text);
+        // Auto's measurement is news, not an answer: it does not hide the result of what the user just did.
+        if (accuracyJobAutomatic_)
+            state_.sayAutomatic(text);
+        else
+            state_.say(text);
     }
     a.report = std::move(result.report);
     a.reportKey = key;

@@ -19,6 +19,7 @@ bool EditorState::edit(std::string_view key, const nlohmann::json& value) {
     const Settings before = settings;
     const std::string error = applyEdit(settings, key, value, limits);
     if (error.empty()) {
+        userActed();
         fieldErrors.erase(std::string(key));
         // The key within its light and the light it names: aliases ("shadow.depthBias") and "lights.N." alike.
         const SettingsField* field = findSettingsField(key);
@@ -91,11 +92,30 @@ std::vector<const ShadowViewStats*> EditorState::selectedLightViews() const {
     return views;
 }
 
-void EditorState::say(std::string text, bool error) {
+void EditorState::log(Message message) {
     // Printed too, so scripts and users in a terminal see what the window says.
-    (error ? std::cerr : std::cout) << (error ? "shadowlab: error: " : "shadowlab: ") << text << std::endl;
-    messages.push_back(Message{std::move(text), error, time, clockStamp()});
+    (message.error ? std::cerr : std::cout) << (message.error ? "shadowlab: error: " : "shadowlab: ") << message.text
+                                            << std::endl;
+    message.serial = nextSerial_++;
+    // An action's result or any error takes the status line and stands; automatic news only when nothing stands.
+    if (!message.automatic || message.error || !statusStands_) {
+        statusSerial_ = message.serial;
+        statusStands_ = !message.automatic || message.error;
+    }
+    messages.push_back(std::move(message));
     if (messages.size() > kMessagesKept) messages.erase(messages.begin());
+}
+
+void EditorState::say(std::string text, bool error) { log(Message{std::move(text), error, time, clockStamp()}); }
+
+void EditorState::sayAutomatic(std::string text, bool error) {
+    log(Message{std::move(text), error, time, clockStamp(), /*automatic=*/true});
+}
+
+const Message* EditorState::statusMessage() const {
+    for (auto m = messages.rbegin(); m != messages.rend(); ++m)
+        if (m->serial <= statusSerial_) return &*m;  // the shown one, or (dropped from the log) the newest before it
+    return lastMessage();
 }
 
 const std::string* EditorState::fieldError(const std::string& key) const {

@@ -33,6 +33,8 @@ struct Message {
     bool error = false;
     double time = 0.0;  // seconds since the editor started
     std::string clock;  // local wall-clock time, "HH:MM:SS" (the message log shows it)
+    bool automatic = false;  // said by the editor on its own (Auto's measurement), not as a user action's result
+    long serial = 0;         // order of saying (the status line names the message it shows by it)
 };
 
 // An automatic change the editor made on top of the user's edit (e.g. DepthBias re-expressed for a new depth
@@ -118,7 +120,7 @@ struct EditorState {
 
     static constexpr std::size_t kMessagesKept = 50;
     std::vector<Message> messages;  // newest last, the last kMessagesKept
-    std::optional<UndoStep> undo;   // offered by the status line while its note is the newest message
+    std::optional<UndoStep> undo;   // offered by the status line while its note is the message it shows
     ControlRects controls;
     double time = 0.0;
 
@@ -139,9 +141,23 @@ struct EditorState {
     bool edit(std::string_view key, const nlohmann::json& value);
     // Puts back the format and DepthBias from before the step (the status line's Undo); later edits stay.
     void undoLastStep();
+    // Messages go to the log (and the terminal); the status line shows one of them. A user action's result (say)
+    // shows until the next user action or a more important message (an error); what the editor says on its own
+    // (sayAutomatic: Auto's measurement) shows only when no action result or error stands, so it never hides the
+    // answer to what the user just did.
     void say(std::string text, bool error = false);
+    void sayAutomatic(std::string text, bool error = false);
+    // A user's edit: the standing result gives way to whatever is said next.
+    void userActed() { statusStands_ = false; }
     const std::string* fieldError(const std::string& key) const;
-    const Message* lastMessage() const { return messages.empty() ? nullptr : &messages.back(); }
+    const Message* lastMessage() const { return messages.empty() ? nullptr : &messages.back(); }  // newest logged
+    const Message* statusMessage() const;  // what the status line shows (nullptr: nothing said yet)
+
+private:
+    void log(Message message);
+    long nextSerial_ = 1;
+    long statusSerial_ = 0;       // the message the status line shows
+    bool statusStands_ = false;   // it is an action's result or an error: automatic news does not replace it
 };
 
 // Requests panels make of the editor (scene and preset switches may first ask about unsaved changes).
@@ -167,6 +183,8 @@ public:
     virtual void cancelAccuracy() = 0;
     // What a measurement now would be made for (settings, camera, scene, viewport size); none before a viewport.
     virtual std::optional<AccuracyViewKey> currentView() const = 0;
+    // Before work whose crash would lose the unsaved settings (a sweep): they are written to the autosave file.
+    virtual void keepSession() = 0;
 };
 
 }  // namespace shadowlab::editor

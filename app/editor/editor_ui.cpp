@@ -35,6 +35,8 @@ void Editor::buildUi() {
     drawPanels();
     drawUnsavedChangesDialog();
     drawSaveAsDialog();
+    drawRestoreDialog();
+    keepSessionBeforeRiskyChange();  // after this frame's edits, before the next frame renders them
 }
 
 void Editor::handleShortcuts() {
@@ -301,7 +303,7 @@ void Editor::drawStatusBar() {
         ImGui::Text("loading %s (%s, %.1f s)", p.spec.c_str(), p.stage.c_str(), p.elapsedSeconds);
         return;
     }
-    if (const Message* m = state_.lastMessage()) {
+    if (const Message* m = state_.statusMessage()) {
         // One line, clipped at the viewport's edge; the whole text on hover (and in the terminal).
         ImGui::PushStyleColor(ImGuiCol_Text, m->error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f)
                                                       : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -473,6 +475,7 @@ void Editor::drawSaveAsDialog() {
             saveAsError_ = state_.preset.saveAs(path, saved, overwrite, state_.sceneSpec);
             if (saveAsError_.empty()) {
                 state_.settings = saved;
+                dropAutosave();
                 state_.say("saved preset " + path);
                 refreshPresetList();
                 ImGui::CloseCurrentPopup();
@@ -491,6 +494,43 @@ void Editor::drawSaveAsDialog() {
         ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
+}
+
+void Editor::drawRestoreDialog() {
+    if (openRestoreDialog_) {
+        ImGui::OpenPopup("Restore unsaved work");
+        openRestoreDialog_ = false;
+    }
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("Restore unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!restoreOffer_) {
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        return;
+    }
+    const Autosave& a = *restoreOffer_;
+    ImGui::TextUnformatted("ShadowLab did not exit cleanly last time.");
+    ImGui::Text("Unsaved settings were kept at %s (preset %s, scene %s).", a.savedAt.c_str(),
+                a.presetPath.empty() ? "built-in defaults" : presetNameFromPath(a.presetPath).c_str(),
+                a.scene.c_str());
+    ImGui::TextDisabled("%s", autosavePath_.c_str());
+    ImGui::Spacing();
+    const bool restore = ImGui::Button("Restore", ImVec2(110, 0));
+    state_.controls.recordLastItem("restore.restore");
+    ImGui::SameLine();
+    const bool discard = ImGui::Button("Discard", ImVec2(110, 0));
+    state_.controls.recordLastItem("restore.discard");
+    if (restore || discard) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    if (restore) {
+        restoreAutosave();
+    } else if (discard) {
+        const std::string savedAt = a.savedAt;
+        restoreOffer_.reset();
+        dropAutosave();
+        state_.say("discarded the unsaved settings kept at " + savedAt);
+    }
 }
 
 }  // namespace shadowlab::editor

@@ -20,6 +20,13 @@ void PresetSession::revert(Settings& settings) const {
     settings.view = view;
 }
 
+bool PresetSession::sceneLoadFinished(bool ok, Settings& settings) {
+    const bool discard = ok && discardOnSceneLoad_;
+    discardOnSceneLoad_ = false;
+    if (discard) revert(settings);
+    return discard;
+}
+
 std::string PresetSession::load(const std::string& path, bool shipped, Settings& settings) {
     PresetLoadResult loaded = loadPresetFile(path);
     if (!loaded.settings) {

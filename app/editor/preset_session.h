@@ -27,6 +27,13 @@ public:
     // Back to the settings as last loaded or saved; the view mode stays as the user chose it (see dirty()).
     void revert(Settings& settings) const;
 
+    // "Don't save" before a scene load: the edits are declined, but a load can fail, so they go only once the new
+    // scene has loaded (sceneLoadFinished(true)); a failed load keeps them, still unsaved.
+    void discardEditsOnSceneLoad() { discardOnSceneLoad_ = true; }
+    // The scene load ended: on success the declined edits are replaced by the preset as saved (true when they
+    // were); either way the request is settled.
+    bool sceneLoadFinished(bool ok, Settings& settings);
+
     // The view mode (lit / shadow / light depth) is how the user looks, not what they tuned: switching it never marks
     // the preset as changed. A save still writes it (the CLI renders the preset's `view`).
     bool dirty(const Settings& settings) const;
@@ -45,6 +52,7 @@ private:
     std::string name_ = "built-in defaults";
     bool shipped_ = false;
     std::string scene_;
+    bool discardOnSceneLoad_ = false;
 };
 
 // "acne" for ".../presets/acne.json".

@@ -2,6 +2,8 @@
 
 #include "settings/settings_fields.h"
 
+#include <algorithm>
+
 namespace shadowlab::editor {
 
 std::string applyEdit(Settings& settings, std::string_view key, const nlohmann::json& value, const EditLimits& limits) {
@@ -48,6 +50,23 @@ std::string duplicateLight(Settings& settings, std::size_t index) {
                std::to_string(kMaxLights) + ")";
     Settings candidate = settings;
     candidate.lights.push_back(settings.lights[index]);
+    return validated(settings, std::move(candidate));
+}
+
+std::string manualFromFitted(Settings& settings, std::size_t index, const LightSpace& fitted) {
+    if (index >= settings.lights.size()) return noSuchLight(settings, index);
+    Settings candidate = settings;
+    ProjectionSettings& projection = candidate.lights[index].projection;
+    const std::string prefix = "lights." + std::to_string(index) + ".projection.";
+    // The key table's range of each value: the one place it is stated.
+    auto inRange = [&](const char* name, double value) {
+        const SettingsField* field = findSettingsField(prefix + name);
+        return float(field ? std::clamp(value, field->min, field->max) : value);
+    };
+    projection.autoFit = false;
+    if (!fitted.perspective) projection.orthoSize = inRange("orthoSize", fitted.orthoSize);
+    projection.nearPlane = inRange("near", fitted.nearPlane);
+    projection.farPlane = inRange("far", fitted.farPlane);
     return validated(settings, std::move(candidate));
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The one way the editor changes Settings: the key table's SettingsField::set, then Settings::validate() on the
 // result. A refusal leaves the settings exactly as they were and says why, naming the key, like presets and --set.
+#include "light/light_space.h"
 #include "settings/settings.h"
 
 #include <nlohmann/json.hpp>
@@ -22,5 +23,10 @@ std::string applyEdit(Settings& settings, std::string_view key, const nlohmann::
 // allowed: the scene is then lit by the ambient term only.
 std::string removeLight(Settings& settings, std::size_t index);
 std::string duplicateLight(Settings& settings, std::size_t index);
+
+// Light `index`'s projection made manual, starting from the volume auto-fit chose (`fitted`, one of its views), so
+// turning auto-fit off does not jump. Each value is brought into its key's range first: a directional fit starts at
+// near 0, below the key's least near plane, and the result must stay editable. "" when applied, else why.
+std::string manualFromFitted(Settings& settings, std::size_t index, const LightSpace& fitted);
 
 }  // namespace shadowlab::editor

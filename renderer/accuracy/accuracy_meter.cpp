@@ -103,8 +103,22 @@ std::optional<Settings> measuredSettings(const Settings& given, const Scene& sce
 
 }  // namespace
 
+namespace {
+
+double share(std::size_t part, std::size_t whole) { return whole ? 100.0 * double(part) / double(whole) : 0.0; }
+
+}  // namespace
+
 double AccuracyReport::causePercentOfWrong(MismatchCause cause) const {
-    return counts.wrong ? 100.0 * double(counts.causeWrong[std::size_t(cause)]) / double(counts.wrong) : 0.0;
+    return share(counts.causeWrong[std::size_t(cause)], counts.wrong);
+}
+
+double AccuracyReport::causePercentOfAcne(MismatchCause cause) const {
+    return share(counts.causeAcne[std::size_t(cause)], counts.acne);
+}
+
+double AccuracyReport::causePercentOfLeak(MismatchCause cause) const {
+    return share(counts.causeLeak[std::size_t(cause)], counts.leak);
 }
 
 MismatchCause AccuracyReport::mainCause() const {

@@ -68,6 +68,8 @@ struct AccuracyCounts {
     std::size_t coverageMismatch = 0;  // G-buffer and tool frame disagree about whether a surface is there
     std::array<std::size_t, kCauseCount> causePixels{};  // mismatched pixels per MismatchCause
     std::array<std::size_t, kCauseCount> causeWrong{};   // wrong pixels per MismatchCause
+    std::array<std::size_t, kCauseCount> causeAcne{};    // acne pixels per MismatchCause
+    std::array<std::size_t, kCauseCount> causeLeak{};    // leak pixels per MismatchCause
 };
 
 // A measured pixel's verdict: acne / leak (visibly wrong beyond k), or the same within k of a true edge.
@@ -142,7 +144,11 @@ struct AccuracyReport : AccuracyNumbers {
     // Shadow views the tool frame's planner rendered (0: every map was reused; flicker.h checks it under camera motion).
     std::size_t shadowViewsRendered = 0;
 
+    // The share of each set a cause explains: acne pixels are mostly not wrong (a darkening of 1-S < 0.5), so an
+    // acne cause is judged against acne, a leak cause against leak, and wrong pixels against wrong.
     double causePercentOfWrong(MismatchCause cause) const;  // share of wrong pixels this cause explains
+    double causePercentOfAcne(MismatchCause cause) const;
+    double causePercentOfLeak(MismatchCause cause) const;
     // The cause of the most mismatched pixels beyond k (else "within k of a true edge"; None when nothing mismatches).
     MismatchCause mainCause() const;
 };

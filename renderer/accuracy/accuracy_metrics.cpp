@@ -86,6 +86,7 @@ MetricsResult computeMetrics(const MetricsInput& in) {
         r.causes[i] = cause;
         ++c.causePixels[std::size_t(cause)];
         if (wrong) ++c.causeWrong[std::size_t(cause)];
+        if (beyondK) ++(lit ? c.causeAcne : c.causeLeak)[std::size_t(cause)];
     }
     setRatios(r, errorSum, severitySum);
     r.edgeErrorP95Texels = percentile(texels, kEdgeErrorPercentile);

@@ -124,6 +124,8 @@ void combineLights(ManyLightsReport& many) {
         const MismatchCause cause = worst->pixelCause[i];
         ++c.causePixels[std::size_t(cause)];
         c.causeWrong[std::size_t(cause)] += wrong;
+        c.causeAcne[std::size_t(cause)] += acne;
+        c.causeLeak[std::size_t(cause)] += leak;
     }
     AccuracyNumbers& w = many.whole;
     w.acnePercent = c.lit ? 100.0 * double(c.acne) / double(c.lit) : 0.0;

@@ -32,6 +32,8 @@ fs::path userPresetsDir() {
 
 fs::path recentFilesPath() { return userConfigDir() / "recent-files.json"; }
 
+fs::path autosavePath() { return userConfigDir() / "autosave.json"; }
+
 fs::path userScreenshotsDir() {
     if (std::string own = environment("SHADOWLAB_SCREENSHOTS"); !own.empty()) return fs::path(own);
     if (std::string xdg = environment("XDG_DATA_HOME"); !xdg.empty()) return fs::path(xdg) / "shadowlab" / "screenshots";

@@ -40,6 +40,16 @@ grep -q "caster culled in the shadow pass .*shadow.cullMode=none" measure-roof.o
 culled=$(python3 -c "import json; print(json.load(open('roof.json'))['lights'][0]['causes']['casterCulled']['percentOfWrong'])")
 less_than 90 "$culled" && pass "roof: culled casters explain $culled % of wrong pixels" || fail "roof culled = $culled"
 
+# Issue 19: each cause's share of what it explains. Faint acne (too little slope bias, no receiver plane) is all
+# self-shadowing, though hardly a pixel of it is "wrong" (|S-V| >= 0.5): its share is of acne, not of wrong.
+expect_ok measure-faint "$SHADOWLAB" measure --scene builtin:textbook --preset default --width 320 --height 180 \
+  --set lights.0.shadow.slopeScaledDepthBias=1.5 --set lights.0.shadow.normalOffset=0 \
+  --set lights.0.shadow.receiverPlaneBias=false --json faint.json
+grep -q "self-shadowing  *[0-9.]* % of acne" measure-faint.out && pass "faint acne: self-shadowing as a share of acne" \
+  || fail "faint acne causes: $(grep -A3 'causes of' measure-faint.out)"
+ofacne=$(python3 -c "import json; print(json.load(open('faint.json'))['lights'][0]['causes']['selfShadowing']['percentOfAcne'])")
+less_than 90 "$ofacne" && pass "faint acne: self-shadowing explains $ofacne % of acne" || fail "faint acne: $ofacne % of acne"
+
 # Issue 9, observation 2: a 16² map says that acne and leak cannot judge it.
 expect_ok measure-coarse "$SHADOWLAB" measure --scene builtin:textbook --preset default --set shadow.resolution=16 \
   --width 320 --height 180 --json coarse.json

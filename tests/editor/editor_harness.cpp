@@ -50,6 +50,7 @@ EditorOptions testOptions(const fs::path& folder) {
     options.userPresetsDir = (folder / "user-presets").string();
     options.recentFilesPath = (folder / "recent-files.json").string();
     options.screenshotDir = (folder / "screenshots").string();
+    options.autosavePath = (folder / "autosave.json").string();  // never the user's own
     return options;
 }
 

@@ -21,8 +21,8 @@ namespace shadowlab::editor::test {
 // A fresh folder under the build's test output for one test (user presets, screenshots).
 std::filesystem::path testFolder(const std::string& name);
 
-// Options for a test editor: textbook scene, "default" preset, user presets and screenshots in `folder`, no
-// recent-files file.
+// Options for a test editor: textbook scene, "default" preset, user presets, screenshots, recent files and the
+// autosave in `folder`.
 EditorOptions testOptions(const std::filesystem::path& folder);
 
 // How long a test waits, in real time, for something a worker thread does (its speed depends on the machine's load,

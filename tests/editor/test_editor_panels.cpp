@@ -43,8 +43,9 @@ std::vector<std::string> cutContent() {
         // in any editor: its lines are read by scrolling it, nothing around it is cut.
         if (std::string(w->Name).find("/##snippet_") != std::string::npos && (w->Flags & ImGuiWindowFlags_ChildWindow))
             continue;
-        // A child with a horizontal scroll bar (a wide table's) shows its columns by scrolling: nothing is lost.
-        const float overX = w->ScrollbarX ? 0.0f : w->DC.CursorMaxPos.x - w->InnerClipRect.Max.x;
+        // A horizontal scroll bar does not make a too-wide table whole: its right columns are cut until scrolled to
+        // (issue 19, the Tune table at 1600x900), so it counts like any content past the edge.
+        const float overX = w->DC.CursorMaxPos.x - w->InnerClipRect.Max.x;
         const float overY = w->DC.CursorMaxPos.y - w->InnerClipRect.Max.y;
         if (overX > 1.0f || overY > 1.0f)
             cut.push_back(std::string(w->Name) + " needs " + std::to_string(int(std::ceil(std::max(0.0f, overX)))) +
@@ -65,7 +66,7 @@ std::vector<std::string> cutContent() {
     }
     for (int n = 0; n < g.Tables.GetMapSize(); ++n) {
         const ImGuiTable* t = g.Tables.TryGetMapData(n);
-        if (!t || t->LastFrameActive != g.FrameCount || (t->Flags & ImGuiTableFlags_ScrollX)) continue;
+        if (!t || t->LastFrameActive != g.FrameCount) continue;
         for (int c = 0; c < t->ColumnsCount; ++c) {
             const ImGuiTableColumn& col = t->Columns[c];
             if (col.IsEnabled && col.IsVisibleX && col.ContentMaxXUnfrozen > col.ClipRect.Max.x + 1.0f)

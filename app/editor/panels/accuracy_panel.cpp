@@ -5,6 +5,7 @@
 // line when the numbers no longer describe the view; and Suggest bias: the search's path, its result applied to the
 // settings, and Save as preset. Flicker: the view played under a camera or light motion (flicker.h), its figures
 // and its overlay.
+#include "accuracy/cause_shares.h"
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
@@ -16,14 +17,7 @@ namespace shadowlab::editor {
 
 namespace {
 
-std::string grouped(std::size_t n) {
-    std::string digits = std::to_string(n), out;
-    for (std::size_t i = 0; i < digits.size(); ++i) {
-        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-        out += digits[i];
-    }
-    return out;
-}
+std::string grouped(std::size_t n) { return groupedCount(n); }
 
 void row(const char* name, const std::string& value, const char* tooltip = nullptr) {
     ImGui::TableNextRow();
@@ -48,6 +42,15 @@ std::string format(const char* fmt, double a, double b = 0.0) {
     char text[128];
     std::snprintf(text, sizeof text, fmt, a, b);
     return text;
+}
+
+// The shadow view shows the map's comparison on every surface, also on those facing away from the light, which the
+// lighting darkens anyway; the numbers rightly skip them, and say so where they are read.
+void facingAwayNote(EditorState& state, const AccuracyCounts& c) {
+    if (c.facingAway == 0) return;
+    noteText("not counted: " + grouped(c.facingAway) +
+             " px facing away from the light (stripes there in the shadow view are unlit anyway)");
+    state.controls.recordLastItem("accuracy.facingAway");
 }
 
 void numbersTab(EditorState& state, const AccuracyReport& r) {
@@ -80,10 +83,11 @@ void numbersTab(EditorState& state, const AccuracyReport& r) {
             "filter radius + 1 texel: mismatches closer than this to a true edge are filter blur, not acne or leak");
         ImGui::EndTable();
     }
+    facingAwayNote(state, c);
 }
 
-// Why the pixels are wrong: each cause's share of the wrong pixels (|S-V| >= 0.5) and of the visibly mismatched
-// ones, with the remedy.
+// Why the pixels are wrong: each cause's share of what it explains (acne of acne, leak of leak, wrong of wrong; see
+// cause_shares.h), with the remedy.
 void causesTab(EditorState& state, const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
     if (r.live) {
@@ -96,8 +100,9 @@ void causesTab(EditorState& state, const AccuracyReport& r) {
         ImGui::TextDisabled("no mismatched pixels: nothing to explain");
         return;
     }
-    ImGui::TextDisabled("%s wrong, %s visibly mismatched pixels", grouped(c.wrong).c_str(),
-                        grouped(c.mismatched).c_str());
+    noteText(grouped(c.acne) + " acne, " + grouped(c.leak) + " leak, " + grouped(c.wrong) + " wrong, " +
+             grouped(c.mismatched) + " visibly mismatched pixels");
+    facingAwayNote(state, c);
     // One line per cause (colour, name, share), its remedy wrapped below: the panel is often narrow.
     ImGui::BeginGroup();
     for (MismatchCause cause : allCauses()) {
@@ -107,7 +112,8 @@ void causesTab(EditorState& state, const AccuracyReport& r) {
         ImGui::ColorButton(info.key, ImVec4(info.red / 255.0f, info.green / 255.0f, info.blue / 255.0f, 1.0f),
                            ImGuiColorEditFlags_NoTooltip, ImVec2(10, 10));
         ImGui::SameLine();
-        ImGui::TextWrapped("%s: %.1f %% of wrong (%s px)", info.name, r.causePercentOfWrong(cause), grouped(n).c_str());
+        ImGui::TextWrapped("%s: %s", info.name, causeShares(r, cause).c_str());
+        state.controls.recordLastItem(std::string("accuracy.cause.") + info.key);
         ImGui::Indent();
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         ImGui::TextWrapped("%s", info.remedy);
@@ -207,19 +213,26 @@ void biasSearchTab(PanelContext& ctx) {
         noteText(format("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent));
     }
 
+    // Every column within the sidebar, none behind a horizontal scroll: short headers with their legend, and each
+    // candidate's phase of the search on hovering its row (the newest one's above the table while it runs).
+    if (!a.steps.empty()) {
+        noteText("bias = DepthBias, slope = SlopeScaledDepthBias, normal = normal offset (texels); acne, leak, wrong "
+                 "in %" + std::string(a.running ? "; now: " + a.steps.back().phase : std::string()));
+        state.controls.recordLastItem("accuracy.stepsLegend");
+    }
     const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
-    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
-                                  ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("steps", 9, flags, ImVec2(0, tableHeight))) {
-        ImGui::TableSetupScrollFreeze(1, 1);
-        for (const char* h : {"#", "DepthBias", "slope", "normal", "cull", "acne %", "leak %", "wrong %", "phase"})
-            ImGui::TableSetupColumn(h);
+    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("steps", 8, flags, ImVec2(0, tableHeight))) {
+        ImGui::TableSetupScrollFreeze(0, 1);
+        for (const char* h : {"#", "bias", "slope", "normal", "cull", "acne", "leak", "wrong"}) ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         for (const TuneStep& s : a.steps) {
             ImGui::TableNextRow();
             if (s.bestSoFar) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
             ImGui::TableNextColumn();
             ImGui::Text("%d", s.index);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("candidate %d: %s", s.index, s.phase.c_str());
             ImGui::TableNextColumn();
             ImGui::Text("%.6g", double(s.depthBias));
             ImGui::TableNextColumn();
@@ -234,8 +247,6 @@ void biasSearchTab(PanelContext& ctx) {
             ImGui::Text("%.3f", s.leakPercent);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", s.wrongPercent);
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(s.phase.c_str());
         }
         // Follow the search: a new candidate scrolls into view.
         if (a.steps.size() != a.stepsFollowed) {

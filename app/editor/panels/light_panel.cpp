@@ -50,7 +50,8 @@ void drawLightPanel(PanelContext& ctx) {
         vec3Control(state, key("position"), moved, position);
         if (light.type == LightType::Spot)
             sliderFloatField(state, key("spotConeDeg").c_str(), "cone", 1.0f, 170.0f, "%.1f deg");
-        dragFloatField(state, key("range").c_str(), "range (0 = no limit)", 0.05f, "%.2f");
+        // The label stays short (the sidebar is narrow); the value says what 0 means.
+        dragFloatField(state, key("range").c_str(), "range", 0.05f, light.range == 0.0f ? "0 (no limit)" : "%.2f");
     }
     glm::vec3 color = light.color;
     const bool recoloured = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);

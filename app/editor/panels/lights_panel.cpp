@@ -66,7 +66,7 @@ void globalLighting(EditorState& state) {
     ImGui::PushItemWidth(-110.0f);
     sliderFloatField(state, "ambient", "ambient", 0.0f, 1.0f, "%.2f");
     checkboxField(state, "useSceneLights", "use the scene's lights instead");
-    if (state.haveStats) ImGui::TextDisabled("using %s", state.stats.lightSource.c_str());
+    if (state.haveStats) noteText("using " + state.stats.lightSource);  // wrapped: it lists every light
     ImGui::PopItemWidth();
 }
 

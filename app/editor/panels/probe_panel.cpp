@@ -83,14 +83,17 @@ void drawProbePanel(PanelContext& ctx) {
         return;
     }
     const ImVec4 colour = r.agrees ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f) : ImVec4(1.0f, 0.4f, 0.4f, 1.0f);
-    ImGui::TextColored(colour, "pixel %d,%d: %s", r.x, r.y, probeSummary(r).c_str());
+    // Wrapped: the summary names the light and both factors, longer than a sidebar is wide.
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("pixel %d,%d: %s", r.x, r.y, probeSummary(r).c_str());
+    ImGui::PopStyleColor();
     state.controls.recordLastItem("probe.summary");
     if (ImGui::SmallButton("Save JSON")) ctx.actions.saveProbeJson();
     state.controls.recordLastItem("probe.saveJson");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Writes this report as JSON (as `shadowlab probe --json`) into %s/", state.screenshotDir.c_str());
     if (!p.withMeasurement)
-        ImGui::TextDisabled("(Measure in the Accuracy panel adds the exact visibility and the cause)");
+        noteText("(Measure in the Accuracy panel adds the exact visibility and the cause)");
     ImGui::Separator();
     ImGui::BeginChild("##probeLines", ImVec2(0, 0), false);
     const std::vector<std::string> lines = describeProbe(r);

@@ -10,7 +10,17 @@ void drawProjectionPanel(PanelContext& ctx) {
     auto key = [&](const char* within) { return state.lightKey(within); };
     const std::size_t index = state.selectedLight;
     ImGui::PushItemWidth(-120.0f);
-    checkboxField(state, key("projection.autoFit").c_str(), "auto-fit to the scene");
+    // The views auto-fit chose (a point light's faces share near and far), read before a change to auto-fit.
+    const std::vector<const ShadowViewStats*> views = state.selectedLightViews();
+    auto useFitted = [&] {
+        if (std::string error = manualFromFitted(state.settings, index, views.front()->space); !error.empty())
+            state.say("the fitted values cannot be edited: " + error, true);
+    };
+    const bool wasAutoFit = state.selected()->projection.autoFit;
+    // Unticked: manual tuning starts from what auto-fit chose, not from the preset's old manual values.
+    if (checkboxField(state, key("projection.autoFit").c_str(), "auto-fit to the scene") && wasAutoFit &&
+        !views.empty() && !state.selected()->projection.autoFit)
+        useFitted();
     const bool autoFit = state.selected()->projection.autoFit;
     ImGui::BeginDisabled(autoFit);
     if (state.selected()->type == LightType::Directional)
@@ -18,26 +28,14 @@ void drawProjectionPanel(PanelContext& ctx) {
     dragFloatField(state, key("projection.near").c_str(), "near", 0.01f, "%.3f");
     dragFloatField(state, key("projection.far").c_str(), "far", 0.05f, "%.2f");
     ImGui::EndDisabled();
-    if (const std::vector<const ShadowViewStats*> views = state.selectedLightViews(); !views.empty()) {
-        const LightSpace& light = views.front()->space;  // a point light's faces share near and far
+    if (!views.empty()) {
+        const LightSpace& light = views.front()->space;
         if (light.perspective)
             ImGui::TextDisabled("in use: near %.3g, far %.3g", light.nearPlane, light.farPlane);
         else
             ImGui::TextDisabled("in use: size %.3g, near %.3g, far %.3g", light.orthoSize, light.nearPlane,
                                 light.farPlane);
-        if (autoFit && ImGui::SmallButton("edit these values")) {
-            // Start manual tuning from what auto-fit chose, so turning it off does not jump.
-            Settings manual = state.settings;
-            ProjectionSettings& projection = manual.lights[index].projection;
-            projection.autoFit = false;
-            if (!light.perspective) projection.orthoSize = float(light.orthoSize);
-            projection.nearPlane = float(light.nearPlane);
-            projection.farPlane = float(light.farPlane);
-            if (manual.validate().empty())
-                state.settings = manual;
-            else
-                state.say("the fitted values cannot be edited: " + manual.validate().front(), true);
-        }
+        if (autoFit && ImGui::SmallButton("edit these values")) useFitted();
         state.controls.recordLastItem("projection.useFitted");
     }
     checkboxField(state, key("projection.depthClamp").c_str(), "depth clamp (casters before near still cast)");

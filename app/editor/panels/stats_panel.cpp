@@ -48,12 +48,9 @@ void viewsTable(EditorState& state, const char* clock) {
         ImGui::TextDisabled("shadow views: none (no lights)");
         return;
     }
-    const float rows = float(std::min<std::size_t>(views.size(), 7) + 1);
+    // Every row shown (no scrolling box that hides rows) and the reasons wrapped in their column: nothing is cut.
     if (ImGui::BeginTable("views", 4,
-                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY |
-                              ImGuiTableFlags_BordersInnerV,
-                          ImVec2(0.0f, rows * ImGui::GetTextLineHeightWithSpacing() + 4.0f))) {
-        ImGui::TableSetupScrollFreeze(0, 1);
+                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("view");
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn(clock[0] == 'C' ? "ms (CPU)" : "ms (GPU)");
@@ -74,8 +71,7 @@ void viewsTable(EditorState& state, const char* clock) {
             else
                 ImGui::TextDisabled("-");
             ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", v.reason.c_str());
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.reason.c_str());
+            noteText(v.reason);
         }
         ImGui::EndTable();
     }

@@ -84,6 +84,7 @@ void startSweep(PanelContext& ctx) {
     options.frames = s.frames;
     options.camera = view->camera;
     const std::size_t points = plan.points.size();
+    ctx.actions.keepSession();  // a sweep compiles and allocates for every point: keep the unsaved work first
     if (!s.worker->start(state.scene, view->settings, std::move(plan), options)) {
         s.error = "a sweep is still running (Cancel it first)";
         return;
