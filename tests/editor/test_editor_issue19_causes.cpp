@@ -7,9 +7,7 @@
 #include "accuracy/cause_shares.h"
 #include "settings/preset_io.h"
 
-#include <chrono>
 #include <cstdlib>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -29,14 +27,7 @@ TEST(EditorCausesIssue19, SelfShadowingIsGivenAsItsShareOfAcneAndFacingAwayPixel
     EditorHarness h(options, 1280, 720);
     h.settle();
     h.click("accuracy.measure");
-    const auto start = std::chrono::steady_clock::now();
-    while (h.state().accuracy.running) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        h.frame();
-        ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 300.0)
-            << "Measure did not finish in 300 s";
-    }
-    h.frame(2);
+    h.waitForAccuracyJob();
     ASSERT_TRUE(h.state().accuracy.report.has_value()) << h.state().accuracy.error;
     const AccuracyReport& r = *h.state().accuracy.report;
     const AccuracyCounts& c = r.counts;

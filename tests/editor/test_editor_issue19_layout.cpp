@@ -6,8 +6,6 @@
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
-#include <chrono>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
@@ -23,20 +21,6 @@ void expectNothingCut(EditorHarness& h, const std::string& when) {
             h.frame(2);
             for (const std::string& cut : cutContent()) ADD_FAILURE() << when << ", tab " << tab << ": " << cut;
         }
-}
-
-// Frames until the accuracy job ends; fails naming the job after `ceiling` seconds.
-void waitForAccuracy(EditorHarness& h, const std::string& job, double ceiling = 400.0) {
-    const auto start = std::chrono::steady_clock::now();
-    while (h.state().accuracy.running) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        h.frame();
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > ceiling) {
-            ADD_FAILURE() << job << " did not finish in " << ceiling << " s (stage " << h.state().accuracy.stage << ")";
-            return;
-        }
-    }
-    h.frame(2);
 }
 
 }  // namespace
@@ -64,17 +48,12 @@ TEST(EditorLayoutIssue19, EveryPanelIsWholeAt1600x900WithEveryLightTypeAProbeAnd
     expectNothingCut(h, "a probed pixel");
     // A measurement, then a bias search's table (a few rows are enough: then it is cancelled).
     h.click("accuracy.measure");
-    waitForAccuracy(h, "Measure");
+    h.waitForAccuracyJob();
     ASSERT_TRUE(h.state().accuracy.report.has_value()) << h.state().accuracy.error;
     expectNothingCut(h, "a measurement");
     h.click("accuracy.suggest");
-    const auto start = std::chrono::steady_clock::now();
-    while (h.state().accuracy.running && h.state().accuracy.steps.size() < 3) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        h.frame();
-        ASSERT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 400.0)
-            << "the bias search listed " << h.state().accuracy.steps.size() << " of 3 rows in 400 s";
-    }
+    h.framesUntil([&] { return !h.state().accuracy.running || h.state().accuracy.steps.size() >= 3; },
+                  "the bias search to list 3 rows");
     ASSERT_GE(h.state().accuracy.steps.size(), 3u) << h.state().accuracy.error;
     for (const std::string tab : {"numbers", "causes", "counts", "cost", "search", "flicker"}) {
         h.click("accuracy.tab." + tab);
@@ -83,7 +62,7 @@ TEST(EditorLayoutIssue19, EveryPanelIsWholeAt1600x900WithEveryLightTypeAProbeAnd
         if (tab == std::string("search")) h.saveWindow("layout-issue19-search");
     }
     h.click("accuracy.cancel");
-    waitForAccuracy(h, "Cancel");
+    h.waitForAccuracyJob();
     h.saveWindow("layout-issue19-1600x900");
 }
 

@@ -5,24 +5,20 @@
 
 #include "settings/preset_io.h"
 
-#include <chrono>
-#include <thread>
 
 namespace shadowlab::editor::test {
 
 namespace {
 
-// Frames until Auto has made `count` full measurements; fails naming what it waited for after `ceiling` seconds.
-void framesUntilMeasured(EditorHarness& h, long count, double ceiling = 300.0) {
-    const auto start = std::chrono::steady_clock::now();
-    while (h.state().accuracy.measurements < count) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        h.frame();
-        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > ceiling) {
-            ADD_FAILURE() << "Auto's measurement " << count << " did not come in " << ceiling << " s";
-            return;
-        }
-    }
+// Frames until Auto has made `count` full measurements. The injected clock moves a frame's time each frame, so
+// Auto's delay passes as it would for a user looking at a still view.
+void framesUntilMeasured(EditorHarness& h, long count) {
+    h.framesUntil(
+        [&] {
+            h.advanceClock(1.0 / 60.0);
+            return h.state().accuracy.measurements >= count;
+        },
+        "Auto's measurement " + std::to_string(count));
     h.frame(2);
 }
 
