@@ -1,5 +1,6 @@
 #include "editor/autosave.h"
 
+#include "editor/message_log.h"
 #include "settings/atomic_file.h"
 #include "settings/preset_io.h"
 #include "settings/regular_file.h"
@@ -18,21 +19,12 @@ namespace {
 
 constexpr const char* kSessionKey = "autosave";  // the preset's extra group (presets ignore unknown keys)
 
-std::string localTime() {
-    const std::time_t t = std::time(nullptr);
-    std::tm local{};
-    localtime_r(&t, &local);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S", &local);
-    return text;
-}
-
 }  // namespace
 
 std::string writeAutosave(const std::string& path, Autosave autosave) {
     if (std::string error = ensureFolder(fs::path(path).parent_path()); !error.empty())
         return "autosave " + path + ": " + error;
-    autosave.savedAt = localTime();
+    autosave.savedAt = localTimeText("%Y-%m-%d %H:%M:%S");
     nlohmann::json json = presetToJson(autosave.settings, "autosave", "unsaved settings kept by the editor",
                                        autosave.scene);
     json[kSessionKey] = {{"presetPath", autosave.presetPath},

@@ -7,14 +7,15 @@
 
 namespace shadowlab::editor {
 
-std::string clockStamp() {
+std::string localTimeText(const char* format) {
     const std::time_t t = std::time(nullptr);
     std::tm local{};
     localtime_r(&t, &local);
-    char text[16];
-    std::strftime(text, sizeof text, "%H:%M:%S", &local);
-    return text;
+    char text[64];
+    return std::strftime(text, sizeof text, format, &local) ? text : "";
 }
+
+std::string clockStamp() { return localTimeText("%H:%M:%S"); }
 
 void messageLogButton(EditorState& state) {
     const std::string label = "Log (" + std::to_string(state.messages.size()) + ")###messageLog";

@@ -10,5 +10,7 @@ void messageLogButton(EditorState& state);
 
 // "HH:MM:SS" local time now (the stamp a message gets).
 std::string clockStamp();
+// The local time now in a strftime format (clockStamp: "%H:%M:%S").
+std::string localTimeText(const char* format);
 
 }  // namespace shadowlab::editor
