@@ -18,6 +18,18 @@ namespace shadowlab::editor {
 
 namespace {
 
+// Opens the modal `title` once `open` is set (then clears it) and begins it centred in the window; false while it is
+// not showing.
+bool beginCentredModal(const char* title, bool& open) {
+    if (open) {
+        ImGui::OpenPopup(title);
+        open = false;
+    }
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
+                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    return ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
+
 constexpr float kStatusHeight = 26.0f;
 // The view combo's two editor-only choices (the accuracy overlays); the second is its longest label.
 constexpr const char* kOverlay = "accuracy overlay";
@@ -392,13 +404,7 @@ void Editor::drawSidebar(Sidebar side, PanelContext& ctx, const Panel* wanted) {
 }
 
 void Editor::drawUnsavedChangesDialog() {
-    if (openUnsavedDialog_) {
-        ImGui::OpenPopup("Unsaved changes");
-        openUnsavedDialog_ = false;
-    }
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!beginCentredModal("Unsaved changes", openUnsavedDialog_)) return;
     if (!pendingSwitch_) {
         ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
@@ -440,13 +446,7 @@ void Editor::drawUnsavedChangesDialog() {
 }
 
 void Editor::drawSaveAsDialog() {
-    if (openSaveAsDialog_) {
-        ImGui::OpenPopup("Save preset as");
-        openSaveAsDialog_ = false;
-    }
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal("Save preset as", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!beginCentredModal("Save preset as", openSaveAsDialog_)) return;
     if (state_.preset.shipped())
         ImGui::Text("\"%s\" is a shipped preset (read-only): save a copy in your folder.", state_.preset.name().c_str());
     ImGui::TextDisabled("folder: %s", state_.userPresetsDir.c_str());
@@ -497,13 +497,7 @@ void Editor::drawSaveAsDialog() {
 }
 
 void Editor::drawRestoreDialog() {
-    if (openRestoreDialog_) {
-        ImGui::OpenPopup("Restore unsaved work");
-        openRestoreDialog_ = false;
-    }
-    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f),
-                            ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal("Restore unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    if (!beginCentredModal("Restore unsaved work", openRestoreDialog_)) return;
     if (!restoreOffer_) {
         ImGui::CloseCurrentPopup();
         ImGui::EndPopup();
