@@ -15,7 +15,11 @@ namespace shadowlab::editor {
 
 void Editor::probeViewportInput(ImVec2 imagePos) {
     const ImGuiIO& io = ImGui::GetIO();
-    const int x = int(std::floor(io.MousePos.x - imagePos.x)), y = int(std::floor(io.MousePos.y - imagePos.y));
+    // ImGui keeps -FLT_MAX as the position while it knows none (before the first move, or the mouse out of the
+    // window): converting that to int is undefined, so an unknown position is the pixel (-1, -1), outside the view.
+    const bool known = ImGui::IsMousePosValid(&io.MousePos);
+    const int x = known ? int(std::floor(io.MousePos.x - imagePos.x)) : -1;
+    const int y = known ? int(std::floor(io.MousePos.y - imagePos.y)) : -1;
     ProbeState& line = state_.probe;
     // Ctrl+drag draws the depth profile's line, from the press to the cursor, both clamped to the view.
     const int lastX = int(viewportRect_.z) - 1, lastY = int(viewportRect_.w) - 1;
