@@ -81,10 +81,12 @@ ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, cons
             continue;
         }
         // A size the GPU refuses keeps the light's previous map (and says so); with no map at all there is no frame.
-        const std::optional<KeptMap> kept = keptMap ? keptMap(i) : std::nullopt;
-        const std::string keeping = kept ? "keeping the " + std::to_string(kept->resolution) + "² map" : "no shadow map yet";
-        if (std::string refusal = shadowResolutionRefusal(light.shadow.resolution, maxTextureSize, keeping);
-            !refusal.empty()) {
+        // The kept map is looked up only then: an allowed size costs no search.
+        if (!shadowResolutionRefusal(light.shadow.resolution, maxTextureSize, "").empty()) {
+            const std::optional<KeptMap> kept = keptMap ? keptMap(i) : std::nullopt;
+            const std::string refusal = shadowResolutionRefusal(
+                light.shadow.resolution, maxTextureSize,
+                kept ? "keeping the " + std::to_string(kept->resolution) + "² map" : "no shadow map yet");
             if (!kept) {
                 plan.error = refusal;
                 return plan;
