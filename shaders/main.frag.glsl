@@ -9,6 +9,7 @@
 //              technique's taps
 //              (renderer/shading/filter_taps.cpp, shared with the pixel probe)
 //   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
+//   CASCADES   how many cascades the frame's cascaded directional lights have together (uCascades' length)
 //   RECEIVER_PLANE  some directional / spot caster uses receiver-plane depth bias (its LightData flag says which);
 //              with FILTER_NEAREST (taps that read one texel) the plane is taken at the texel's centre
 // Only the lights, kinds and features a frame uses are compiled in; loop counts are compile-time constants.
@@ -26,6 +27,7 @@ layout(location = 0) out vec4 outColor;
 #include "shadow/light_data.glsl"
 #include "shadow/lookup_2d.glsl"
 #include "shadow/lookup_cube.glsl"
+#include "shadow/cascades.glsl"
 
 #if LIGHT_COUNT > 0
 layout(std140, binding = 0) uniform Lights { LightData uLights[LIGHT_COUNT]; };
@@ -79,6 +81,11 @@ vec3 offsetLookup(Shading s, LightData L, float texelWorld) {
 void directionalLight(inout Shading s, LightData L, const bool casts) {
     float shadow = 1.0;
 #if MAP_ARRAYS_2D > 0
+#if CASCADES > 0
+    if (casts && L.views.y > 0.0) {
+        shadow = cascadedShadow(L, vWorldPosition, offsetLookup(s, L, 1.0) - vWorldPosition, uCameraPosition);
+    } else
+#endif
     if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z), L.direction.xyz, L.depth.z);
 #endif
     addLight(s, L, -L.direction.xyz, shadow, 1.0);

@@ -8,6 +8,43 @@
 
 namespace shadowlab::cli {
 
+namespace {
+
+// A cascaded light: each cascade's numbers and the seam's (cascade_accuracy.h); nothing for other lights.
+void printCascades(std::ostream& out, const CascadeAccuracy& a) {
+    if (a.cascades.empty()) return;
+    out << "  per cascade (the pixels each holds; texel = the cascade's texel in world units):\n";
+    for (const CascadeNumbers& n : a.cascades)
+        out << "    cascade:" << n.cascade << "  texel " << std::setprecision(4) << n.texelWorldSize
+            << std::setprecision(3) << "  acne " << n.acnePercent << " %  leak " << n.leakPercent << " %  wrong "
+            << n.wrongPercent << " %  mean error " << std::setprecision(4) << n.meanError << std::setprecision(3)
+            << "  (" << n.measured << " pixels)\n";
+    if (a.beyondShadowDistance)
+        out << "    beyond the shadow distance: " << a.beyondShadowDistance << " pixels (lit by the tool)\n";
+    const SeamNumbers& s = a.seam;
+    out << "  seams (pixels within " << s.bandPixels << " screen pixels of another cascade): wrong " << s.bandWrongPercent
+        << " %, mean error " << std::setprecision(4) << s.bandMeanError << std::setprecision(3) << " over " << s.band
+        << " pixels; interiors: wrong " << s.interiorWrongPercent << " %, mean error " << std::setprecision(4)
+        << s.interiorMeanError << std::setprecision(3) << " over " << s.interior << " pixels\n";
+}
+
+nlohmann::json cascadesToJson(const CascadeAccuracy& a) {
+    nlohmann::json cascades = nlohmann::json::array();
+    for (const CascadeNumbers& n : a.cascades)
+        cascades.push_back({{"view", "cascade:" + std::to_string(n.cascade)}, {"texelWorldSize", n.texelWorldSize},
+                            {"pixels", n.measured}, {"acnePercent", n.acnePercent}, {"leakPercent", n.leakPercent},
+                            {"wrongPercent", n.wrongPercent}, {"meanError", n.meanError}});
+    const SeamNumbers& s = a.seam;
+    return {{"cascades", cascades},
+            {"beyondShadowDistance", a.beyondShadowDistance},
+            {"seam",
+             {{"bandPixels", s.bandPixels}, {"band", s.band}, {"interior", s.interior},
+              {"bandWrongPercent", s.bandWrongPercent}, {"bandMeanError", s.bandMeanError},
+              {"interiorWrongPercent", s.interiorWrongPercent}, {"interiorMeanError", s.interiorMeanError}}}};
+}
+
+}  // namespace
+
 void printAccuracy(std::ostream& out, const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
     out << std::fixed << std::setprecision(3);
@@ -37,6 +74,7 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
         out << "    " << std::left << std::setw(42) << info.name << causeShares(r, cause) << std::right << "  -> "
             << info.remedy << "\n";
     }
+    printCascades(out, r.cascades);
     out << "  pixels " << c.pixels << ": measured " << c.measured << ", background " << c.background
         << ", facing away " << c.facingAway << ", outside the cone " << c.outsideCone << ", beyond the range "
         << c.outOfRange << ", non-finite "
@@ -123,6 +161,7 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
           {"toolFrameMs", k.toolFrameMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
     });
+    if (!r.cascades.cascades.empty()) json["cascaded"] = cascadesToJson(r.cascades);
     return json;
 }
 

@@ -45,7 +45,12 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
         out << (s.cubeFace >= 0 ? "point (cube face)" : s.perspective ? "spot" : "directional") << ", map "
             << v.resolution << "² " << depthFormatName(v.format) << ", near " << s.nearPlane << ", far " << s.farPlane
             << (s.cubeFace >= 0 ? ", texel " : s.perspective ? ", texel at the scene centre " : ", texel ")
-            << s.texelWorldSize << (s.cubeFace >= 0 ? " x distance" : "") << " world units; " << (v.ran ? "rendered" : "skipped") << " (" << v.reason << ")\n";
+            << s.texelWorldSize << (s.cubeFace >= 0 ? " x distance" : "") << " world units";
+        if (v.kind == ShadowViewKind::Cascade)
+            out << ", holds depths " << v.slice.nearDepth << ".." << v.slice.farDepth << " from the camera"
+                << (v.slice.blendStart < v.slice.farDepth ? " (fades into the next from " : "")
+                << (v.slice.blendStart < v.slice.farDepth ? std::to_string(v.slice.blendStart) + ")" : "");
+        out << "; " << (v.ran ? "rendered" : "skipped") << " (" << v.reason << ")\n";
     }
     if (!first) {
         out << "bias: no light casts a shadow\n";

@@ -1,5 +1,7 @@
 #include "accuracy/accuracy_meter.h"
 
+#include "views/view_select.h"
+
 #include "accuracy/accuracy_metrics.h"
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/gbuffer_pass.h"
@@ -159,7 +161,7 @@ struct AccuracyMeter::Impl {
     VisibilityResult visibility;
 
     // Light space (map size, projection): the boundary in texels and each pixel's distance to it.
-    std::optional<std::pair<glm::dmat4, int>> boundaryKey;
+    std::optional<std::pair<std::vector<glm::dmat4>, int>> boundaryKey;  // every view's matrix, the resolution
     std::optional<ShadowBoundary> boundary;
     double boundaryMs = 0.0;
 
@@ -194,14 +196,16 @@ struct AccuracyMeter::Impl {
     // The true boundary in this light space's texels (rebuilt when the map's size or projection changed).
     void ensureBoundary(const Scene& drawn, const FrameStats& stats, const ReferenceLight& light,
                         AccuracyReport& report) {
-        const std::pair<glm::dmat4, int> key{stats.light.viewProjection(), stats.light.resolution};
+        const std::vector<ShadowView> cascades = frameCascades(stats);
+        std::pair<std::vector<glm::dmat4>, int> key{{stats.light.viewProjection()}, stats.light.resolution};
+        for (const ShadowView& c : cascades) key.first.push_back(c.space.viewProjection());
         if (boundaryKey && *boundaryKey == key) return;
         const auto t = Clock::now();
         BoundaryProbe probe;
         probe.bvh = bvh.get();
         probe.light = light;
         probe.sceneRadius = drawn.bounds.empty ? 1.0 : double(drawn.bounds.radius());
-        boundary.emplace(samples, visibility.classes, stats.light, probe);
+        boundary.emplace(samples, visibility.classes, stats.light, probe, cascades);
         boundaryKey = key;
         counterCurrent = false;
         report.cost.boundaryMs = msSince(t);
@@ -350,6 +354,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     causeContext.bvh = m.bvh.get();
     causeContext.light = light;
     causeContext.lightSpace = stats.light;
+    causeContext.cascades = frameCascades(stats);
     causeContext.cullMode = settings.lights[0].shadow.cullMode;
     causeContext.depthClamp = settings.lights[0].depthClampApplies();
     causeContext.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
@@ -397,6 +402,14 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.pixelCause = metrics.causes;
     report.pixelMark = metrics.marks;
     report.pixelMeasured = metrics.measured;
+    if (const std::vector<ShadowView> cascades = frameCascades(stats); !cascades.empty()) {
+        std::vector<std::int8_t> cascadeOf(count, -1);
+        for (std::size_t i = 0; i < count; ++i)
+            if (report.pixelMeasured[i]) cascadeOf[i] = std::int8_t(selectView(cascades, m.samples.point[i]).view);
+        std::vector<double> texelWorld;
+        for (const ShadowView& c : cascades) texelWorld.push_back(c.space.texelWorldSize);
+        report.cascades = cascadeAccuracy(report, cascadeOf, texelWorld);
+    }
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
     setStage(progress, 1.0f, "done");

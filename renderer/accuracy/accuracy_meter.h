@@ -4,6 +4,7 @@
 // a shadow ray (Embree), and the tool's shadow factor S. The reference depends only on scene, light, camera and size,
 // so it is cached: re-measuring after a bias / filter / resolution change costs one frame of the tool.
 // Knows no window, UI or CLI. Needs a current GL 4.5 context on the calling thread (one meter per context).
+#include "accuracy/cascade_accuracy.h"
 #include "accuracy/mismatch_cause.h"
 #include "frame/camera.h"
 #include "scene/scene.h"
@@ -140,6 +141,9 @@ struct AccuracyReport : AccuracyNumbers {
     std::vector<std::uint8_t> pixelMeasured;   // 1 where the pixel is scored for this light
     std::vector<std::uint8_t> pixelOnBoundary; // 1 on the true boundary's thin line
     std::vector<float> pixelLambert;           // max(n . l, 0): the overlays' dimmed picture (flicker.h draws one)
+
+    // A cascaded light: its numbers per cascade and at the seams (cascade_accuracy.h); empty cascades otherwise.
+    CascadeAccuracy cascades;
 
     // Shadow views the tool frame's planner rendered (0: every map was reused; flicker.h checks it under camera motion).
     std::size_t shadowViewsRendered = 0;

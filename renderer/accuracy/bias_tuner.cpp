@@ -129,7 +129,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     std::string lightError;
     // A point light's six faces share near/far but see different receivers: the median of their figures.
     std::vector<LightSpace> spaces;
-    if (const auto views = buildLightViews(lit.lights[0], 0, scene.bounds, origin, lightError))
+    if (const auto views = buildLightViews(lit.lights[0], 0, scene.bounds, origin, nullptr, lightError))
         for (const ShadowView& view : *views) spaces.push_back(view.space);
     if (spaces.empty()) {
         result.error = lightError;

@@ -32,7 +32,7 @@ bool mapTexel(const LightSpace& space, const glm::dvec3& world, glm::dvec2& texe
 // with the reason).
 std::vector<ShadowView> lightViews(const LightSettings& light, const Bounds& bounds) {
     std::string error;
-    const auto views = buildLightViews(light, 0, bounds, renderOriginOf(bounds), error);
+    const auto views = buildLightViews(light, 0, bounds, renderOriginOf(bounds), nullptr, error);
     return views ? *views : std::vector<ShadowView>{};
 }
 

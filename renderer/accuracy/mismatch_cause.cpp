@@ -58,7 +58,11 @@ const std::array<MismatchCause, kCauseCount - 1>& allCauses() {
 
 MismatchCause decideCause(const CauseContext& c, const glm::dvec3& p, const glm::dvec3& n, PixelClass reference,
                           double distance, double k) {
-    if (reference == PixelClass::OutsideCone || outsideVolume(c.light, c.lightSpace, p)) return MismatchCause::OutsideVolume;
+    // A cascaded light: the cascade that holds p; beyond the shadow distance none does (the tool says lit there).
+    const ShadowView* cascade = c.cascades.empty() ? nullptr : viewHolding(c.cascades, p);
+    if (!c.cascades.empty() && !cascade) return MismatchCause::OutsideVolume;
+    const LightSpace& space = cascade ? cascade->space : c.lightSpace;
+    if (reference == PixelClass::OutsideCone || outsideVolume(c.light, space, p)) return MismatchCause::OutsideVolume;
     const glm::dvec3 l = towardLight(c.light, p);
     // The ray the map sees: from the light side down to just above the receiver.
     const double offset = 1e-5 * (glm::length(p) + c.sceneRadius);
@@ -78,8 +82,8 @@ MismatchCause decideCause(const CauseContext& c, const glm::dvec3& p, const glm:
         // The caster's distance along the light from the light's eye (near plane's frame).
         const glm::dvec3 caster = start - l * double(kept.t);
         const double casterDepth = c.light.type == LightType::Point ? cubeFaceDepth(c.light, caster)
-                                                                     : -(c.lightSpace.view * glm::dvec4(caster, 1.0)).z;
-        if (!c.depthClamp && casterDepth < c.lightSpace.nearPlane) return MismatchCause::NearPlaneClip;
+                                                                     : -(space.view * glm::dvec4(caster, 1.0)).z;
+        if (!c.depthClamp && casterDepth < space.nearPlane) return MismatchCause::NearPlaneClip;
         if (distance <= k) return MismatchCause::NearEdge;
         return MismatchCause::BiasOverGap;
     }

@@ -4,6 +4,7 @@
 // shadow pass's culling and alpha rules), the receiver's and that caster's light-space depths, and the map's bounds.
 // The table below is the one source of each cause's name, JSON key, colour in the overlay and remedy.
 #include "light/light_space.h"
+#include "views/shadow_view.h"
 #include "reference/embree_scene.h"
 #include "reference/visibility.h"
 #include "settings/settings.h"
@@ -41,6 +42,7 @@ struct CauseContext {
     const EmbreeScene* bvh = nullptr;
     ReferenceLight light;        // render-origin-relative
     LightSpace lightSpace;       // the tool's light space (map bounds, near plane)
+    std::vector<ShadowView> cascades;  // a cascaded light's cascades: the one holding the pixel is its light space
     CullMode cullMode = CullMode::None;
     bool depthClamp = true;
     double sceneRadius = 1.0;

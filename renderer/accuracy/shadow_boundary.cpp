@@ -56,8 +56,9 @@ bool sameSurface(const SurfaceSamples& samples, std::size_t i, std::size_t j) {
 }
 
 ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<PixelClass>& classes,
-                               const LightSpace& light, const BoundaryProbe& probe)
-    : samples_(&samples), classes_(&classes), light_(light), probe_(probe) {
+                               const LightSpace& light, const BoundaryProbe& probe,
+                               const std::vector<ShadowView>& cascades)
+    : samples_(&samples), classes_(&classes), light_(light), probe_(probe), cascades_(cascades) {
     // Rows of the light's view rotation: its image axes in world space.
     right_ = glm::dvec3(light.view[0][0], light.view[1][0], light.view[2][0]);
     up_ = glm::dvec3(light.view[0][1], light.view[1][1], light.view[2][1]);
@@ -79,6 +80,13 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
         } else {
             texel_[i] = toTexels(light, samples.point[i]);
         }
+    }
+    if (!cascades_.empty()) {
+        // Beyond the shadow distance no cascade holds a pixel: the last one's texels measure it.
+        texelScale_.assign(count, 1.0f);
+        for (std::size_t i = 0; i < count; ++i)
+            if (hasVisibility(classes[i]))
+                texelScale_[i] = float(light.texelWorldSize / texelWorldSizeAt(samples.point[i]));
     }
 
     std::vector<glm::dvec2> points;
@@ -126,6 +134,10 @@ double ShadowBoundary::texelWorldSizeAt(const glm::dvec3& p) const {
         const glm::dvec3 d = glm::abs(p - probe_.light.position);
         // A 90-degree face: 2 x depth across, over the map's resolution.
         return 2.0 * std::max({d.x, d.y, d.z, light_.nearPlane}) / double(light_.resolution);
+    }
+    if (!cascades_.empty()) {
+        const ShadowView* holding = viewHolding(cascades_, p);
+        return (holding ? holding : &cascades_.back())->space.texelWorldSize;
     }
     return light_.perspective ? light_.texelSizeAt(glm::dot(p - light_.position, light_.direction))
                               : light_.texelWorldSize;
@@ -187,7 +199,8 @@ double ShadowBoundary::visibleDistance(std::size_t i) {
     if (visibleDistance_[i] < 0.0f) {
         const glm::dvec2& t = texel_[i];
         const PointTree& tree = point_ ? faceTrees_[face_[i]] : tree_;
-        visibleDistance_[i] = finite2(t) ? float(tree.nearestDistance(t)) : float(kInfinity);
+        const double scale = texelScale_.empty() ? 1.0 : double(texelScale_[i]);
+        visibleDistance_[i] = finite2(t) ? float(tree.nearestDistance(t) * scale) : float(kInfinity);
     }
     return visibleDistance_[i];
 }

@@ -6,11 +6,14 @@
 //   resolution per face); a boundary point is kept for every face whose plane extends to it (up to 63 degrees off
 //   the face's axis), so a distance across a cube seam is measured in the pixel's own face's texels. Distances do not
 //   depend on how a face is oriented, only on its axis.
+// - A cascaded light: every cascade shares the light's orientation, so the boundary lives in one grid (the first
+//   cascade's texels) and a pixel's distance is scaled into the texels of the cascade that holds it.
 // - Boundaries the view does not show (behind a fold, below pixel size): a pixel farther than k from the visible
 //   boundary is probed with shadow rays from rings of points on its own tangent plane, out to k texels; the
 //   distance drops to the radius where visibility flips. Both are cached per pixel.
 #include "accuracy/point_tree.h"
 #include "light/light_space.h"
+#include "views/shadow_view.h"
 #include "reference/embree_scene.h"
 #include "reference/surface_samples.h"
 #include "reference/visibility.h"
@@ -46,8 +49,9 @@ class ShadowBoundary {
 public:
     ShadowBoundary() = default;
     // samples and classes must outlive this object.
+    // `cascades`: a cascaded light's cascades (light is then the first's space); empty otherwise.
     ShadowBoundary(const SurfaceSamples& samples, const std::vector<PixelClass>& classes, const LightSpace& light,
-                   const BoundaryProbe& probe);
+                   const BoundaryProbe& probe, const std::vector<ShadowView>& cascades = {});
 
     // Distance of pixel i to the nearest true boundary in texels, exact enough to decide "> k" (+infinity when
     // there is none). Not thread-safe for one pixel; distinct pixels may be asked from several threads.
@@ -65,8 +69,8 @@ public:
     bool probes() const { return probe_.bvh != nullptr; }
 
     std::size_t pointCount() const;
-    // World size of one shadow-map texel at p (directional: constant; spot: at p's depth along the axis; point: at
-    // p's depth in its cube face).
+    // World size of one shadow-map texel at p (directional: constant, a cascaded light's: the holding cascade's;
+    // spot: at p's depth along the axis; point: at p's depth in its cube face).
     double texelWorldSizeAt(const glm::dvec3& p) const;
     bool onBoundary(std::size_t i) const { return !onBoundary_.empty() && onBoundary_[i] != 0; }
     std::size_t probedPixels() const { return probedPixels_.load(); }
@@ -92,6 +96,8 @@ private:
     PointTree tree_;
     std::array<PointTree, 6> faceTrees_;  // point light: the boundary on each cube face's plane
     std::vector<std::uint8_t> face_;      // point light: the face that sees each pixel
+    std::vector<ShadowView> cascades_;    // a cascaded light's cascades
+    std::vector<float> texelScale_;       // cascades: the first cascade's texel over the holding cascade's, per pixel
     bool point_ = false;
 };
 

@@ -128,7 +128,7 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
             out.noShadowReason = "casts no shadow (lights." + std::to_string(i) +
                                  ".castsShadows = false): it shines everywhere, no shadow map";
         } else {
-            const auto views = buildLightViews(l, i, scene.bounds, origin, error);
+            const auto views = buildLightViews(l, i, scene.bounds, origin, nullptr, error);
             if (!views) return std::nullopt;
             ShadowExport e = makeShadowExport(settings, i, views->front().space, sceneLabel);
             for (std::size_t v = 1; v < views->size(); ++v) e.views.push_back(viewOf(i, l.type, (*views)[v].space));

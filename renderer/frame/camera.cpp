@@ -29,6 +29,20 @@ glm::dmat4 Camera::projection(double aspect) const {
     return glm::perspective(glm::radians(fovYDeg), std::max(aspect, 1e-6), nearPlane, farPlane);
 }
 
+ViewCamera viewCameraOf(const Camera& camera, double aspect, const glm::dvec3& origin) {
+    const ViewBasis basis = viewBasis(camera.target - camera.position);
+    ViewCamera v;
+    v.eye = camera.position - origin;
+    v.forward = basis.forward;
+    v.right = basis.right;
+    v.up = basis.up;
+    v.tanHalfFovY = std::tan(glm::radians(camera.fovYDeg) * 0.5);
+    v.aspect = std::max(aspect, 1e-6);
+    v.nearPlane = camera.nearPlane;
+    v.farPlane = camera.farPlane;
+    return v;
+}
+
 void framePoints(Camera& camera, const std::vector<glm::dvec3>& points, double aspect) {
     if (points.empty()) return;
     const ViewBasis b = viewBasis(camera.target - camera.position);

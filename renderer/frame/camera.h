@@ -2,6 +2,7 @@
 // The main view's camera, built in double precision relative to the render origin.
 #include "scene/scene.h"
 #include "settings/settings.h"
+#include "views/view_camera.h"
 
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
@@ -31,6 +32,10 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspe
 // The camera settings that bring `used` back (what a saved preset records): its position, target and fov, with
 // `autoFrame` as given (true: auto-framing still decides on load, the recorded values say what it chose here).
 CameraSettings recordedCamera(const Camera& used, bool autoFrame);
+
+// The camera as the shadow views see it (what cascades fit to), for a view of `aspect` (width / height),
+// render-origin-relative.
+ViewCamera viewCameraOf(const Camera& camera, double aspect, const glm::dvec3& origin);
 
 // Share of the view's frame (0..1) reserved for the subject in its limiting dimension when auto-framing.
 inline constexpr double kAutoFrameFill = 0.9;

@@ -29,6 +29,7 @@ struct ShadowViewStats {
     std::string name;       // "light 0", "light 2 +X"
     bool hasView = false;   // false: the light casts no shadow (disabled, castsShadows off)
     LightSpace space;
+    CascadeSlice slice;     // a cascade's slice of the camera's frustum
     bool ran = false;
     std::string reason;
     std::optional<double> milliseconds;
@@ -67,6 +68,12 @@ struct FrameStats {
     glm::dvec3 renderOrigin{0.0};
     glm::dmat4 cameraViewProjection{1.0};  // render-origin-relative
 };
+
+// The frame's views of light `light` (those it rendered or kept), in order, as the view selection takes them
+// (views/view_select.h).
+std::vector<ShadowView> frameViewsOf(const FrameStats& stats, std::size_t light);
+// The cascades of the frame's first casting light (what one-light tools describe); empty when it has none.
+std::vector<ShadowView> frameCascades(const FrameStats& stats);
 
 // World position -> pixel (x right, y down, in [0,w)x[0,h)) using the frame's camera; for tests and picking.
 bool projectToPixel(const FrameStats& stats, const glm::dvec3& world, int width, int height, double& px, double& py);

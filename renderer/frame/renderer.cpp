@@ -60,6 +60,19 @@ std::size_t sceneFingerprint(const Scene& scene) {
     return seed;
 }
 
+std::vector<ShadowView> frameViewsOf(const FrameStats& stats, std::size_t light) {
+    std::vector<ShadowView> views;
+    for (const ShadowViewStats& v : stats.views)
+        if (v.hasView && v.light == light) views.push_back({v.light, v.kind, v.index, v.space, v.slice});
+    return views;
+}
+
+std::vector<ShadowView> frameCascades(const FrameStats& stats) {
+    for (const ShadowViewStats& v : stats.views)
+        if (v.hasView) return v.kind == ShadowViewKind::Cascade ? frameViewsOf(stats, v.light) : std::vector<ShadowView>{};
+    return {};
+}
+
 bool projectToPixel(const FrameStats& stats, const glm::dvec3& world, int width, int height, double& px, double& py) {
     const glm::dvec4 clip = stats.cameraViewProjection * glm::dvec4(world - stats.renderOrigin, 1.0);
     if (clip.w <= 0.0) return false;
@@ -119,8 +132,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
     // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention).
+    const ViewCamera viewCamera = viewCameraOf(camera, double(target.width()) / target.height(), stats.renderOrigin);
     const ShadowPlan plan = planShadowViews(
-        settings, scene.bounds, stats.renderOrigin, casterSpheres(*gpuScene_), info_.maxTextureSize,
+        settings, scene.bounds, stats.renderOrigin, &viewCamera, casterSpheres(*gpuScene_), info_.maxTextureSize,
         [&](std::size_t light) -> std::optional<KeptMap> {
             // A light's current map: any of its views' (they share one size and format).
             for (const auto& [id, state] : views_)
@@ -185,11 +199,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.name = viewName(p.view);
         entry.hasView = true;
         entry.space = p.view.space;
+        entry.slice = p.view.slice;
         entry.resolution = array.resolution();
         entry.format = array.format();
 
         const ViewInputs inputs{fingerprint, p.view.space.viewProjection(), light, state.map.generation(),
-                                p.castersInVolume == 0};
+                                p.castersInVolume == 0, p.view.kind == ShadowViewKind::Cascade};
         const ViewDecision decision = decideView(
             state.rendered, inputs, volumesOverlap(p.view.space.volumeViewProjection(), stats.cameraViewProjection));
         entry.reason = decision.reason;
@@ -274,6 +289,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     in.settings = &settings;
     in.viewProjection = stats.cameraViewProjection;
     in.cameraPosition = camera.position - stats.renderOrigin;
+    in.cameraForward = viewCamera.forward;
     in.renderOrigin = stats.renderOrigin;
     std::map<MapGroup, int> arrayIndex;
     for (const auto& [group, array] : arrays_) {
@@ -292,6 +308,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             l.space = &casting->view.space;
             l.mapArray = arrayIndex.at(casting->group);
             l.layer = casting->group.cube ? casting->layer / 6 : casting->layer;
+            if (casting->view.kind == ShadowViewKind::Cascade)
+                for (auto c = casting; c != plan.views.end() && c->view.light == i; ++c)
+                    l.cascades.push_back({&c->view, c->layer});
         }
         in.lights.push_back(l);
     }

@@ -91,6 +91,23 @@ glm::dmat3 lightBasis(const glm::dvec3& directionIn) {
     return glm::dmat3(right, up, back);
 }
 
+LightSpace orthoLightSpace(const LightSettings& light, const glm::dvec3& direction, const glm::dvec3& eye,
+                           double halfSize, double nearPlane, double farPlane) {
+    LightSpace ls;
+    ls.perspective = false;
+    ls.reversedZ = light.shadow.reversedZ;
+    ls.direction = direction;
+    ls.resolution = std::max(light.shadow.resolution, 1);
+    ls.position = eye;
+    ls.nearPlane = nearPlane;
+    ls.farPlane = farPlane;
+    ls.orthoSize = 2.0 * halfSize;
+    ls.texelWorldSize = ls.orthoSize / ls.resolution;
+    ls.view = viewFromBasis(lightBasis(direction), eye);
+    ls.projection = orthoProjection(halfSize, nearPlane, farPlane, ls.reversedZ);
+    return ls;
+}
+
 bool allFinite(const glm::dmat4& m) {
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
@@ -138,24 +155,12 @@ std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Boun
     const double radius = bounds.empty ? 1.0 : std::max(double(bounds.radius()), 1e-3);
 
     if (light.type == LightType::Directional) {
-        ls.perspective = false;
         // The eye sits on the scene's bounding sphere, on the side the light comes from; near/far are distances
         // from it along the light. Auto-fit takes [0, diameter], so manual values start from the same place.
         const double r = radius + fitMargin(radius);
-        ls.position = center - ls.direction * r;
-        double halfSize = 0.5 * double(proj.orthoSize);
-        if (proj.autoFit) {
-            halfSize = r;
-            ls.nearPlane = 0.0;
-            ls.farPlane = 2.0 * r;
-        } else {
-            ls.nearPlane = proj.nearPlane;
-            ls.farPlane = proj.farPlane;
-        }
-        ls.orthoSize = 2.0 * halfSize;
-        ls.texelWorldSize = ls.orthoSize / ls.resolution;
-        ls.view = viewFromBasis(basis, ls.position);
-        ls.projection = orthoProjection(halfSize, ls.nearPlane, ls.farPlane, ls.reversedZ);
+        ls = proj.autoFit ? orthoLightSpace(light, ls.direction, center - ls.direction * r, r, 0.0, 2.0 * r)
+                          : orthoLightSpace(light, ls.direction, center - ls.direction * r,
+                                            0.5 * double(proj.orthoSize), proj.nearPlane, proj.farPlane);
     } else {
         ls.perspective = true;
         ls.position = glm::dvec3(light.position) - origin;

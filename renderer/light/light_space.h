@@ -74,6 +74,12 @@ std::optional<LightSpace> buildLightSpace(const LightSettings& light, const Boun
 std::optional<LightSpace> buildLightSpace(const Settings& settings, const Bounds& bounds, const glm::dvec3& origin,
                                           std::string& error);
 
+// A directional light's orthographic view: a square volume of half-width `halfSize` around the eye's axis, depths
+// [nearPlane, farPlane] from `eye` along the light (render-origin-relative), in the light's depth convention and at its
+// resolution. `direction` is unit. What the scene fit and each cascade's fit build their view with.
+LightSpace orthoLightSpace(const LightSettings& light, const glm::dvec3& direction, const glm::dvec3& eye,
+                           double halfSize, double nearPlane, double farPlane);
+
 struct CubeFace {
     const char* name;  // "+X"
     glm::dvec3 look;   // the face's axis: the direction its view looks along

@@ -83,7 +83,7 @@ FrameLightViews frameLightViews(const std::vector<ShadowViewStats>& all, const S
     for (const ShadowViewStats& v : all)
         if (v.hasView && v.light == first.light) {
             out.stats.push_back(&v);
-            out.views.push_back({v.light, v.kind, v.index, v.space});
+            out.views.push_back({v.light, v.kind, v.index, v.space, v.slice});
         }
     return out;
 }

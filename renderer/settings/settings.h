@@ -38,12 +38,28 @@ struct ShadowMapSettings {
     bool operator==(const ShadowMapSettings&) const = default;
 };
 
+// How a directional light's views are fitted: one view around the whole scene, or cascades that follow the camera.
+enum class ProjectionFit { Scene, Cascades };
+// How a cascade is fitted to its slice of the camera's frustum: stable (the slice's bounding sphere, size rounded and
+// origin snapped to whole texels: camera motion moves no texel edge) or tight (the slice's box in light space: more
+// texels on screen, edges that crawl as the camera moves).
+enum class CascadeFit { Stable, Tight };
+
 struct ProjectionSettings {
     bool autoFit = true;      // fit ortho size / near / far (spot: near / far) to the scene's bounding sphere
     float orthoSize = 20.0f;  // full width of the square ortho volume, world units
     float nearPlane = 0.1f;
     float farPlane = 50.0f;
     bool depthClamp = true;   // GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast
+    // Cascades (directional lights with fit = Cascades); the scene fit ignores them.
+    ProjectionFit fit = ProjectionFit::Scene;
+    int cascadeCount = 4;        // 1..4
+    float splitLambda = 0.75f;   // practical split scheme: 0 = uniform, 1 = logarithmic
+    // Manual split distances from the camera (world units, increasing); all 0 = the practical scheme decides.
+    glm::vec3 splits{0.0f};
+    float shadowDistance = 0.0f; // how far from the camera shadows reach; 0 = the camera's far plane
+    float blendBand = 0.1f;      // share of each cascade (0..0.5) where it fades into the next
+    CascadeFit cascadeFit = CascadeFit::Stable;
 
     bool operator==(const ProjectionSettings&) const = default;
 };

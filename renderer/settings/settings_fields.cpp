@@ -235,6 +235,16 @@ std::string directionCheck(double x, double y, double z) {
     return {};
 }
 
+// Manual cascade splits: all zero (the practical scheme), or increasing distances whose unused tail is zero.
+std::string manualSplitsCheck(double x, double y, double z) {
+    const double c[3] = {x, y, z};
+    for (double v : c)
+        if (v < 0.0 || v > 1e7) return "has a component outside [0, 1e7]";
+    for (int i = 1; i < 3; ++i)
+        if (c[i] != 0.0 && !(c[i] > c[i - 1])) return "is not increasing (each split beyond the one before it)";
+    return {};
+}
+
 SettingsField tagged(SettingsField f, unsigned invalidates) {
     f.invalidates = invalidates;
     return f;
@@ -366,6 +376,45 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
     f.push_back(tagged(boolField(keyOf("projection.depthClamp"),
                                  "GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast (directional lights; spot and point views clip at their near plane)",
                                  at([](auto& l) -> auto& { return l.projection.depthClamp; })),
+                       kView));
+    f.push_back(tagged(enumField<ProjectionFit>(keyOf("projection.fit"),
+                                                "How a directional light's views are fitted: scene (one view around "
+                                                "the whole scene) or cascades (views that follow the camera, each "
+                                                "fitted to a slice of its frustum)",
+                                                {{ProjectionFit::Scene, "scene"}, {ProjectionFit::Cascades, "cascades"}},
+                                                at([](auto& l) -> auto& { return l.projection.fit; })),
+                       kView | kVariant));  // CASCADES is compiled in only when a light has cascades
+    f.push_back(tagged(intField(keyOf("projection.cascadeCount"), "Cascades of a light with fit cascades", 1, 4,
+                                {1, 2, 3, 4},
+                                at([](auto& l) -> auto& { return l.projection.cascadeCount; })),
+                       kView | kVariant));  // the cascade block's length
+    f.push_back(tagged(floatField(keyOf("projection.splitLambda"),
+                                  "Practical split scheme: the blend of logarithmic (1) and uniform (0) split "
+                                  "distances between the camera's near plane and the shadow distance",
+                                  0, 1, at([](auto& l) -> auto& { return l.projection.splitLambda; })),
+                       kView));
+    f.push_back(tagged(vec3Field(keyOf("projection.splits"),
+                                 "Manual split distances from the camera, world units, increasing: where cascade 0 "
+                                 "ends, then 1, then 2 (those beyond the cascade count are ignored); [0, 0, 0] = the "
+                                 "practical scheme (splitLambda) decides",
+                                 "each in [0, 1e7]", manualSplitsCheck,
+                                 at([](auto& l) -> auto& { return l.projection.splits; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("projection.shadowDistance"),
+                                  "How far from the camera cascaded shadows reach, world units (beyond: lit); 0 = the "
+                                  "camera's far plane",
+                                  0, 1e7, at([](auto& l) -> auto& { return l.projection.shadowDistance; })),
+                       kView));
+    f.push_back(tagged(floatField(keyOf("projection.blendBand"),
+                                  "Share of each cascade's depth range where it fades into the next (0 = a hard seam)",
+                                  0, 0.5, at([](auto& l) -> auto& { return l.projection.blendBand; })),
+                       kView));
+    f.push_back(tagged(enumField<CascadeFit>(keyOf("projection.cascadeFit"),
+                                             "stable: each cascade fits its slice's bounding sphere, snapped to whole "
+                                             "texels (camera motion moves no texel edge); tight: the slice's box in "
+                                             "light space (more texels on screen, edges crawl as the camera moves)",
+                                             {{CascadeFit::Stable, "stable"}, {CascadeFit::Tight, "tight"}},
+                                             at([](auto& l) -> auto& { return l.projection.cascadeFit; })),
                        kView));
     return f;
 }

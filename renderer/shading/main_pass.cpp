@@ -14,6 +14,7 @@ namespace shadowlab {
 namespace {
 
 constexpr GLuint kLightsBinding = 0;
+constexpr GLuint kCascadesBinding = 1;
 
 // std140 layout of LightData (shaders/shadow/light_data.glsl).
 struct LightBlock {
@@ -23,8 +24,24 @@ struct LightBlock {
     glm::vec4 radiance{0.0f};
     glm::vec4 shadow{0.0f};
     glm::vec4 depth{0.0f};
+    glm::vec4 views{0.0f};
 };
-static_assert(sizeof(LightBlock) == 144, "std140 LightData is 144 bytes");
+static_assert(sizeof(LightBlock) == 160, "std140 LightData is 160 bytes");
+
+// std140 layout of CascadeData (shaders/shadow/cascades.glsl).
+struct CascadeBlock {
+    glm::mat4 viewProjection{1.0f};
+    glm::vec4 slice{0.0f};
+};
+static_assert(sizeof(CascadeBlock) == 80, "std140 CascadeData is 80 bytes");
+
+CascadeBlock cascadeBlockOf(const MainPassCascade& c) {
+    const ShadowView& v = *c.view;
+    CascadeBlock b;
+    b.viewProjection = glm::mat4(v.space.viewProjection());
+    b.slice = glm::vec4(float(v.slice.farDepth), float(v.slice.blendStart), float(c.layer), float(v.space.texelWorldSize));
+    return b;
+}
 
 // The order the shader walks lights in: directional, spot, point; casters first within each kind.
 int bucket(const MainPassLight& l) {
@@ -61,7 +78,7 @@ LightBlock blockOf(const MainPassLight& l, const glm::dvec3& origin) {
 
 }  // namespace
 
-MainPass::MainPass() : lightBuffer_(gl::createBuffer()) {}
+MainPass::MainPass() : lightBuffer_(gl::createBuffer()), cascadeBuffer_(gl::createBuffer()) {}
 
 std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& target) {
     const Settings& settings = *in.settings;
@@ -87,6 +104,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     base.kernel = settings.filter.kind == FilterKind::Pcf ? settings.filter.kernel : 0;
     base.view = settings.view;
     std::vector<LightBlock> blocks;
+    std::vector<CascadeBlock> cascadeBlocks;
     for (const MainPassLight& l : lights) {
         const bool casts = l.space != nullptr;
         switch (l.settings->type) {
@@ -99,6 +117,17 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
                                                     l.settings->type != LightType::Point &&
                                                     filterTechnique(settings.filter.kind).receiverPlane);
         blocks.push_back(blockOf(l, in.renderOrigin));
+        if (casts && !l.cascades.empty()) {
+            // x: the light's first cascade in the Cascades block, y: how many (0: its one view).
+            blocks.back().views = glm::vec4(float(cascadeBlocks.size()), float(l.cascades.size()), 0.0f, 0.0f);
+            for (const MainPassCascade& c : l.cascades) cascadeBlocks.push_back(cascadeBlockOf(c));
+        }
+    }
+    base.lights.cascades = int(cascadeBlocks.size());
+    if (!cascadeBlocks.empty()) {
+        glNamedBufferData(cascadeBuffer_.id(), GLsizeiptr(cascadeBlocks.size() * sizeof(CascadeBlock)),
+                          cascadeBlocks.data(), GL_STREAM_DRAW);
+        glBindBufferBase(GL_UNIFORM_BUFFER, kCascadesBinding, cascadeBuffer_.id());
     }
     base.lights.mapArrays2D = int(in.maps2D.size());
     base.lights.mapArraysCube = int(in.mapsCube.size());
@@ -138,6 +167,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
             // Uniforms that are the same for every draw of a frame: set once per program per frame.
             glUniformMatrix4fv(u.viewProjection, 1, GL_FALSE, glm::value_ptr(glm::mat4(in.viewProjection)));
             glUniform3fv(u.cameraPosition, 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
+            if (u.cameraForward >= 0) glUniform3fv(u.cameraForward, 1, glm::value_ptr(glm::vec3(in.cameraForward)));
             glUniform1f(u.ambient, settings.ambient);
             glUniform1f(u.filterScale, filterScale);
             if (!units2D.empty()) glUniform1iv(u.maps2D, GLsizei(units2D.size()), units2D.data());

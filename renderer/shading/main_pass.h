@@ -6,6 +6,7 @@
 #include "light/light_space.h"
 #include "shading/shader_variants.h"
 #include "shadow/shadow_map.h"
+#include "views/shadow_view.h"
 
 #include <glm/ext/matrix_double4x4.hpp>
 
@@ -15,12 +16,19 @@
 
 namespace shadowlab {
 
+// A cascade as the main pass sees it: its view and its layer in the light's map array.
+struct MainPassCascade {
+    const ShadowView* view = nullptr;
+    int layer = 0;
+};
+
 // One light as the main pass sees it.
 struct MainPassLight {
     const LightSettings* settings = nullptr;
     const LightSpace* space = nullptr;  // casting lights: the view it is compared in (a point light: any face)
     int mapArray = -1;                  // casting lights: index into MainPassInput::maps2D or ::mapsCube
     int layer = 0;                      // its layer in that array (a point light: its cube index)
+    std::vector<MainPassCascade> cascades;  // a cascaded light's cascades, nearest first (all in mapArray)
 };
 
 struct MainPassInput {
@@ -33,6 +41,7 @@ struct MainPassInput {
     std::vector<GLuint> samplersCube;
     glm::dmat4 viewProjection{1.0};  // render-origin-relative
     glm::dvec3 cameraPosition{0.0};  // render-origin-relative
+    glm::dvec3 cameraForward{0.0, 0.0, -1.0};  // unit: cascades are chosen by depth along it
     glm::dvec3 renderOrigin{0.0};    // subtracted from light positions
 };
 
@@ -45,7 +54,8 @@ public:
 
 private:
     MainVariantCache variants_;
-    gl::Buffer lightBuffer_;  // the Lights uniform block
+    gl::Buffer lightBuffer_;    // the Lights uniform block
+    gl::Buffer cascadeBuffer_;  // the Cascades uniform block (frames with a cascaded light)
 };
 
 }  // namespace shadowlab

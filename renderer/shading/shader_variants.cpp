@@ -35,6 +35,7 @@ std::vector<std::string> MainVariantKey::defines() const {
     d.push_back("POINT_CASTERS " + std::to_string(lights.pointCasters));
     d.push_back("MAP_ARRAYS_2D " + std::to_string(lights.mapArrays2D));
     d.push_back("MAP_ARRAYS_CUBE " + std::to_string(lights.mapArraysCube));
+    if (lights.cascades > 0) d.push_back("CASCADES " + std::to_string(lights.cascades));
     if (normalOffset) d.push_back("NORMAL_OFFSET");
     if (receiverPlane) d.push_back("RECEIVER_PLANE");
     if (receiverPlane && !filterTechnique(filter).bilinear) d.push_back("FILTER_NEAREST");
@@ -62,7 +63,7 @@ MainUniforms locateUniforms(GLuint p) {
     return {at("uViewProjection"), at("uModel"),          at("uNormalMatrix"), at("uUvTransform"),
             at("uMaps2D[0]"),      at("uMapsCube[0]"),    at("uCameraPosition"), at("uBaseColor"),
             at("uAmbient"),        at("uFilterScale"),    at("uAlphaFactor"),  at("uAlphaCutoff"),
-            at("uBaseColorTexture")};
+            at("uBaseColorTexture"), at("uCameraForward")};
 }
 
 }  // namespace

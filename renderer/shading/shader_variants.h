@@ -18,6 +18,7 @@ struct LightSetKey {
     int point = 0, pointCasters = 0;
     int mapArrays2D = 0;    // sampler2DArrayShadow groups (directional and spot views)
     int mapArraysCube = 0;  // samplerCubeArrayShadow groups (point lights)
+    int cascades = 0;       // every cascaded light's cascades together (the Cascades block's length)
     int lights() const { return directional + spot + point; }
     auto operator<=>(const LightSetKey&) const = default;
 };
@@ -41,7 +42,7 @@ struct MainVariantKey {
 // Uniform locations of a main-pass program, looked up once when it is built (-1 where the variant lacks one).
 struct MainUniforms {
     GLint viewProjection, model, normalMatrix, uvTransform, maps2D, mapsCube, cameraPosition, baseColor, ambient,
-        filterScale, alphaFactor, alphaCutoff, baseColorTexture;
+        filterScale, alphaFactor, alphaCutoff, baseColorTexture, cameraForward;
 };
 
 struct MainProgram {

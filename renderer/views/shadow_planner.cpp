@@ -29,7 +29,8 @@ std::string changeReason(const std::optional<ViewInputs>& last, const ViewInputs
         if (field && (field->invalidates & kInvalidatesShadowView)) keys += (keys.empty() ? "" : ", ") + key;
     }
     if (!keys.empty()) reasons.push_back(keys + " changed");
-    if (keys.empty() && now.viewProjection != last->viewProjection) reasons.push_back("light space changed");
+    if (keys.empty() && now.viewProjection != last->viewProjection)
+        reasons.push_back(now.followsCamera ? "the camera moved (the cascade follows it)" : "light space changed");
     if (now.empty != last->empty)
         reasons.push_back(now.empty ? "no caster in its volume any more" : "casters entered its volume");
     return joinReasons(reasons);
@@ -68,7 +69,7 @@ std::vector<ShadowView> ShadowPlan::lightViews(std::size_t light) const {
 }
 
 ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, const glm::dvec3& origin,
-                           const std::vector<CasterSphere>& casters, int maxTextureSize,
+                           const ViewCamera* camera, const std::vector<CasterSphere>& casters, int maxTextureSize,
                            const std::function<std::optional<KeptMap>(std::size_t light)>& keptMap) {
     ShadowPlan plan;
     plan.settings = effective;
@@ -96,7 +97,7 @@ ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, cons
             light.shadow.format = kept->format;
         }
         std::string error;
-        const auto views = buildLightViews(light, i, bounds, origin, error);
+        const auto views = buildLightViews(light, i, bounds, origin, camera, error);
         if (!views) {
             plan.error = error;
             return plan;

@@ -1,6 +1,6 @@
 #pragma once
 // The shadow planner: which views a frame needs and why. Two steps, both pure (no GL), so they are tested alone:
-//  1. planShadowViews: (settings, scene bounds, casters) -> every casting light's views, grouped into map arrays
+//  1. planShadowViews: (settings, scene bounds, camera, casters) -> every casting light's views, grouped into map arrays
 //     with a layer each, and the lights that have no view with the reason;
 //  2. decideView: (what a view's map was last rendered from, what it would be rendered from now, whether the camera
 //     sees its volume) -> render, clear, keep or skip it, with the reason in the key table's words.
@@ -63,8 +63,9 @@ struct KeptMap {
 };
 
 // `effective`: the frame's lights with useSceneLights resolved. `keptMap(light)`: that light's current map, if any.
+// `camera`: the frame's (cascades follow it); nullptr where there is none.
 ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, const glm::dvec3& origin,
-                           const std::vector<CasterSphere>& casters, int maxTextureSize,
+                           const ViewCamera* camera, const std::vector<CasterSphere>& casters, int maxTextureSize,
                            const std::function<std::optional<KeptMap>(std::size_t light)>& keptMap);
 
 // What a view's map was last rendered from; the view runs again only if one of these changed.
@@ -74,6 +75,7 @@ struct ViewInputs {
     LightSettings light;               // compared through the key table's shadow-view tags
     std::uint64_t mapGeneration = 0;   // the array was reallocated: its contents are gone
     bool empty = false;                // no caster in its volume: the map is cleared, not drawn
+    bool followsCamera = false;        // a cascade: its light space moves with the camera
     bool operator==(const ViewInputs&) const = default;
 };
 

@@ -1,11 +1,14 @@
 #include "views/shadow_view.h"
 
+#include "views/view_builders.h"
+
 namespace shadowlab {
 
 std::string viewSuffix(ShadowViewKind kind, int index) {
     switch (kind) {
     case ShadowViewKind::Single: return "";
     case ShadowViewKind::CubeFace: return index >= 0 && index < 6 ? cubeFaces()[std::size_t(index)].name : "?";
+    case ShadowViewKind::Cascade: return "cascade:" + std::to_string(index);
     }
     return "";
 }
@@ -25,7 +28,8 @@ std::optional<std::size_t> findView(const std::vector<ShadowView>& lightViews, c
     }
     const std::string light = lightViews.empty() ? "the light" : "light " + std::to_string(lightViews.front().light);
     error = choices.empty() || lightViews.size() < 2
-                ? "--view " + text + ": " + light + " has one view (--view chooses among a point light's cube faces)"
+                ? "--view " + text + ": " + light + " has one view (--view chooses among a point light's cube faces or a " +
+                      "cascaded light's cascades)"
                 : "--view " + text + ": " + light + " has no such view (its views: " + choices + ")";
     return std::nullopt;
 }
@@ -36,21 +40,18 @@ glm::dvec3 renderOriginOf(const Bounds& bounds) {
 
 std::optional<std::vector<ShadowView>> buildLightViews(const LightSettings& light, std::size_t lightIndex,
                                                        const Bounds& bounds, const glm::dvec3& origin,
-                                                       std::string& error) {
-    std::vector<ShadowView> views;
+                                                       const ViewCamera* camera, std::string& error) {
+    const ViewBuildInput in{light, lightIndex, bounds, origin, camera};
     std::string why;
-    if (light.type == LightType::Point) {
-        const auto faces = buildCubeFaceSpaces(light, bounds, origin, why);
-        if (faces)
-            for (int f = 0; f < 6; ++f) views.push_back({lightIndex, ShadowViewKind::CubeFace, f, (*faces)[std::size_t(f)]});
-    } else if (const auto space = buildLightSpace(light, bounds, origin, why)) {
-        views.push_back({lightIndex, ShadowViewKind::Single, 0, *space});
+    for (const ViewBuilder& builder : viewBuilders()) {
+        if (!builder.applies(light)) continue;
+        std::vector<ShadowView> views = builder.build(in, why);
+        if (views.empty()) break;
+        for (ShadowView& v : views) v.light = lightIndex;
+        return views;
     }
-    if (views.empty()) {
-        error = "lights." + std::to_string(lightIndex) + ": " + why;
-        return std::nullopt;
-    }
-    return views;
+    error = "lights." + std::to_string(lightIndex) + ": " + why;
+    return std::nullopt;
 }
 
 }  // namespace shadowlab

@@ -10,8 +10,29 @@ int cubeFaceOf(const glm::dvec3& d) {
     return 2 * axis + (d[axis] < 0.0 ? 1 : 0);
 }
 
+ViewChoice selectCascade(double depth, const std::vector<double>& farDepths, const std::vector<double>& blendStarts) {
+    for (std::size_t i = 0; i < farDepths.size(); ++i) {
+        if (!(depth <= farDepths[i])) continue;
+        ViewChoice choice{int(i)};
+        if (i + 1 < farDepths.size() && depth > blendStarts[i]) {
+            choice.next = int(i + 1);
+            choice.weight = (depth - blendStarts[i]) / (farDepths[i] - blendStarts[i]);
+        }
+        return choice;
+    }
+    return {};
+}
+
 ViewChoice selectView(const std::vector<ShadowView>& lightViews, const glm::dvec3& p) {
     if (lightViews.empty()) return {};
+    if (lightViews.front().kind == ShadowViewKind::Cascade) {
+        std::vector<double> far, blend;
+        for (const ShadowView& v : lightViews) {
+            far.push_back(v.slice.farDepth);
+            blend.push_back(v.slice.blendStart);
+        }
+        return selectCascade(lightViews.front().slice.camera.depthOf(p), far, blend);
+    }
     if (lightViews.front().kind == ShadowViewKind::CubeFace) {
         const int face = cubeFaceOf(p - lightViews.front().space.position);
         for (std::size_t v = 0; v < lightViews.size(); ++v)

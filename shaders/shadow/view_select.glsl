@@ -14,3 +14,25 @@ vec3 cubeFaceAxis(int face) {
     axis[face / 2] = face % 2 == 0 ? 1.0 : -1.0;
     return axis;
 }
+
+// Which cascade holds a point `depth` in front of the camera: the first whose far depth it is not beyond, and in
+// that cascade's blend band (from its blend start) the next one's share. view -1: beyond the last (lit). The CPU's
+// selectCascade (views/view_select.cpp) is the same code.
+struct CascadeChoice {
+    int view;
+    int next;
+    float weight;
+};
+
+CascadeChoice selectCascade(float depth, vec4 farDepths, vec4 blendStarts, int count) {
+    CascadeChoice choice = CascadeChoice(-1, -1, 0.0);
+    for (int i = 0; i < 4; ++i) {
+        if (i >= count || choice.view >= 0 || !(depth <= farDepths[i])) continue;
+        choice.view = i;
+        if (i + 1 < count && depth > blendStarts[i]) {
+            choice.next = i + 1;
+            choice.weight = (depth - blendStarts[i]) / (farDepths[i] - blendStarts[i]);
+        }
+    }
+    return choice;
+}

@@ -103,3 +103,79 @@ TEST_F(ViewSelectionGpu, AnUnknownIncludeIsNamed) {
         EXPECT_NE(std::string(e.what()).find("shadow/nope.glsl"), std::string::npos) << e.what();
     }
 }
+
+namespace {
+
+// For each depth: the GLSL cascade choice for one light's far depths and blend starts.
+constexpr const char* kCascadeProbe = R"(#version 450 core
+layout(local_size_x = 64) in;
+#include "shadow/view_select.glsl"
+layout(std430, binding = 0) readonly buffer Depths { float depths[]; };
+layout(std430, binding = 1) writeonly buffer Choices { vec4 choices[]; };
+uniform vec4 uFar, uBlend;
+uniform int uCascades, uCount;
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= uint(uCount)) return;
+    CascadeChoice c = selectCascade(depths[i], uFar, uBlend, uCascades);
+    choices[i] = vec4(float(c.view), float(c.next), c.weight, 0.0);
+}
+)";
+
+}  // namespace
+
+// The cascade a depth selects, its blend partner and weight: the GLSL and the CPU agree for 1..4 cascades, with and
+// without a blend band, on depths across every split and beyond the last.
+TEST_F(ViewSelectionGpu, CpuAndGlslPickTheSameCascadeAndBlend) {
+    const int count = 20000;
+    const gl::Program program = gl::buildProgram({{GL_COMPUTE_SHADER, "cascade_probe.comp", kCascadeProbe}}, {});
+    std::mt19937 rng(77);
+    std::uniform_real_distribution<float> depth(0.0f, 130.0f);
+    std::vector<float> depths(count);
+    for (float& d : depths) d = depth(rng);
+    gl::Buffer in = gl::createBuffer(), out = gl::createBuffer();
+    glNamedBufferData(in.id(), GLsizeiptr(depths.size() * sizeof(float)), depths.data(), GL_STATIC_DRAW);
+    glNamedBufferData(out.id(), GLsizeiptr(depths.size() * sizeof(glm::vec4)), nullptr, GL_STATIC_READ);
+    for (int cascades = 1; cascades <= 4; ++cascades)
+        for (float band : {0.0f, 0.2f}) {
+            std::vector<double> far, blend;
+            glm::vec4 farV(0.0f), blendV(0.0f);
+            float previous = 0.5f;
+            for (int c = 0; c < cascades; ++c) {
+                const float f = 120.0f * std::pow(float(c + 1) / float(cascades), 1.7f);
+                const float b = c + 1 < cascades ? f - band * (f - previous) : f;
+                far.push_back(f);
+                blend.push_back(b);
+                farV[c] = f;
+                blendV[c] = b;
+                previous = f;
+            }
+            glUseProgram(program.id());
+            glUniform4fv(glGetUniformLocation(program.id(), "uFar"), 1, &farV.x);
+            glUniform4fv(glGetUniformLocation(program.id(), "uBlend"), 1, &blendV.x);
+            glUniform1i(glGetUniformLocation(program.id(), "uCascades"), cascades);
+            glUniform1i(glGetUniformLocation(program.id(), "uCount"), count);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
+            glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+            std::vector<glm::vec4> choices(depths.size());
+            glGetNamedBufferSubData(out.id(), 0, GLsizeiptr(choices.size() * sizeof(glm::vec4)), choices.data());
+            int differs = 0, blended = 0, beyond = 0;
+            for (std::size_t i = 0; i < depths.size(); ++i) {
+                // The CPU in float inputs, as the shader reads them.
+                const ViewChoice cpu = selectCascade(double(depths[i]), far, blend);
+                const bool same = int(choices[i].x) == cpu.view && int(choices[i].y) == cpu.next &&
+                                  std::abs(double(choices[i].z) - cpu.weight) < 1e-4;
+                differs += !same;
+                blended += cpu.next >= 0;
+                beyond += cpu.view < 0;
+            }
+            EXPECT_EQ(differs, 0) << cascades << " cascades, band " << band;
+            EXPECT_GT(beyond, 0);
+            if (band > 0.0f && cascades > 1) EXPECT_GT(blended, 0);
+        }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+    glUseProgram(0);
+}

@@ -21,7 +21,11 @@ json otherValue(const SettingsField& f, const Settings& s) {
     json current = f.get(s);
     switch (f.kind) {
         case SettingsFieldKind::Bool: return !current.get<bool>();
-        case SettingsFieldKind::Int: return f.intChoices.empty() ? json(int(f.max) - 1) : json(f.intChoices.back());
+        case SettingsFieldKind::Int: {
+            if (f.intChoices.empty()) return json(int(f.max) - 1);
+            // A choice other than the current one.
+            return current == f.intChoices.back() ? json(f.intChoices.front()) : json(f.intChoices.back());
+        }
         case SettingsFieldKind::Float: {
             // An awkward value (not a short decimal) inside the range.
             float v = static_cast<float>(f.min + (f.max - f.min) * 0.3183098861837907);
@@ -29,7 +33,8 @@ json otherValue(const SettingsField& f, const Settings& s) {
         }
         case SettingsFieldKind::Enum:
             return current == f.choices.back() ? json(f.choices.front()) : json(f.choices.back());
-        case SettingsFieldKind::Vec3:  // colours are non-negative
+        case SettingsFieldKind::Vec3:  // colours are non-negative, cascade splits increasing distances
+            if (f.key.ends_with("splits")) return json::array({1.0 / 3.0, 2.25, 7.5});
             return json::array({1.0 / 3.0, f.key.ends_with("color") ? 2.25 : -2.25, 1e-3});
     }
     return {};
@@ -52,7 +57,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 35u);  // every tunable of Settings: 12 global, 23 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 42u);  // every tunable of Settings: 12 global, 30 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");

@@ -40,14 +40,14 @@ TEST(ShadowViews, EachLightKindHasItsViews) {
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
     std::string error;
     for (LightType type : {LightType::Directional, LightType::Spot}) {
-        const auto views = buildLightViews(lightOf(type), 3, bounds, bounds.centreOrOrigin(), error);
+        const auto views = buildLightViews(lightOf(type), 3, bounds, bounds.centreOrOrigin(), nullptr, error);
         ASSERT_TRUE(views) << error;
         ASSERT_EQ(views->size(), 1u);
         EXPECT_EQ(views->front().kind, ShadowViewKind::Single);
         EXPECT_EQ(views->front().light, 3u);
         EXPECT_EQ(viewName(views->front()), "light 3");
     }
-    const auto faces = buildLightViews(lightOf(LightType::Point), 2, bounds, bounds.centreOrOrigin(), error);
+    const auto faces = buildLightViews(lightOf(LightType::Point), 2, bounds, bounds.centreOrOrigin(), nullptr, error);
     ASSERT_TRUE(faces) << error;
     ASSERT_EQ(faces->size(), 6u);
     for (int f = 0; f < 6; ++f) {
@@ -60,12 +60,12 @@ TEST(ShadowViews, EachLightKindHasItsViews) {
 TEST(ShadowViews, ViewOptionNamesACubeFaceAndListsTheChoicesOtherwise) {
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
     std::string error;
-    const auto faces = buildLightViews(lightOf(LightType::Point), 1, bounds, bounds.centreOrOrigin(), error);
+    const auto faces = buildLightViews(lightOf(LightType::Point), 1, bounds, bounds.centreOrOrigin(), nullptr, error);
     ASSERT_TRUE(faces) << error;
     EXPECT_EQ(findView(*faces, "-Y", error), std::optional<std::size_t>(3));
     EXPECT_FALSE(findView(*faces, "up", error));
     EXPECT_NE(error.find("its views: +X, -X, +Y, -Y, +Z, -Z"), std::string::npos) << error;
-    const auto spot = buildLightViews(lightOf(LightType::Spot), 0, bounds, bounds.centreOrOrigin(), error);
+    const auto spot = buildLightViews(lightOf(LightType::Spot), 0, bounds, bounds.centreOrOrigin(), nullptr, error);
     ASSERT_TRUE(spot) << error;
     EXPECT_FALSE(findView(*spot, "+X", error));
     EXPECT_NE(error.find("light 0 has one view"), std::string::npos) << error;
@@ -77,7 +77,7 @@ TEST(ShadowViews, AViewThatCannotBeFiniteNamesItsLight) {
     l.projection.nearPlane = 5.0f;
     l.projection.farPlane = 1.0f;
     std::string error;
-    EXPECT_FALSE(buildLightViews(l, 4, box({-1, -1, -1}, {1, 1, 1}), glm::dvec3(0.0), error));
+    EXPECT_FALSE(buildLightViews(l, 4, box({-1, -1, -1}, {1, 1, 1}), glm::dvec3(0.0), nullptr, error));
     EXPECT_EQ(error.rfind("lights.4: ", 0), 0u) << error;
 }
 
@@ -86,7 +86,7 @@ TEST(ShadowViews, AViewThatCannotBeFiniteNamesItsLight) {
 TEST(ViewSelection, TheChosenCubeFaceHoldsThePoint) {
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
     std::string error;
-    const auto faces = buildLightViews(lightOf(LightType::Point), 0, bounds, bounds.centreOrOrigin(), error);
+    const auto faces = buildLightViews(lightOf(LightType::Point), 0, bounds, bounds.centreOrOrigin(), nullptr, error);
     ASSERT_TRUE(faces) << error;
     std::mt19937 rng(2026);
     std::uniform_real_distribution<double> coord(-20.0, 20.0);
@@ -106,7 +106,7 @@ TEST(ViewSelection, TheChosenCubeFaceHoldsThePoint) {
 TEST(ViewSelection, ASingleViewHoldsEveryPointAndNoViewHoldsNone) {
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
     std::string error;
-    const auto views = buildLightViews(lightOf(LightType::Spot), 0, bounds, bounds.centreOrOrigin(), error);
+    const auto views = buildLightViews(lightOf(LightType::Spot), 0, bounds, bounds.centreOrOrigin(), nullptr, error);
     ASSERT_TRUE(views) << error;
     EXPECT_EQ(selectView(*views, glm::dvec3(100.0, -50.0, 3.0)).view, 0);
     EXPECT_EQ(selectView({}, glm::dvec3(0.0)).view, -1);
@@ -127,7 +127,7 @@ TEST(ShadowPlanner, GroupsViewsIntoArraysWithALayerEach) {
     s.lights[2].shadow.resolution = 512;  // its own 2D array
     s.lights[4].enabled = false;
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
-    const ShadowPlan plan = planShadowViews(s, bounds, bounds.centreOrOrigin(), {}, 16384, nullptr);
+    const ShadowPlan plan = planShadowViews(s, bounds, bounds.centreOrOrigin(), nullptr, {}, 16384, nullptr);
     ASSERT_TRUE(plan.error.empty()) << plan.error;
     ASSERT_EQ(plan.views.size(), 1u + 6u + 1u + 6u);
     ASSERT_EQ(plan.lightsWithoutViews.size(), 1u);
@@ -150,9 +150,9 @@ TEST(ShadowPlanner, ARefusedResolutionKeepsTheLightsMapOrStopsTheFrame) {
     s.lights = {lightOf(LightType::Spot)};
     s.lights[0].shadow.resolution = 8192;
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
-    const ShadowPlan none = planShadowViews(s, bounds, glm::dvec3(0.0), {}, 4096, nullptr);
+    const ShadowPlan none = planShadowViews(s, bounds, glm::dvec3(0.0), nullptr, {}, 4096, nullptr);
     EXPECT_NE(none.error.find("shadow.resolution: 8192"), std::string::npos) << none.error;
-    const ShadowPlan kept = planShadowViews(s, bounds, glm::dvec3(0.0), {}, 4096, [](std::size_t) {
+    const ShadowPlan kept = planShadowViews(s, bounds, glm::dvec3(0.0), nullptr, {}, 4096, [](std::size_t) {
         return std::optional<KeptMap>(KeptMap{1024, DepthFormat::D24});
     });
     ASSERT_TRUE(kept.error.empty()) << kept.error;
@@ -170,7 +170,7 @@ TEST(ShadowPlanner, CountsOnlyTheCastersInAViewsVolume) {
     const glm::dvec3 light = glm::dvec3(s.lights[0].position) - origin;
     // One small caster straight below the light: only the -Y face holds it.
     const std::vector<CasterSphere> casters = {{light + glm::dvec3(0.0, -4.0, 0.0), 0.5, true}};
-    const ShadowPlan plan = planShadowViews(s, bounds, origin, casters, 16384, nullptr);
+    const ShadowPlan plan = planShadowViews(s, bounds, origin, nullptr, casters, 16384, nullptr);
     ASSERT_EQ(plan.views.size(), 6u);
     for (const PlannedView& p : plan.views) EXPECT_EQ(p.castersInVolume, p.view.index == 3 ? 1 : 0) << viewName(p.view);
 }

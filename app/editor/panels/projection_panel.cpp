@@ -1,8 +1,28 @@
-// Projection: the selected light's volume — auto-fit, or a manual ortho size, near and far; depth clamp.
+// Projection: the selected light's volume — auto-fit, or a manual ortho size, near and far; depth clamp; for a
+// directional light the fit (scene or cascades) and the cascades' keys.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
 
 namespace shadowlab::editor {
+
+namespace {
+
+// The cascades' keys, and what the frame made of them: each cascade's depth range and texel size.
+void drawCascadeControls(EditorState& state) {
+    auto key = [&](const char* within) { return state.lightKey(within); };
+    comboField(state, key("projection.cascadeCount").c_str(), "cascades");
+    comboField(state, key("projection.cascadeFit").c_str(), "cascade fit");
+    sliderFloatField(state, key("projection.splitLambda").c_str(), "split lambda", 0.0f, 1.0f, "%.2f");
+    dragFloatField(state, key("projection.shadowDistance").c_str(), "shadow distance", 0.5f, "%.1f");
+    sliderFloatField(state, key("projection.blendBand").c_str(), "blend band", 0.0f, 0.5f, "%.2f");
+    checkboxField(state, key("projection.depthClamp").c_str(), "depth clamp (casters before near still cast)");
+    for (const ShadowViewStats* v : state.selectedLightViews())
+        if (v->kind == ShadowViewKind::Cascade)
+            ImGui::TextDisabled("cascade %d: depth %.3g..%.3g, texel %.3g", v->index, v->slice.nearDepth,
+                                v->slice.farDepth, v->space.texelWorldSize);
+}
+
+}  // namespace
 
 void drawProjectionPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
@@ -10,6 +30,14 @@ void drawProjectionPanel(PanelContext& ctx) {
     auto key = [&](const char* within) { return state.lightKey(within); };
     const std::size_t index = state.selectedLight;
     ImGui::PushItemWidth(-120.0f);
+    if (state.selected()->type == LightType::Directional) {
+        comboField(state, key("projection.fit").c_str(), "fit");
+        if (state.selected()->projection.fit == ProjectionFit::Cascades) {
+            drawCascadeControls(state);
+            ImGui::PopItemWidth();
+            return;
+        }
+    }
     // The views auto-fit chose (a point light's faces share near and far), read before a change to auto-fit.
     const std::vector<const ShadowViewStats*> views = state.selectedLightViews();
     auto useFitted = [&] {
