@@ -23,8 +23,6 @@ namespace shadowlab::cli {
 
 namespace {
 
-constexpr int kDefaultFrames = 10;
-
 // A finite number that is the whole of `text`, or "" with `error` naming the option.
 std::optional<double> parseNumber(const std::string& text, const std::string& option, std::string& error) {
     char* end = nullptr;
@@ -84,7 +82,7 @@ int runMeasureMotion(const MeasureOptions& options) {
     if (options.remeasureBench > 0) return fail("--remeasure-bench: not with --motion");
     Motion motion;
     motion.kind = *kind;
-    motion.frames = options.frames == -1 ? kDefaultFrames : options.frames;
+    motion.frames = options.frames == -1 ? kDefaultMotionFrames : options.frames;
     std::string error;
     const std::optional<double> step = parseNumber(options.step, "--step", error);
     if (!step) return fail(error);
