@@ -112,6 +112,7 @@ void measureCase(CheckOutcome& o, const Settings& settings, const Scene& scene, 
     // The progress bar's share of each job: the measurement, then one flicker motion per light.
     const std::size_t jobs = 1 + (flicker ? castingLights(settings, scene).size() : 0);
     progress.fraction = 0.0f;
+    progress.setStage("");
     progress.base = 0.0f;
     progress.span = 1.0f / float(jobs);
     const ManyLightsReport many = measureLights(meter, scene, settings, camera, c.width, c.height, {}, &progress);
@@ -213,7 +214,6 @@ int runCheck(const CheckOptions& options) {
         inputs.push_back({resolvePresetPath(c.preset), "preset"});
         inputs.push_back({c.scene, "scene"});
     }
-    if (std::string e = checkOutputs({{options.junit, "--junit"}}, inputs); !e.empty()) return badInput(e);
     if (!outDir.empty()) {
         for (std::size_t i = 0; i < cases.size(); ++i)
             if (std::string e = checkPictureOutput({(fs::path(outDir) / overlayName(i, cases[i].name)).string(),
@@ -227,6 +227,8 @@ int runCheck(const CheckOptions& options) {
             return badInput((options.outDir.empty() ? "the overlays' folder " : "--out-dir ") + outDir +
                             ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
     }
+    // After --out-dir, which may be the JUnit file's folder.
+    if (std::string e = checkOutputs({{options.junit, "--junit"}}, inputs); !e.empty()) return badInput(e);
 
     const auto start = std::chrono::steady_clock::now();
     std::vector<CheckOutcome> outcomes(cases.size());

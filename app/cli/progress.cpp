@@ -74,6 +74,7 @@ void ProgressLine::setDone(std::size_t done) { done_ = done; }
 void ProgressLine::setTotal(std::size_t total) { total_ = total; }
 
 void ProgressLine::draw() {
+    if (paused_) return;
     ProgressState state{what_, done_.load(), total_.load(), unit_, partial_ ? partial_() : 0.0, now() - start_,
                         stage_ ? stage_() : std::string()};
     std::string line = progressLine(state);
@@ -96,6 +97,22 @@ void ProgressLine::above(const std::function<void()>& print) {
     print();
     std::fflush(stdout);
     std::fflush(stderr);
+    if (!stop_) draw();
+}
+
+void ProgressLine::pause() {
+    if (!enabled_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (drawn_) std::fputs("\r\033[K", stderr);
+    std::fflush(stderr);
+    drawn_ = false;
+    paused_ = true;
+}
+
+void ProgressLine::resume() {
+    if (!enabled_) return;
+    std::lock_guard<std::mutex> lock(mutex_);
+    paused_ = false;
     if (!stop_) draw();
 }
 

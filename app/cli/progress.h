@@ -49,6 +49,9 @@ public:
     void setTotal(std::size_t total);
     // Runs `print` (which writes whole lines to stdout or stderr) with the line erased, then draws it again below.
     void above(const std::function<void()>& print);
+    // Erases the line until resume(): for a stretch of output between two pieces of work.
+    void pause();
+    void resume();
     // Erases the line and stops drawing (the destructor does it too).
     void finish();
 
@@ -62,6 +65,7 @@ private:
     bool enabled_ = false;
     bool drawn_ = false;
     bool stop_ = false;
+    bool paused_ = false;
     double start_ = 0.0;
     std::mutex mutex_;
     std::condition_variable wake_;
