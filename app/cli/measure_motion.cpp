@@ -5,6 +5,7 @@
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
 #include "cli/flicker_output.h"
+#include "cli/progress.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
@@ -124,8 +125,13 @@ int runMeasureMotion(const MeasureOptions& options) {
         HeadlessContext context;
         AccuracyMeter meter;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
+        AccuracyProgress accuracyProgress;
+        ProgressLine progress(
+            "measure --motion", 0, "", [&] { return double(accuracyProgress.fraction.load()); },
+            [&] { return accuracyProgress.stage(); });
         const FlickerReport report =
-            measureFlicker(meter, scene, *settings, camera, options.width, options.height, motion);
+            measureFlicker(meter, scene, *settings, camera, options.width, options.height, motion, &accuracyProgress);
+        progress.finish();
         if (!report.ok) return fail(report.error);
         for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
         std::cout << "scene " << scene.name << " (" << scene.triangleCount() << " triangles), "
