@@ -209,7 +209,8 @@ int main(int argc, char** argv) {
         CLI::Option* option = checkCmd->add_option(info.flag, checkLimitValues[i],
                                                    std::string("limit on ") + info.figure + " in " +
                                                        (info.percent ? "percent" : "screen pixels") +
-                                                       " (each light's, and the whole picture's)");
+                                                       (info.wholePicture ? " (each light's and the whole picture's)"
+                                                                          : " (each light's)"));
         checkLimitFlags.emplace_back(option, info.member);
         checkCaseFlags.push_back(option);
     }

@@ -127,7 +127,7 @@ void measureCase(CheckOutcome& o, const Settings& settings, const Scene& scene, 
         for (const std::string& w : light.report.warnings) o.notes.push_back("warning: " + label + ": " + w);
     }
     if (many.lights.size() > 1) {
-        for (CheckFigure& f : accuracyFigures(c.limits, "whole picture", many.whole, false)) o.figures.push_back(std::move(f));
+        for (CheckFigure& f : wholePictureFigures(c.limits, many.whole)) o.figures.push_back(std::move(f));
         o.numbers.emplace_back("whole picture", numbersToJson(many.whole));
     }
     for (const NotMeasuredLight& n : many.notMeasured) o.notes.push_back("not measured: " + n.reason);

@@ -14,11 +14,11 @@ using nlohmann::json;
 
 const std::vector<CheckLimitInfo>& checkLimitInfos() {
     static const std::vector<CheckLimitInfo> infos = {
-        {"maxAcnePercent", "--max-acne", "acne", "%", true, &CheckLimits::maxAcnePercent},
-        {"maxLeakPercent", "--max-leak", "leak", "%", true, &CheckLimits::maxLeakPercent},
-        {"maxWrongPercent", "--max-wrong", "wrong pixels", "%", true, &CheckLimits::maxWrongPercent},
-        {"maxEdgePixels", "--max-edge-px", "edge error", "px", false, &CheckLimits::maxEdgePixels},
-        {"maxFlickerPercent", "--max-flicker", "flicker", "%", true, &CheckLimits::maxFlickerPercent},
+        {"maxAcnePercent", "--max-acne", "acne", "%", true, true, &CheckLimits::maxAcnePercent},
+        {"maxLeakPercent", "--max-leak", "leak", "%", true, true, &CheckLimits::maxLeakPercent},
+        {"maxWrongPercent", "--max-wrong", "wrong pixels", "%", true, true, &CheckLimits::maxWrongPercent},
+        {"maxEdgePixels", "--max-edge-px", "edge error", "px", false, false, &CheckLimits::maxEdgePixels},
+        {"maxFlickerPercent", "--max-flicker", "flicker", "%", true, false, &CheckLimits::maxFlickerPercent},
     };
     return infos;
 }

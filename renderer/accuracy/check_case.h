@@ -35,6 +35,7 @@ struct CheckLimitInfo {
     const char* figure;  // "acne"
     const char* unit;    // "%" or "px"
     bool percent;        // a percentage: at most 100
+    bool wholePicture;   // also judged on the whole picture of several lights (edge error and flicker: per light only)
     std::optional<double> CheckLimits::*member;
 };
 const std::vector<CheckLimitInfo>& checkLimitInfos();

@@ -1,6 +1,7 @@
 #include "accuracy/check_limits.h"
 
 #include <cstdio>
+#include <string>
 
 namespace shadowlab {
 
@@ -20,12 +21,19 @@ void add(std::vector<CheckFigure>& out, const CheckLimits& limits, std::optional
 }  // namespace
 
 std::vector<CheckFigure> accuracyFigures(const CheckLimits& limits, const std::string& subject,
-                                         const AccuracyNumbers& n, bool withEdge) {
+                                         const AccuracyNumbers& n) {
     std::vector<CheckFigure> out;
     add(out, limits, &CheckLimits::maxAcnePercent, subject, n.acnePercent);
     add(out, limits, &CheckLimits::maxLeakPercent, subject, n.leakPercent);
     add(out, limits, &CheckLimits::maxWrongPercent, subject, n.wrongPercent);
-    if (withEdge) add(out, limits, &CheckLimits::maxEdgePixels, subject, n.edgeErrorP95ScreenPixels);
+    add(out, limits, &CheckLimits::maxEdgePixels, subject, n.edgeErrorP95ScreenPixels);
+    return out;
+}
+
+std::vector<CheckFigure> wholePictureFigures(const CheckLimits& limits, const AccuracyNumbers& whole) {
+    std::vector<CheckFigure> out;
+    for (CheckFigure& f : accuracyFigures(limits, "whole picture", whole))
+        if (f.limit->wholePicture) out.push_back(std::move(f));
     return out;
 }
 
@@ -36,12 +44,18 @@ std::vector<CheckFigure> flickerFigures(const CheckLimits& limits, const std::st
 }
 
 std::string describeFigure(const CheckFigure& f) {
-    const bool percent = f.limit->percent;
-    char text[160];
-    // Percentages to 0.001 %, pixels to 0.01 px: finer than any limit a case file sets.
-    std::snprintf(text, sizeof text, percent ? "%s %.3f %s (limit %.3f %s%s)" : "%s %.2f %s (limit %.2f %s%s)",
-                  f.limit->figure, f.value, f.limit->unit, f.max, f.limit->unit, f.broken() ? ": BROKEN" : "");
-    return text;
+    // Percentages to 0.001 %, pixels to 0.01 px; a broken figure that would print as its limit gets more digits.
+    auto format = [&](const char* pattern, double v) {
+        char text[64];
+        std::snprintf(text, sizeof text, pattern, v);
+        return std::string(text);
+    };
+    const char* pattern = f.limit->percent ? "%.3f" : "%.2f";
+    std::string value = format(pattern, f.value);
+    const std::string max = format(pattern, f.max);
+    if (f.broken() && value == max) value = format("%.9g", f.value);
+    return std::string(f.limit->figure) + " " + value + " " + f.limit->unit + " (limit " + max + " " + f.limit->unit +
+           (f.broken() ? ": BROKEN)" : ")");
 }
 
 }  // namespace shadowlab

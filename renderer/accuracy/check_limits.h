@@ -20,10 +20,12 @@ struct CheckFigure {
     bool broken() const { return !(value <= max); }
 };
 
-// The figures `limits` bounds among acne, leak, wrong pixels and edge error (screen pixels), for one subject.
-// `withEdge` false: the whole picture's edge error is only the largest light's, already judged per light.
+// The figures `limits` bounds among acne, leak, wrong pixels and edge error (screen pixels), for one light.
 std::vector<CheckFigure> accuracyFigures(const CheckLimits& limits, const std::string& subject,
-                                         const AccuracyNumbers& numbers, bool withEdge = true);
+                                         const AccuracyNumbers& numbers);
+// The same for the whole picture of several lights: only the limits whose info says wholePicture (its edge error is
+// only the largest light's, already judged per light).
+std::vector<CheckFigure> wholePictureFigures(const CheckLimits& limits, const AccuracyNumbers& whole);
 
 // The flicker figure (the largest over the motion's frame pairs) when a flicker limit is set; none otherwise.
 std::vector<CheckFigure> flickerFigures(const CheckLimits& limits, const std::string& subject, double maxFlickerPercent);
