@@ -131,6 +131,16 @@ void measureCase(CheckOutcome& o, const Settings& settings, const Scene& scene, 
         o.numbers.emplace_back("whole picture", numbersToJson(many.whole));
     }
     for (const NotMeasuredLight& n : many.notMeasured) o.notes.push_back("not measured: " + n.reason);
+    // The overlay of what was measured, before flicker: it is there even when a motion cannot be played.
+    if (!outDir.empty()) {
+        const std::string path = (fs::path(outDir) / overlayName(o.index, c.name)).string();
+        if (std::string error = writePng(path, many.width, many.height, 4, many.overlayRgba.data(), false);
+            !error.empty()) {
+            o.error = "overlay: " + error;
+            return;
+        }
+        o.overlay = path;
+    }
 
     if (flicker) {
         Motion motion;
@@ -160,15 +170,6 @@ void measureCase(CheckOutcome& o, const Settings& settings, const Scene& scene, 
             for (CheckFigure& f : flickerFigures(c.limits, subject, report.maxFlickerPercent))
                 o.figures.push_back(std::move(f));
         }
-    }
-    if (!outDir.empty()) {
-        const std::string path = (fs::path(outDir) / overlayName(o.index, c.name)).string();
-        if (std::string error = writePng(path, many.width, many.height, 4, many.overlayRgba.data(), false);
-            !error.empty()) {
-            o.error = "overlay: " + error;
-            return;
-        }
-        o.overlay = path;
     }
 }
 
