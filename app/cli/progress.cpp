@@ -43,10 +43,13 @@ std::string progressLine(const ProgressState& s) {
     } else {
         line += std::to_string(int(std::floor(partial * 100.0))) + " %";
     }
-    line += ", " + clockText(s.elapsedSeconds) + " elapsed, ";
-    line += finished > 0.0 ? "~" + clockText(s.elapsedSeconds * (1.0 - finished) / finished) + " left"
-                           : std::string("estimating time left");
-    if (!s.stage.empty()) line += " (" + s.stage + ")";
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "~" + std::string here.
+    line.append(", ").append(clockText(s.elapsedSeconds)).append(" elapsed, ");
+    if (finished > 0.0)
+        line.append("~").append(clockText(s.elapsedSeconds * (1.0 - finished) / finished)).append(" left");
+    else
+        line.append("estimating time left");
+    if (!s.stage.empty()) line.append(" (").append(s.stage).append(")");
     return line;
 }
 
