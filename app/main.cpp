@@ -1,6 +1,7 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
 #include "cli/bench_lights.h"
+#include "cli/check_command.h"
 #include "cli/export_command.h"
 #include "cli/hardcases_command.h"
 #include "cli/info_command.h"
@@ -181,6 +182,39 @@ int main(int argc, char** argv) {
     hardCmd->add_option("--out-dir", hard.outDir, "write the pictures (overlays, frame pairs) into this folder");
     hardCmd->add_option("--scenes", hard.sharedScenes, "the ../shared/scenes folder (default: beside the source tree)");
 
+    cli::CheckOptions check;
+    CLI::App* checkCmd = app.add_subcommand("check", "A CI gate: measure cases (a case file, or one from flags) against "
+                                                     "limits; one line per case, JUnit XML, exit 1 when a limit is broken");
+    checkCmd->add_option("CASES.json", check.file, "the case file (see docs/command-line.md); or one case from the flags");
+    checkCmd->add_option("--junit", check.junit, "write the results as JUnit XML (each case's figures and overlay PNG)");
+    checkCmd->add_option("--out-dir", check.outDir,
+                         "write each case's overlay PNG into this folder (default with --junit: <junit>-overlays/)");
+    // One case from flags; each given one is remembered, so a case file beside them is refused.
+    std::vector<CLI::Option*> checkCaseFlags = {
+        checkCmd->add_option("--scene", check.flagCase.scene, "a .gltf/.glb path or builtin:NAME"),
+        checkCmd->add_option("--preset", check.flagCase.preset, "a preset JSON path, or the name of a shipped preset"),
+        checkCmd->add_option("--set", check.flagCase.overrides, "override a setting: key=value (repeatable)"),
+        checkCmd->add_option("--width", check.flagCase.width, "view width")->capture_default_str(),
+        checkCmd->add_option("--height", check.flagCase.height, "view height")->capture_default_str(),
+        checkCmd->add_option("--motion", check.motion, "with --max-flicker: camera, camera-turn or light (default light)"),
+        checkCmd->add_option("--step", check.step,
+                             "with --max-flicker: per frame, world units (camera) or degrees (default: a sub-texel step)"),
+        checkCmd->add_option("--frames", check.flagCase.frames, "with --max-flicker: frames rendered")
+            ->capture_default_str(),
+    };
+    std::vector<std::pair<CLI::Option*, std::optional<double> CheckLimits::*>> checkLimitFlags;
+    std::vector<double> checkLimitValues(checkLimitInfos().size());
+    for (std::size_t i = 0; i < checkLimitInfos().size(); ++i) {
+        const CheckLimitInfo& info = checkLimitInfos()[i];
+        CLI::Option* option = checkCmd->add_option(info.flag, checkLimitValues[i],
+                                                   std::string("limit on ") + info.figure + " in " +
+                                                       (info.percent ? "percent" : "screen pixels") +
+                                                       (info.wholePicture ? " (each light's and the whole picture's)"
+                                                                          : " (each light's)"));
+        checkLimitFlags.emplace_back(option, info.member);
+        checkCaseFlags.push_back(option);
+    }
+
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
@@ -201,6 +235,14 @@ int main(int argc, char** argv) {
     if (*profileCmd) return cli::runProfile(profile);
     if (*sweepCmd) return cli::runSweep(sweep);
     if (*hardCmd) return cli::runHardCases(hard);
+    if (*checkCmd) {
+        for (std::size_t i = 0; i < checkLimitFlags.size(); ++i)
+            if (checkLimitFlags[i].first->count() > 0) check.flagCase.limits.*checkLimitFlags[i].second = checkLimitValues[i];
+        for (CLI::Option* option : checkCaseFlags)
+            if (option->count() > 0) check.caseFlags.push_back(option->get_name());
+        if (checkCmd->get_option("--step")->count() > 0) check.flagCase.step = check.step;
+        return cli::runCheck(check);
+    }
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {

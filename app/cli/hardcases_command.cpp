@@ -2,6 +2,7 @@
 
 #include "accuracy/accuracy_meter.h"
 #include "cli/command_input.h"
+#include "cli/progress.h"
 #include "context/headless_context.h"
 #include "frame/renderer.h"
 #include "hardcases/hard_case_runner.h"
@@ -43,7 +44,13 @@ int runHardCases(const HardCasesOptions& options) {
         hardcases::CaseContext caseContext(caseOptions, meter, renderer);
         std::cout << "hard cases of ../shared/HARD_CASES.md" << (options.quick ? " (--quick: small maps and views)" : "")
                   << " on " << renderer.glInfo().renderer << "\n";
-        const std::vector<hardcases::CaseResult> results = hardcases::runCases(selected, caseContext, &std::cout);
+        ProgressLine progress("hardcases", selected.size(), "cases");
+        const std::vector<hardcases::CaseResult> results = hardcases::runCases(
+            selected, caseContext, nullptr, [&](const hardcases::CaseResult& result, std::size_t done, std::size_t) {
+                progress.setDone(done);
+                progress.above([&] { hardcases::printCase(std::cout, result); });
+            });
+        progress.finish();
         hardcases::printSummary(std::cout, results);
         if (!options.json.empty()) {
             const std::string text = hardcases::resultsToJson(results, options.quick).dump(2) + "\n";

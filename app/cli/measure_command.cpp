@@ -6,6 +6,7 @@
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
 #include "cli/measure_motion.h"
+#include "cli/progress.h"
 #include "cli/remeasure_bench.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
@@ -47,8 +48,13 @@ int runMeasure(const MeasureOptions& options) {
         HeadlessContext context;
         AccuracyMeter meter;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
+        AccuracyProgress accuracyProgress;
+        ProgressLine progress(
+            "measure", 0, "", [&] { return double(accuracyProgress.fraction.load()); },
+            [&] { return accuracyProgress.stage(); });
         const ManyLightsReport many =
-            measureLights(meter, scene, *settings, camera, options.width, options.height, only);
+            measureLights(meter, scene, *settings, camera, options.width, options.height, only, &accuracyProgress);
+        progress.finish();
         if (!many.ok) return fail(many.error);
         for (const LightAccuracy& light : many.lights)
             for (const std::string& w : light.report.warnings)

@@ -5,6 +5,7 @@
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
 #include "cli/flicker_output.h"
+#include "cli/progress.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
@@ -22,8 +23,6 @@
 namespace shadowlab::cli {
 
 namespace {
-
-constexpr int kDefaultFrames = 10;
 
 // A finite number that is the whole of `text`, or "" with `error` naming the option.
 std::optional<double> parseNumber(const std::string& text, const std::string& option, std::string& error) {
@@ -84,7 +83,7 @@ int runMeasureMotion(const MeasureOptions& options) {
     if (options.remeasureBench > 0) return fail("--remeasure-bench: not with --motion");
     Motion motion;
     motion.kind = *kind;
-    motion.frames = options.frames == -1 ? kDefaultFrames : options.frames;
+    motion.frames = options.frames == -1 ? kDefaultMotionFrames : options.frames;
     std::string error;
     const std::optional<double> step = parseNumber(options.step, "--step", error);
     if (!step) return fail(error);
@@ -126,8 +125,13 @@ int runMeasureMotion(const MeasureOptions& options) {
         HeadlessContext context;
         AccuracyMeter meter;
         const Camera camera = cameraFor(settings->camera, scene, double(options.width) / options.height);
+        AccuracyProgress accuracyProgress;
+        ProgressLine progress(
+            "measure --motion", 0, "", [&] { return double(accuracyProgress.fraction.load()); },
+            [&] { return accuracyProgress.stage(); });
         const FlickerReport report =
-            measureFlicker(meter, scene, *settings, camera, options.width, options.height, motion);
+            measureFlicker(meter, scene, *settings, camera, options.width, options.height, motion, &accuracyProgress);
+        progress.finish();
         if (!report.ok) return fail(report.error);
         for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
         std::cout << "scene " << scene.name << " (" << scene.triangleCount() << " triangles), "

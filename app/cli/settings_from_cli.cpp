@@ -22,30 +22,32 @@ std::string resolvePresetPath(const std::string& preset) {
 }
 
 std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides,
-                                        const std::string& sceneSpec) {
+                                        const std::string& sceneSpec, const std::string& where) {
+    const std::string at = where.empty() ? std::string() : where + ": ";
+    const char* setLabel = where.empty() ? "--set " : "set ";
     Settings settings;
     if (!preset.empty()) {
         PresetLoadResult loaded = loadPresetFile(resolvePresetPath(preset));
-        for (const std::string& w : loaded.warnings) std::cerr << "warning: " << w << "\n";
+        for (const std::string& w : loaded.warnings) std::cerr << "warning: " << at << w << "\n";
         if (!loaded.settings) {
-            for (const std::string& e : loaded.errors) std::cerr << "error: " << e << "\n";
+            for (const std::string& e : loaded.errors) std::cerr << "error: " << at << e << "\n";
             return std::nullopt;
         }
         settings = *loaded.settings;
         if (!sceneSpec.empty())
             if (std::string note = adaptPresetToScene(settings, loaded.scene, sceneSpec); !note.empty())
-                std::cerr << "note: " << note << "\n";
+                std::cerr << "note: " << at << note << "\n";
     }
     bool ok = true;
     for (const std::string& kv : overrides) {
         if (std::string error = applySettingOverride(settings, kv); !error.empty()) {
-            std::cerr << "error: --set " << describeKey(kv) << ": " << error << "\n";
+            std::cerr << "error: " << at << setLabel << describeKey(kv) << ": " << error << "\n";
             ok = false;
         }
     }
     if (!ok) return std::nullopt;
     if (std::vector<std::string> problems = settings.validate(); !problems.empty()) {
-        for (const std::string& p : problems) std::cerr << "error: " << p << "\n";
+        for (const std::string& p : problems) std::cerr << "error: " << at << p << "\n";
         return std::nullopt;
     }
     return settings;

@@ -14,7 +14,9 @@ std::string resolvePresetPath(const std::string& preset);
 
 // nullopt after printing the errors to stderr; warnings go to stderr too. A preset tuned on another scene than
 // `sceneSpec` gets an auto-framed camera there and a note on stderr (preset_scene.h); --set overrides come after.
+// `where` (optional) starts every message and names the overrides "set" instead of "--set": settings read from a
+// file (`check`'s "FILE: case 2 (\"name\")").
 std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides,
-                                        const std::string& sceneSpec = {});
+                                        const std::string& sceneSpec = {}, const std::string& where = {});
 
 }  // namespace shadowlab::cli

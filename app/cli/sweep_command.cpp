@@ -1,6 +1,7 @@
 #include "cli/sweep_command.h"
 
 #include "cli/command_input.h"
+#include "cli/progress.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
@@ -9,6 +10,8 @@
 #include "sweep/sweep_runner.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -110,15 +113,35 @@ int runSweep(const SweepOptions& options) {
         run.onResult = [&](const SweepResult& soFar) {
             if (writeError.empty()) writeError = writeTables(options, soFar);
         };
+        AccuracyProgress accuracyProgress;
+        std::atomic<std::size_t> points{plan.points.size()};  // the preset's own point may come on top
+        ProgressLine progress(
+            "sweep", points, "points",
+            [&] {
+                // The runner's fraction is of the whole sweep: (points done + the share of the one under way) / all.
+                const double done = double(accuracyProgress.fraction.load()) * double(points.load());
+                return done - std::floor(done);
+            },
+            [&] { return accuracyProgress.stage(); });
         const SweepResult result = shadowlab::runSweep(
-            scene, *base, plan, run, [](const SweepPointResult& p, std::size_t done, std::size_t total) {
-                if (p.failed())
-                    std::fprintf(stderr, "[%zu/%zu] %-24s failed: %s\n", done, total, p.label.c_str(), p.error.c_str());
-                else
-                    std::fprintf(stderr, "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  main %.3f ms  wrong %.3f %%%s\n",
-                                 done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.mainMs,
-                                 p.accuracy.wrongPercent, p.referenceReused ? "" : "  (reference computed)");
-            });
+            scene, *base, plan, run,
+            [&](const SweepPointResult& p, std::size_t done, std::size_t total) {
+                points = total;
+                progress.setTotal(total);
+                progress.setDone(done);
+                progress.above([&] {
+                    if (p.failed())
+                        std::fprintf(stderr, "[%zu/%zu] %-24s failed: %s\n", done, total, p.label.c_str(),
+                                     p.error.c_str());
+                    else
+                        std::fprintf(stderr,
+                                     "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  main %.3f ms  wrong %.3f %%%s\n",
+                                     done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.mainMs,
+                                     p.accuracy.wrongPercent, p.referenceReused ? "" : "  (reference computed)");
+                });
+            },
+            &accuracyProgress);
+        progress.finish();
         if (!writeError.empty()) return fail(writeError);
         if (!result.ok) return fail(result.error);
 

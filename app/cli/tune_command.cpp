@@ -4,6 +4,7 @@
 #include "accuracy/light_isolation.h"
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
+#include "cli/progress.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "scene/scene_source.h"
@@ -56,19 +57,33 @@ int runTune(const TuneOptions& options) {
         bool allReached = true;
         std::string summary;
         nlohmann::json lightsJson = nlohmann::json::array();
-        for (std::size_t index : indices) {
+        AccuracyProgress accuracyProgress;
+        ProgressLine progress(
+            "tune", indices.size(), "lights", [&] { return double(accuracyProgress.fraction.load()); },
+            [&] { return accuracyProgress.stage(); });
+        for (std::size_t k = 0; k < indices.size(); ++k) {
+            const std::size_t index = indices[k];
+            progress.setDone(k);
+            accuracyProgress.fraction = 0.0f;
+            progress.resume();
             std::string error;
             const std::optional<Settings> one = isolateLight(*settings, scene, index, error);
             if (!one) return fail(error);
             const std::string label = lightLabel(index, one->lights[0].type);
-            std::cout << "tuning bias of " << label << " for " << scene.name << " at " << options.width << "x"
-                      << options.height << ", measured alone: acne <= " << options.maxAcnePercent
-                      << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
-            std::cout << "  #  phase                                 DepthBias   slope  normal cull  rpb   acne %   leak %"
-                         "  wrong %  wrong>k edge tx\n";
+            progress.above([&] {
+                std::cout << "tuning bias of " << label << " for " << scene.name << " at " << options.width << "x"
+                          << options.height << ", measured alone: acne <= " << options.maxAcnePercent
+                          << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
+                std::cout << "  #  phase                                 DepthBias   slope  normal cull  rpb   acne %"
+                             "   leak %  wrong %  wrong>k edge tx\n";
+            });
             const TuneResult result =
-                tuneBias(meter, scene, *one, camera, options.width, options.height, options.maxAcnePercent, nullptr,
-                         [&](const TuneStep& step) { std::cout << stepLine(step) << std::endl; });
+                tuneBias(meter, scene, *one, camera, options.width, options.height, options.maxAcnePercent,
+                         &accuracyProgress,
+                         [&](const TuneStep& step) {
+                             progress.above([&] { std::cout << stepLine(step) << std::endl; });
+                         });
+            progress.pause();  // the light's result is printed below
             if (!result.ok) return fail(label + ": " + result.error);
 
             const ShadowMapSettings& best = result.closest.lights[0].shadow;

@@ -50,6 +50,8 @@ struct Motion {
 
 // The limits a motion must respect; anything beyond is a typo, not a flicker experiment.
 inline constexpr int kMaxMotionFrames = 1000;
+// Frames played when none are asked for (`measure --motion`, a check case's flicker limit).
+inline constexpr int kDefaultMotionFrames = 10;
 inline constexpr double kMaxTurnStepDeg = 45.0;  // per frame: a light's or the camera's turn
 // Camera: at most this many scene diameters per frame.
 inline constexpr double kMaxCameraStepDiameters = 1.0;

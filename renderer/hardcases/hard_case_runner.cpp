@@ -61,7 +61,7 @@ std::string cell(const std::string& text, std::size_t width) {
 }  // namespace
 
 std::vector<CaseResult> runCases(const std::vector<const HardCase*>& cases, CaseContext& context,
-                                 std::ostream* progress) {
+                                 std::ostream* progress, const CaseCallback& onCase) {
     std::vector<CaseResult> results(cases.size());
     const HardCase* reversed = nullptr;
     std::size_t reversedAt = 0;
@@ -69,14 +69,17 @@ std::vector<CaseResult> runCases(const std::vector<const HardCase*>& cases, Case
     for (std::size_t i = 0; i < cases.size(); ++i)
         if (cases[i]->number == kReversedZCase) reversed = cases[i], reversedAt = i;
     context.recordMasks = reversed != nullptr;
+    std::size_t done = 0;
     for (std::size_t i = 0; i < cases.size(); ++i) {
         if (cases[i] == reversed) continue;
         results[i] = runCase(*cases[i], context);
         if (progress) printCase(*progress, results[i]);
+        if (onCase) onCase(results[i], ++done, cases.size());
     }
     if (reversed) {
         results[reversedAt] = runCase(*reversed, context);
         if (progress) printCase(*progress, results[reversedAt]);
+        if (onCase) onCase(results[reversedAt], ++done, cases.size());
     }
     context.recordMasks = false;
     return results;

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -21,9 +22,11 @@ std::vector<const HardCase*> selectCases(const std::vector<HardCase>& cases, con
 CaseResult runCase(const HardCase& c, CaseContext& context);
 
 // Runs the selected cases in order (a case that throws gets its error), printing each case's table as it
-// finishes when `progress` is given. Case 5 (both conventions) runs after the others: it compares their masks.
+// finishes when `progress` is given, and calling `onCase` (optional) with it and how many have finished. Case 5
+// (both conventions) runs after the others: it compares their masks.
+using CaseCallback = std::function<void(const CaseResult& result, std::size_t done, std::size_t total)>;
 std::vector<CaseResult> runCases(const std::vector<const HardCase*>& cases, CaseContext& context,
-                                 std::ostream* progress = nullptr);
+                                 std::ostream* progress = nullptr, const CaseCallback& onCase = {});
 
 // The table of one case / of all, fixed-width text.
 void printCase(std::ostream& out, const CaseResult& result);

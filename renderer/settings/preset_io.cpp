@@ -1,7 +1,7 @@
 #include "settings/preset_io.h"
 
 #include "settings/atomic_file.h"
-#include "settings/json_nesting.h"
+#include "settings/json_text.h"
 #include "settings/regular_file.h"
 #include "settings/settings_fields.h"
 
@@ -93,45 +93,6 @@ void writeJson(std::string& out, const ordered_json& v, int indent) {
     } else {
         out += scalar(v);
     }
-}
-
-// nlohmann's DOM parser, but keeping the byte position of a syntax error (an out_of_range 406 "number overflow"
-// carries none in its message).
-class PositionedDomParser : public nlohmann::detail::json_sax_dom_parser<json> {
-public:
-    explicit PositionedDomParser(json& result) : json_sax_dom_parser(result, false) {}
-    template <class Exception>
-    bool parse_error(std::size_t position, const std::string& /*lastToken*/, const Exception& ex) {
-        failed = true;
-        errorPosition = position;
-        errorMessage = ex.what();
-        return false;
-    }
-    bool failed = false;
-    std::size_t errorPosition = 0;
-    std::string errorMessage;
-};
-
-// "" or "line:column: invalid JSON: what".
-std::string parseJson(const std::string& text, json& out) {
-    PositionedDomParser handler(out);
-    bool ok = json::sax_parse(text, &handler);
-    if (ok && !handler.failed) return {};
-
-    // position = characters read, so the offending character is at position - 1.
-    std::size_t at = std::min(handler.errorPosition > 0 ? handler.errorPosition - 1 : 0, text.size());
-    std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-    std::size_t lineStart = at == 0 ? std::string::npos : text.rfind('\n', at - 1);
-    std::size_t column = lineStart == std::string::npos ? at + 1 : at - lineStart;
-
-    // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..." -> "syntax error ...".
-    std::string what = handler.errorMessage;
-    if (auto c = what.find("column "); c != std::string::npos) {
-        if (auto colon = what.find(": ", c); colon != std::string::npos) what = what.substr(colon + 2);
-    } else if (auto bracket = what.find("] "); bracket != std::string::npos) {
-        what = what.substr(bracket + 2);
-    }
-    return std::to_string(line) + ":" + std::to_string(column) + ": invalid JSON: " + what;
 }
 
 }  // namespace
@@ -299,13 +260,8 @@ PresetLoadResult presetFromJson(const nlohmann::json& preset, const Settings& ba
 
 PresetLoadResult presetFromText(const std::string& text, const Settings& base) {
     PresetLoadResult r;
-    // Before parsing: what follows walks the value recursively in places (messages that print it).
-    if (std::string error = checkJsonNesting(text); !error.empty()) {
-        r.errors.push_back(std::move(error));
-        return r;
-    }
     json preset;
-    if (std::string error = parseJson(text, preset); !error.empty()) {
+    if (std::string error = parseJsonText(text, preset); !error.empty()) {
         r.errors.push_back(std::move(error));
         return r;
     }
