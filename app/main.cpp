@@ -44,8 +44,11 @@ int main(int argc, char** argv) {
     renderCmd->add_option("--light", render.light,
                           "whose map --shadow-map / --shadow-map-png write (a point light: its six faces as a cross)")
         ->capture_default_str();
-    renderCmd->add_option("--view", render.view, "lit | shadow | light-depth")
-        ->check(CLI::IsMember({"lit", "shadow", "light-depth"}));
+    renderCmd->add_option("--map-view", render.mapView,
+                          "which of a cascaded light's maps --shadow-map / --shadow-map-png write: cascade:N "
+                          "(default cascade:0)");
+    renderCmd->add_option("--view", render.view, "lit | shadow | light-depth | cascades | texel-density")
+        ->check(CLI::IsMember({"lit", "shadow", "light-depth", "cascades", "texel-density"}));
 
     cli::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Time the passes per shadow-map resolution and filter");

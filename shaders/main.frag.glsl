@@ -8,7 +8,7 @@
 //   filter     FILTER_TAPS and FILTER_GRID_RADIUS or FILTER_TAP_OFFSETS (texels; scaled by uFilterScale): the filter
 //              technique's taps
 //              (renderer/shading/filter_taps.cpp, shared with the pixel probe)
-//   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
+//   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH | VIEW_CASCADES | VIEW_TEXEL_DENSITY; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
 //   CASCADES   how many cascades the frame's cascaded directional lights have together (uCascades' length)
 //   RECEIVER_PLANE  some directional / spot caster uses receiver-plane depth bias (its LightData flag says which);
 //              with FILTER_NEAREST (taps that read one texel) the plane is taken at the texel's centre
@@ -34,6 +34,8 @@ layout(std140, binding = 0) uniform Lights { LightData uLights[LIGHT_COUNT]; };
 #endif
 
 uniform vec3 uCameraPosition;  // render-origin-relative
+uniform vec3 uCameraForward;   // unit viewing direction: cascades and the texel density measure depth along it
+uniform float uPixelPerDepth;  // a screen pixel's world size per unit of depth (texel density view)
 uniform vec3 uBaseColor;
 uniform float uAmbient;
 #ifdef ALPHA_MASK
@@ -83,7 +85,8 @@ void directionalLight(inout Shading s, LightData L, const bool casts) {
 #if MAP_ARRAYS_2D > 0
 #if CASCADES > 0
     if (casts && L.views.y > 0.0) {
-        shadow = cascadedShadow(L, vWorldPosition, offsetLookup(s, L, 1.0) - vWorldPosition, uCameraPosition);
+        shadow = cascadedShadow(L, vWorldPosition, offsetLookup(s, L, 1.0) - vWorldPosition, uCameraPosition,
+                                uCameraForward);
     } else
 #endif
     if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z), L.direction.xyz, L.depth.z);
@@ -177,6 +180,38 @@ void main() {
     }
 #endif
     outColor = vec4(vec3(clamp(depth, 0.0, 1.0)), 1.0);
+#elif defined(VIEW_CASCADES)
+    // The lit picture tinted by the cascade that holds the pixel (its blend band mixes the next one's tint); grey
+    // beyond the shadow distance or for a light without cascades.
+    const vec3 tints[4] = vec3[4](vec3(1.0, 0.25, 0.2), vec3(0.25, 0.9, 0.3), vec3(0.25, 0.45, 1.0), vec3(1.0, 0.9, 0.2));
+    vec3 tint = vec3(0.5);
+#if CASCADES > 0
+    if (gCascadeView >= 0) tint = tints[gCascadeView];
+    if (gCascadeNext >= 0) tint = mix(tint, tints[gCascadeNext], gCascadeWeight);
+#endif
+    vec3 color = pow(uBaseColor * (uAmbient + s.lambert) + s.specular, vec3(1.0 / 2.2));
+    outColor = vec4(mix(color, tint, 0.45), 1.0);
+#elif defined(VIEW_TEXEL_DENSITY)
+    // The first light's shadow-map texels per screen pixel: a pixel's world size at its depth over the texel's world
+    // size there (the cascade's, for a cascaded light). log2 from -2 (blue: texels 4x larger than pixels, blocky) to
+    // +2 (red: 4 texels per pixel, wasted); green = 1. The CPU's figure (measure) is the same ratio.
+    float texels = 0.0;
+#if LIGHT_COUNT > 0
+    LightData first = uLights[0];
+    vec3 fromLight = vWorldPosition - first.position.xyz;
+    float texelWorld = DIR_LIGHTS > 0 ? first.depth.z
+                     : SPOT_LIGHTS > 0 ? first.depth.z * dot(fromLight, first.direction.xyz)
+                     : first.depth.z * max(abs(fromLight.x), max(abs(fromLight.y), abs(fromLight.z)));
+#if CASCADES > 0
+    if (gCascadeTexel > 0.0) texelWorld = gCascadeTexel;
+#endif
+    float pixelWorld = dot(vWorldPosition - uCameraPosition, uCameraForward) * uPixelPerDepth;
+    texels = texelWorld > 0.0 ? pixelWorld / texelWorld : 0.0;
+#endif
+    float t = clamp(log2(max(texels, 1e-6)) * 0.25 + 0.5, 0.0, 1.0);  // -2 .. +2 -> 0 .. 1
+    vec3 density = t < 0.5 ? mix(vec3(0.15, 0.3, 1.0), vec3(0.2, 0.85, 0.3), t * 2.0)
+                           : mix(vec3(0.2, 0.85, 0.3), vec3(1.0, 0.2, 0.15), t * 2.0 - 1.0);
+    outColor = vec4(texels > 0.0 ? density : vec3(0.3), 1.0);
 #else
     vec3 color = uBaseColor * (uAmbient + s.lambert) + s.specular;
     outColor = vec4(pow(color, vec3(1.0 / 2.2)), 1.0);

@@ -74,6 +74,10 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
         out << "    " << std::left << std::setw(42) << info.name << causeShares(r, cause) << std::right << "  -> "
             << info.remedy << "\n";
     }
+    if (r.texelDensity.pixels)
+        out << "  texel density " << std::setprecision(3) << r.texelDensity.median << " texels per screen pixel (median; 5th "
+            << "percentile " << r.texelDensity.p5 << ", 95th " << r.texelDensity.p95 << "; below 1 the map is blockier "
+            << "than the screen)\n";
     printCascades(out, r.cascades);
     out << "  pixels " << c.pixels << ": measured " << c.measured << ", background " << c.background
         << ", facing away " << c.facingAway << ", outside the cone " << c.outsideCone << ", beyond the range "
@@ -161,6 +165,8 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
           {"toolFrameMs", k.toolFrameMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
     });
+    json["texelDensity"] = {{"pixels", r.texelDensity.pixels}, {"p5", r.texelDensity.p5},
+                            {"median", r.texelDensity.median}, {"p95", r.texelDensity.p95}};
     if (!r.cascades.cascades.empty()) json["cascaded"] = cascadesToJson(r.cascades);
     return json;
 }

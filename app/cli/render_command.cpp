@@ -138,6 +138,20 @@ int runRender(const RenderOptions& options) {
             // The chosen light's map; a point light's six faces as an unfolded cross.
             const std::size_t light = *mapLight;
             const ShadowMap* map = renderer.viewMap(light, -1);
+            // A cascaded light: one cascade's map (--map-view), the nearest by default.
+            const std::vector<ShadowView> views = frameViewsOf(stats, light);
+            std::string cascade;
+            if (!views.empty() && views.front().kind == ShadowViewKind::Cascade) {
+                std::string viewError;
+                const std::optional<std::size_t> v =
+                    options.mapView.empty() ? std::optional<std::size_t>(0) : findView(views, options.mapView, viewError);
+                if (!v) return fail(viewError.replace(0, 6, "--map-view"));
+                map = renderer.viewMap(views[*v].id());
+                cascade = " " + viewSuffix(views[*v].kind, views[*v].index);
+            } else if (!options.mapView.empty()) {
+                return fail("--map-view " + options.mapView + ": light " + std::to_string(light) +
+                            " has no cascades (--map-view chooses among a cascaded light's maps)");
+            }
             std::array<const ShadowMap*, 6> faces{};
             for (int f = 0; f < 6; ++f) faces[std::size_t(f)] = renderer.viewMap(light, f);
             const bool cube = faces[0] != nullptr;
@@ -153,7 +167,7 @@ int runRender(const RenderOptions& options) {
                                              "-Y below)"
                                            : std::to_string(size) + "²";
             if (!options.shadowMapExr.empty())
-                std::cout << "wrote " << options.shadowMapExr << " (light " << light << ", " << shape
+                std::cout << "wrote " << options.shadowMapExr << " (light " << light << cascade << ", " << shape
                           << ", float depth)\n";
             if (!options.shadowMapPng.empty())
                 std::cout << "wrote " << options.shadowMapPng << " (depth " << files.pngRange.min << " .. "

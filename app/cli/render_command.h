@@ -15,6 +15,7 @@ struct RenderOptions {
     std::string shadowMapExr;
     std::string shadowMapPng;
     int light = -1;  // whose map --shadow-map / --shadow-map-png write; -1 = not given (then the only casting light)
+    std::string mapView;  // which of a cascaded light's maps they write ("cascade:N"); "" = cascade:0
     std::string compare;  // A/B: preset B, drawn right of the divider (A = --preset with --set)
     double split = 0.5;   // where the divider stands, 0..1 of the width
     bool measure = false; // with --compare: each side's acne / leak / wrong pixels against the exact reference

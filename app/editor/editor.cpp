@@ -335,7 +335,7 @@ void Editor::renderMapPicture(bool mapRedrawn) {
     MapViewerState& v = state_.viewer;
     mapPictureStale_ = mapPictureStale_ || mapRedrawn;
     const ShadowViewStats* view = state_.shownView();
-    const ShadowMap* map = view ? renderer_->viewMap(view->light, view->face) : nullptr;
+    const ShadowMap* map = view ? renderer_->viewMap({view->light, view->kind, view->index}) : nullptr;
     if (v.width < 8 || v.height < 8 || !map || !map->valid()) return;
     const std::pair<std::size_t, int> shown{view->light, view->face};
     const bool changed = mapPictureStale_ || v.width != lastMapWidth_ || v.height != lastMapHeight_ ||

@@ -77,7 +77,7 @@ const ShadowViewStats* EditorState::shownView() const {
     const ShadowViewStats* first = nullptr;
     for (const ShadowViewStats& v : stats.views) {
         if (!v.hasView) continue;
-        if (v.light == viewer.light && v.face == viewer.face) return &v;
+        if (v.light == viewer.light && v.kind == viewer.kind && v.index == viewer.index) return &v;
         if (!firstOfSelected && v.light == selectedLight) firstOfSelected = &v;
         if (!first) first = &v;
     }

@@ -66,7 +66,8 @@ struct MapViewerState {
     // The view the viewer shows (a light and, for a point light, a cube face); when the frame has no such view the
     // viewer shows the selected light's first view, else the frame's first one (see EditorState::shownView).
     std::size_t light = 0;
-    int face = -1;
+    ShadowViewKind kind = ShadowViewKind::Single;  // with `index`: a cube face or a cascade
+    int index = 0;
     std::string error;                      // why the newest picture could not be made
 };
 

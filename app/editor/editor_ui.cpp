@@ -248,9 +248,10 @@ void Editor::viewModeCombo() {
     }
     state_.controls.recordLastItem("view");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("What the viewport shows: the lit scene, the shadow factor, the light's depth, or the "
-                          "accuracy overlay of the newest measurement (red acne, blue leak, yellow true boundary; or "
-                          "each wrong pixel coloured by its cause)");
+        ImGui::SetTooltip("What the viewport shows: the lit scene, the shadow factor, the light's depth, the cascade "
+                          "holding each pixel, the map's texels per screen pixel, or the accuracy overlay of the newest "
+                          "measurement (red acne, blue leak, yellow true boundary; or each wrong pixel coloured by its "
+                          "cause)");
     showFieldError(state_, "view");
 }
 

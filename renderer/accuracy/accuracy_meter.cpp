@@ -81,6 +81,26 @@ struct EdgeUnits {
     double worldPerPixel(std::size_t i) const { return glm::dot(samples.point[i] - eye, forward) * pixelPerDepth; }
 };
 
+// Texels per screen pixel over the measured pixels: the texel density view's ratio (shaders/main.frag.glsl).
+TexelDensity texelDensityOf(const std::vector<std::uint8_t>& measured, const EdgeUnits& units) {
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < measured.size(); ++i) {
+        if (!measured[i]) continue;
+        const double texel = units.worldPerTexel(i);
+        if (texel > 0.0) ratios.push_back(units.worldPerPixel(i) / texel);
+    }
+    TexelDensity d;
+    d.pixels = ratios.size();
+    if (ratios.empty()) return d;
+    std::vector<double> work = ratios;
+    d.p5 = percentile(work, 5);
+    work = ratios;
+    d.median = percentile(work, 50);
+    work = ratios;
+    d.p95 = percentile(work, 95);
+    return d;
+}
+
 std::string invalidSettings(const Settings& settings) {
     std::string text;
     for (const std::string& p : settings.validate()) text += (text.empty() ? "" : "; ") + p;
@@ -381,6 +401,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     input.worldPerPixel = [&](std::size_t i) { return units.worldPerPixel(i); };
     const MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
+    report.texelDensity = texelDensityOf(metrics.measured, units);
     report.pixelOnBoundary.assign(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
         report.pixelOnBoundary[i] = boundary.onBoundary(i) ? 1 : 0;

@@ -109,6 +109,15 @@ struct AccuracyNumbers {
     AccuracyCounts counts;
 };
 
+// Shadow-map texels per screen pixel over the measured pixels: a pixel's world size at its depth over the world size
+// of the texel that shades it (the cascade's for a cascaded light). Where a fit spends its texels, before any error:
+// below 1 the map is blockier than the screen, far above 1 its texels are wasted. `render --view texel-density`
+// shows the same ratio per pixel.
+struct TexelDensity {
+    std::size_t pixels = 0;
+    double p5 = 0.0, median = 0.0, p95 = 0.0;
+};
+
 struct AccuracyReport : AccuracyNumbers {
     bool ok = false;
     bool cancelled = false;
@@ -142,6 +151,7 @@ struct AccuracyReport : AccuracyNumbers {
     std::vector<std::uint8_t> pixelOnBoundary; // 1 on the true boundary's thin line
     std::vector<float> pixelLambert;           // max(n . l, 0): the overlays' dimmed picture (flicker.h draws one)
 
+    TexelDensity texelDensity;
     // A cascaded light: its numbers per cascade and at the seams (cascade_accuracy.h); empty cascades otherwise.
     CascadeAccuracy cascades;
 

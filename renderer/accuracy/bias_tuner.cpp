@@ -127,9 +127,11 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     lit = withEffectiveLights(start, scene);
     const glm::dvec3 origin = renderOriginOf(scene.bounds);
     std::string lightError;
-    // A point light's six faces share near/far but see different receivers: the median of their figures.
+    // A point light's six faces share near/far but see different receivers, a cascaded light's cascades have texels
+    // of different sizes: the median of their figures.
     std::vector<LightSpace> spaces;
-    if (const auto views = buildLightViews(lit.lights[0], 0, scene.bounds, origin, nullptr, lightError))
+    const ViewCamera viewCamera = viewCameraOf(camera, double(width) / std::max(height, 1), origin);
+    if (const auto views = buildLightViews(lit.lights[0], 0, scene.bounds, origin, &viewCamera, lightError))
         for (const ShadowView& view : *views) spaces.push_back(view.space);
     if (spaces.empty()) {
         result.error = lightError;

@@ -290,6 +290,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     in.viewProjection = stats.cameraViewProjection;
     in.cameraPosition = camera.position - stats.renderOrigin;
     in.cameraForward = viewCamera.forward;
+    in.pixelPerDepth = 2.0 * viewCamera.tanHalfFovY / double(target.height());
     in.renderOrigin = stats.renderOrigin;
     std::map<MapGroup, int> arrayIndex;
     for (const auto& [group, array] : arrays_) {

@@ -16,7 +16,9 @@ enum class CullMode { Back, Front, None };
 enum class LightType { Directional, Spot, Point };
 enum class AddressMode { Wrap, ClampToEdge, ClampToBorder };
 enum class FilterKind { Point, Hardware2x2, Pcf, Poisson };
-enum class ViewMode { Lit, Shadow, LightDepth };
+// What the main view shows: the lit scene, the shadow factor, the first light's depth, the cascade that holds each
+// pixel (tinted over the lit scene), or shadow-map texels per screen pixel (a log colour scale).
+enum class ViewMode { Lit, Shadow, LightDepth, Cascades, TexelDensity };
 
 struct ShadowMapSettings {
     int resolution = 2048;              // square map, texels per side

@@ -477,8 +477,12 @@ std::vector<SettingsField> buildGlobalFields() {
                        kInvalidatesCamera));
 
     f.push_back(tagged(enumField<ViewMode>(
-                           "view", "What the main view shows",
-                           {{ViewMode::Lit, "lit"}, {ViewMode::Shadow, "shadow"}, {ViewMode::LightDepth, "light-depth"}},
+                           "view",
+                           "What the main view shows: lit, the shadow factor, the first light's depth, the cascade "
+                           "holding each pixel (tinted: red, green, blue, yellow from the nearest) or the first "
+                           "light's shadow-map texels per screen pixel (log scale: blue < 1/4, green 1, red > 4)",
+                           {{ViewMode::Lit, "lit"}, {ViewMode::Shadow, "shadow"}, {ViewMode::LightDepth, "light-depth"},
+                            {ViewMode::Cascades, "cascades"}, {ViewMode::TexelDensity, "texel-density"}},
                            [](auto& s) -> auto& { return s.view; }),
                        kVariant));
     return f;

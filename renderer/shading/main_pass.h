@@ -42,6 +42,7 @@ struct MainPassInput {
     glm::dmat4 viewProjection{1.0};  // render-origin-relative
     glm::dvec3 cameraPosition{0.0};  // render-origin-relative
     glm::dvec3 cameraForward{0.0, 0.0, -1.0};  // unit: cascades are chosen by depth along it
+    double pixelPerDepth = 0.0;  // a screen pixel's world size per unit of depth (texel density view)
     glm::dvec3 renderOrigin{0.0};    // subtracted from light positions
 };
 

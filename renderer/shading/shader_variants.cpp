@@ -26,6 +26,8 @@ std::vector<std::string> MainVariantKey::defines() const {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;
         case ViewMode::LightDepth: d.push_back("VIEW_LIGHT_DEPTH"); break;
+        case ViewMode::Cascades: d.push_back("VIEW_CASCADES"); break;
+        case ViewMode::TexelDensity: d.push_back("VIEW_TEXEL_DENSITY"); break;
     }
     d.push_back("DIR_LIGHTS " + std::to_string(lights.directional));
     d.push_back("DIR_CASTERS " + std::to_string(lights.directionalCasters));
@@ -35,7 +37,7 @@ std::vector<std::string> MainVariantKey::defines() const {
     d.push_back("POINT_CASTERS " + std::to_string(lights.pointCasters));
     d.push_back("MAP_ARRAYS_2D " + std::to_string(lights.mapArrays2D));
     d.push_back("MAP_ARRAYS_CUBE " + std::to_string(lights.mapArraysCube));
-    if (lights.cascades > 0) d.push_back("CASCADES " + std::to_string(lights.cascades));
+    d.push_back("CASCADES " + std::to_string(lights.cascades));
     if (normalOffset) d.push_back("NORMAL_OFFSET");
     if (receiverPlane) d.push_back("RECEIVER_PLANE");
     if (receiverPlane && !filterTechnique(filter).bilinear) d.push_back("FILTER_NEAREST");
@@ -63,7 +65,7 @@ MainUniforms locateUniforms(GLuint p) {
     return {at("uViewProjection"), at("uModel"),          at("uNormalMatrix"), at("uUvTransform"),
             at("uMaps2D[0]"),      at("uMapsCube[0]"),    at("uCameraPosition"), at("uBaseColor"),
             at("uAmbient"),        at("uFilterScale"),    at("uAlphaFactor"),  at("uAlphaCutoff"),
-            at("uBaseColorTexture"), at("uCameraForward")};
+            at("uBaseColorTexture"), at("uCameraForward"), at("uPixelPerDepth")};
 }
 
 }  // namespace

@@ -13,7 +13,9 @@ struct CascadeData {
     vec4 slice;           // x: far depth, y: blend start (depths in front of the camera), z: layer, w: texel world size
 };
 layout(std140, binding = 1) uniform Cascades { CascadeData uCascades[CASCADES]; };
-uniform vec3 uCameraForward;  // unit: depths are measured along it from uCameraPosition
+// The first cascaded light's choice at this pixel, for the cascade tint and texel density views.
+int gCascadeView = -1, gCascadeNext = -1;
+float gCascadeWeight = 0.0, gCascadeTexel = 0.0;
 
 // The light as cascade `c` sees it.
 LightData cascadeView(LightData L, int c) {
@@ -24,8 +26,8 @@ LightData cascadeView(LightData L, int c) {
 }
 
 // `position`: the pixel's render-origin-relative position; `normalStep`: its unit normal times the light's normal
-// offset in texels (zero without NORMAL_OFFSET).
-float cascadedShadow(LightData L, vec3 position, vec3 normalStep, vec3 cameraPosition) {
+// offset in texels (zero without NORMAL_OFFSET); the camera's position and unit viewing direction measure its depth.
+float cascadedShadow(LightData L, vec3 position, vec3 normalStep, vec3 cameraPosition, vec3 cameraForward) {
     int first = int(L.views.x), count = int(L.views.y);
     vec4 farDepths = vec4(0.0), blendStarts = vec4(0.0);
     for (int i = 0; i < 4; ++i)
@@ -33,7 +35,13 @@ float cascadedShadow(LightData L, vec3 position, vec3 normalStep, vec3 cameraPos
             farDepths[i] = uCascades[first + i].slice.x;
             blendStarts[i] = uCascades[first + i].slice.y;
         }
-    CascadeChoice choice = selectCascade(dot(position - cameraPosition, uCameraForward), farDepths, blendStarts, count);
+    CascadeChoice choice = selectCascade(dot(position - cameraPosition, cameraForward), farDepths, blendStarts, count);
+    if (gCascadeView < 0 && gCascadeNext < 0 && gCascadeTexel == 0.0) {
+        gCascadeView = choice.view;
+        gCascadeNext = choice.next;
+        gCascadeWeight = choice.weight;
+        gCascadeTexel = choice.view >= 0 ? uCascades[first + choice.view].slice.w : -1.0;
+    }
     if (choice.view < 0) return 1.0;  // beyond the shadow distance: lit
     LightData C = cascadeView(L, first + choice.view);
     float shadow = shadow2D(C, position + normalStep * C.depth.z, C.direction.xyz, C.depth.z);

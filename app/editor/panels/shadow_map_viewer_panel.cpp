@@ -70,7 +70,8 @@ void drawProbeTaps(const PixelProbeReport& r, const UvRect& visible, ImVec2 pos,
     state.controls.record("viewer.probeLookup", ControlRect{c.x - 6, c.y - 6, 12, 12});
 }
 
-// The views of the frame that have a map: "light 0", "light 2 +X", ... The choice is kept as (light, face).
+// The views of the frame that have a map: "light 0", "light 2 +X", "light 0 cascade:1"... The choice is kept as
+// (light, kind, index).
 void viewPicker(EditorState& state) {
     MapViewerState& v = state.viewer;
     const ShadowViewStats* shown = state.shownView();
@@ -81,7 +82,8 @@ void viewPicker(EditorState& state) {
             const bool selected = &view == shown;
             if (ImGui::Selectable(view.name.c_str(), selected)) {
                 v.light = view.light;
-                v.face = view.face;
+                v.kind = view.kind;
+                v.index = view.index;
             }
             state.controls.recordLastItem("viewer.view=" + view.name);
         }
@@ -89,7 +91,7 @@ void viewPicker(EditorState& state) {
     }
     state.controls.recordLastItem("viewer.view");
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Which shadow view to show: a light's map, or one cube face of a point light");
+        ImGui::SetTooltip("Which shadow view to show: a light's map, one cube face of a point light or one cascade");
 }
 
 }  // namespace

@@ -1,0 +1,95 @@
+// Cascaded shadow maps measured (issue 20, §3): each cascade's numbers and the seams' against the reference; the
+// stable fit under camera motion (its cascades re-rendered every frame, no pixel flickers) against the tight fit
+// (its texel grid crawls); the blend band against a hard seam.
+#include "accuracy/flicker.h"
+#include "gl_fixture.h"
+#include "image/image_io.h"
+#include "reference_fixture.h"
+
+#include <filesystem>
+
+namespace shadowlab::test {
+namespace {
+
+constexpr int kWidth = 480;
+constexpr int kHeight = 270;
+
+// The textbook seen from near the floor, looking across it: depth spans every cascade.
+struct CascadedTextbook {
+    explicit CascadedTextbook(CascadeFit fit, float blendBand = 0.1f) : scene(loadBuiltin("textbook")) {
+        settings = loadShippedPreset("default");
+        LightSettings& sun = settings.lights[0];
+        sun.projection.fit = ProjectionFit::Cascades;
+        sun.projection.cascadeCount = 3;
+        sun.projection.cascadeFit = fit;
+        sun.projection.shadowDistance = 30.0f;
+        sun.projection.splitLambda = 0.6f;
+        sun.projection.blendBand = blendBand;
+        sun.shadow.resolution = 1024;
+        settings.camera.autoFrame = false;
+        settings.camera.position = {-4.0, 1.2, 9.0};
+        settings.camera.target = {1.0, 0.3, -3.0};
+        camera = cameraFor(settings.camera, scene, double(kWidth) / kHeight);
+    }
+    FlickerReport play(MotionKind kind, double step, int frames) {
+        Motion motion;
+        motion.kind = kind;
+        motion.step = step;
+        motion.frames = frames;
+        return measureFlicker(meter, scene, settings, camera, kWidth, kHeight, motion);
+    }
+    Scene scene;
+    Settings settings;
+    Camera camera;
+    AccuracyMeter meter;
+};
+
+}  // namespace
+
+class CascadesAccuracy : public GlTest {};
+
+TEST_F(CascadesAccuracy, EveryCascadeIsMeasuredAndTheOverallNumbersHold) {
+    CascadedTextbook t(CascadeFit::Stable);
+    const AccuracyReport r = t.meter.measure(t.scene, t.settings, t.camera, kWidth, kHeight);
+    ASSERT_TRUE(r.ok) << r.error;
+    saveOverlay(r, "cascades-textbook-stable");
+    ASSERT_EQ(r.cascades.cascades.size(), 3u);
+    std::size_t held = 0;
+    for (const CascadeNumbers& c : r.cascades.cascades) {
+        EXPECT_GT(c.measured, 500u) << "cascade " << c.cascade << " holds almost nothing of this view";
+        EXPECT_LE(c.acnePercent, 0.5) << "cascade " << c.cascade;
+        EXPECT_LE(c.leakPercent, 1.0) << "cascade " << c.cascade;
+        held += c.measured;
+    }
+    // Each cascade's texel is coarser than the one before it.
+    for (std::size_t c = 1; c < 3; ++c)
+        EXPECT_GT(r.cascades.cascades[c].texelWorldSize, r.cascades.cascades[c - 1].texelWorldSize);
+    EXPECT_EQ(held + r.cascades.beyondShadowDistance, r.counts.measured);
+    EXPECT_GT(r.cascades.seam.band, 0u);
+    EXPECT_LE(r.acnePercent, 0.5);
+}
+
+// Stable: the camera moves by fractions of a texel, every cascade is re-rendered every frame (they follow it), and no
+// pixel flickers: the texel grid stays where it was in the world. Tight: the same motion makes its edges crawl.
+TEST_F(CascadesAccuracy, StableFitDoesNotFlickerUnderCameraMotionTightFitDoes) {
+    CascadedTextbook stable(CascadeFit::Stable, 0.0f);
+    const AccuracyReport first = stable.meter.measure(stable.scene, stable.settings, stable.camera, kWidth, kHeight);
+    ASSERT_TRUE(first.ok) << first.error;
+    const double step = 0.37 * first.cascades.cascades[0].texelWorldSize;
+    const FlickerReport s = stable.play(MotionKind::Camera, step, 4);
+    ASSERT_TRUE(s.ok) << s.error;
+    for (const FlickerPair& pair : s.pairs) EXPECT_GT(pair.shadowViewsRendered, 0u) << "cascades follow the camera";
+    EXPECT_EQ(s.maxFlickerPercent, 0.0);
+
+    CascadedTextbook tight(CascadeFit::Tight, 0.0f);
+    const FlickerReport t = tight.play(MotionKind::Camera, step, 4);
+    ASSERT_TRUE(t.ok) << t.error;
+    EXPECT_GT(t.maxFlickerPercent, 0.0) << "a tight fit's grid moves with the camera";
+    const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_TEST_OUTPUT) / "accuracy";
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(writePng((dir / "cascades-textbook-tight-flicker.png").string(), t.width, t.height, 4,
+                       t.overlayRgba.data(), false),
+              "");
+}
+
+}  // namespace shadowlab::test
