@@ -3,6 +3,7 @@
 
 #include "gl/gl_errors.h"
 #include "light/volume_overlap.h"
+#include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
 
 #include <glm/ext/matrix_transform.hpp>
@@ -113,6 +114,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
         gpuSceneFingerprint_ = fingerprint;
     }
+    // What casts (casters.excluded): the maps' contents change with it as with the scene.
+    const std::vector<char> casters = castingInstances(scene, settings.casters);
+    gpuScene_->setCasting(casters);
+    const std::size_t viewFingerprint = fingerprint ^ (casterFingerprint(casters) * 0x9e3779b97f4a7c15ULL);
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
     const glm::dmat4 view = camera.view(stats.renderOrigin);
@@ -188,7 +193,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.resolution = array.resolution();
         entry.format = array.format();
 
-        const ViewInputs inputs{fingerprint, p.view.space.viewProjection(), light, state.map.generation(),
+        const ViewInputs inputs{viewFingerprint, p.view.space.viewProjection(), light, state.map.generation(),
                                 p.castersInVolume == 0};
         const ViewDecision decision = decideView(
             state.rendered, inputs, volumesOverlap(p.view.space.volumeViewProjection(), stats.cameraViewProjection));
