@@ -5,6 +5,9 @@
 #include "settings/preset_io.h"
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 namespace shadowlab::editor::test {
 

@@ -43,7 +43,7 @@ TEST(FlyCamera, TravelDependsOnSecondsNotOnFrames) {
 
 TEST(FlyCamera, SpeedFollowsTheSceneAndTheFactor) {
     OrbitCamera small = startCamera(1.0), large = startCamera(1000.0);
-    EXPECT_NEAR(large.flySpeed() / small.flySpeed(), 1000.0, 1e-6);
+    EXPECT_NEAR(large.flySpeed() / small.flySpeed(), 1000.0, 1e-3);  // bounds are float
     OrbitCamera fast = startCamera(10.0), slow = startCamera(10.0);
     fast.fly({1.0, 0.0, 0.0}, 0.5, 4.0);  // right, 4x
     slow.fly({1.0, 0.0, 0.0}, 0.5, 1.0);
