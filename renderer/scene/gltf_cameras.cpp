@@ -1,5 +1,7 @@
 #include "scene/gltf_cameras.h"
 
+#include "scene/gltf_camera_precheck.h"
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
@@ -32,6 +34,9 @@ std::optional<SceneCamera> importCamera(const tg::Model& model, int nodeIndex, c
         warn(what + " refused: " + why);
         return std::nullopt;
     };
+    // Stood in for before tinygltf read the file (gltf_camera_precheck.h): refused with the reason found then.
+    if (gc.extras.IsObject() && gc.extras.Has(kRefusedCameraKey) && gc.extras.Get(kRefusedCameraKey).IsString())
+        return refuse(gc.extras.Get(kRefusedCameraKey).Get<std::string>());
     const auto finite = [](double v) { return std::isfinite(v); };
     if (gc.type == "perspective") {
         const tg::PerspectiveCamera& p = gc.perspective;

@@ -4,6 +4,7 @@
 // graph from the scene's roots (cycles, depth and blow-up cut), record each visited node (Scene::nodes) and instance
 // its mesh primitives and place its camera under its world transform. The parts live in gltf_accessors, gltf_geometry, gltf_primitives, gltf_images, gltf_materials,
 // gltf_lights and gltf_extensions.
+#include "scene/gltf_camera_precheck.h"
 #include "scene/gltf_cameras.h"
 #include "scene/gltf_common.h"
 #include "scene/gltf_extensions.h"
@@ -303,6 +304,11 @@ SceneLoadResult loadBytes(const std::vector<unsigned char>& bytes, const std::st
     const std::string_view json =
         binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (std::string problem = precheckGltfJson(json); !problem.empty()) return failure(label, problem);
+    // A camera tinygltf cannot parse would sink the whole file: it is stood in for and refused alone.
+    std::vector<unsigned char> standIn;
+    if (std::optional<std::string> fixed = standInBrokenCameras(json))
+        standIn = binary ? glbWithJson(bytes, json, *fixed) : std::vector<unsigned char>(fixed->begin(), fixed->end());
+    const std::vector<unsigned char>& input = standIn.empty() ? bytes : standIn;
 
     DecodeBudget budget;
     budget.take(bytes.size());
@@ -313,9 +319,9 @@ SceneLoadResult loadBytes(const std::vector<unsigned char>& bytes, const std::st
     EncodedImages images{&model, &budget, {}, {}};
     gltf.SetImageLoader(&keepEncodedImage, &images);
     std::string err, warn;
-    const auto size = static_cast<unsigned int>(bytes.size());
-    const bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
-                           : gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+    const auto size = static_cast<unsigned int>(input.size());
+    const bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, input.data(), size, baseDir)
+                           : gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(input.data()),
                                                       size, baseDir);
     if (!ok) {
         if (const std::string ext = unsupportedRequiredExtension(json); !ext.empty())

@@ -7,11 +7,16 @@
 #include "settings/settings_fields.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 using namespace shadowlab;
@@ -72,6 +77,43 @@ TEST(SceneCameras, CamerasArePlacedByTheirNodesAndHostileOnesAreRefusedAlone) {
     EXPECT_TRUE(hasWarning(scene, "camera 5 ('far before near') refused: zfar 2 is not greater than znear 5"));
     EXPECT_TRUE(hasWarning(scene, "camera 6 ('flat ortho') refused: ymag 0"));
     EXPECT_GT(scene.instances.size(), 2u);
+}
+
+TEST(SceneCameras, CamerasTinygltfCannotParseAreRefusedAloneInGltfAndGlb) {
+    std::ifstream file(kCityPath);
+    std::stringstream text;
+    text << file.rdbuf();
+    nlohmann::json doc = nlohmann::json::parse(text.str());
+    // Three cameras tinygltf alone would refuse the whole file for, each placed by a node of its own.
+    const nlohmann::json broken = nlohmann::json::array(
+        {{{"name", "no fov"}, {"type", "perspective"}, {"perspective", {{"znear", 0.1}}}},
+         {{"name", "word fov"}, {"type", "perspective"}, {"perspective", {{"yfov", "wide"}, {"znear", 0.1}}}},
+         {{"name", "no object"}, {"type", "orthographic"}}});
+    for (const nlohmann::json& camera : broken) {
+        doc["cameras"].push_back(camera);
+        doc["nodes"][5]["children"].push_back(doc["nodes"].size());
+        doc["nodes"].push_back({{"camera", doc["cameras"].size() - 1}});
+    }
+    const std::string gltf = doc.dump();
+    // The same as a GLB: 12-byte header, one JSON chunk padded to 4 bytes (the buffer is a data: URI).
+    std::string padded = gltf;
+    while (padded.size() % 4) padded += ' ';
+    std::vector<unsigned char> glb(12 + 8 + padded.size());
+    const std::uint32_t header[5] = {0x46546C67u, 2u, std::uint32_t(glb.size()), std::uint32_t(padded.size()),
+                                     0x4E4F534Au};
+    std::memcpy(glb.data(), header, sizeof header);
+    std::memcpy(glb.data() + 20, padded.data(), padded.size());
+
+    for (const std::vector<unsigned char>& bytes :
+         {std::vector<unsigned char>(gltf.begin(), gltf.end()), glb}) {
+        SceneLoadResult r = loadGltfSceneFromMemory(bytes, "city", ".");
+        ASSERT_TRUE(r.scene) << r.error;
+        EXPECT_EQ(r.scene->cameras.size(), 3u) << "the good cameras still load";
+        EXPECT_GT(r.scene->instances.size(), 2u);
+        EXPECT_TRUE(hasWarning(*r.scene, "camera 7 ('no fov') refused: yfov is missing"));
+        EXPECT_TRUE(hasWarning(*r.scene, "camera 8 ('word fov') refused: yfov \"wide\" is not a number"));
+        EXPECT_TRUE(hasWarning(*r.scene, "camera 9 ('no object') refused: it has no \"orthographic\" object"));
+    }
 }
 
 TEST(SceneCameras, NodePathsNameTheHierarchy) {
