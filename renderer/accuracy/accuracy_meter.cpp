@@ -86,7 +86,7 @@ struct EdgeUnits {
 
 // What the BVH is built from: the scene's geometry and which of its instances cast.
 std::size_t referenceFingerprint(const Scene& scene, const std::vector<char>& casting) {
-    return sceneFingerprint(scene) ^ (casterFingerprint(casting) * 0x9e3779b97f4a7c15ULL);
+    return withCasters(sceneFingerprint(scene), casting);
 }
 
 std::string invalidSettings(const Settings& settings) {

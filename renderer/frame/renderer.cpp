@@ -117,7 +117,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     // What casts (casters.excluded): the maps' contents change with it as with the scene.
     const std::vector<char> casters = castingInstances(scene, settings.casters);
     gpuScene_->setCasting(casters);
-    const std::size_t viewFingerprint = fingerprint ^ (casterFingerprint(casters) * 0x9e3779b97f4a7c15ULL);
+    const std::size_t viewFingerprint = withCasters(fingerprint, casters);
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
     const glm::dmat4 view = camera.view(stats.renderOrigin);

@@ -40,8 +40,10 @@ std::vector<std::string> unknownCasterPathWarnings(const Scene& scene, const Cas
     return warnings;
 }
 
-std::size_t casterFingerprint(const std::vector<char>& castingInstances) {
-    return std::hash<std::string_view>{}(std::string_view(castingInstances.data(), castingInstances.size()));
+std::size_t withCasters(std::size_t sceneFingerprint, const std::vector<char>& castingInstances) {
+    const std::size_t casters =
+        std::hash<std::string_view>{}(std::string_view(castingInstances.data(), castingInstances.size()));
+    return sceneFingerprint ^ (casters * 0x9e3779b97f4a7c15ULL);
 }
 
 }  // namespace shadowlab

@@ -21,7 +21,8 @@ std::vector<char> castingInstances(const Scene& scene, const CasterSettings& cas
 // a preset tuned on an older version of a file still loads.
 std::vector<std::string> unknownCasterPathWarnings(const Scene& scene, const CasterSettings& casters);
 
-// Changes whenever the set of casting instances does (what the maps and the reference hold).
-std::size_t casterFingerprint(const std::vector<char>& castingInstances);
+// A scene's geometry fingerprint combined with its casting instances: what the maps and the reference are built from
+// (changes whenever either does).
+std::size_t withCasters(std::size_t sceneFingerprint, const std::vector<char>& castingInstances);
 
 }  // namespace shadowlab
