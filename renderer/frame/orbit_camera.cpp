@@ -116,6 +116,8 @@ void OrbitCamera::frame(const Scene& scene, double aspect) {
     target_ = camera.target;
     distance_ = glm::length(camera.position - camera.target);
     clampDistance();
+    // Orthographic: the height the perspective framing shows at the target's depth.
+    if (orthoHalfHeight_ > 0.0) orthoHalfHeight_ = distance_ * std::tan(glm::radians(fovYDeg_) * 0.5);
 }
 
 }  // namespace shadowlab

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <cmath>
 
 using namespace shadowlab;
 
@@ -89,4 +92,9 @@ TEST(FlyCamera, OrthographicCameraStaysOrthographicAndZoomsBySize) {
     EXPECT_NEAR(c.toCamera().orthoHalfHeight, 12.0, 1e-12);
     c.zoom(1.0);
     EXPECT_NEAR(c.toCamera().orthoHalfHeight, 12.0 * OrbitCamera::kZoomPerWheelStep, 1e-9);
+    // F frames it by its size too: the height a perspective view of its fov shows at the pivot's depth.
+    Scene scene;
+    scene.bounds = boxOf(10.0);
+    c.frame(scene, 1.0);
+    EXPECT_NEAR(c.toCamera().orthoHalfHeight, c.distance() * std::tan(glm::radians(45.0) * 0.5), 1e-9);
 }
