@@ -227,11 +227,16 @@ void Editor::viewportCameraInput(ImVec2 pos, ImVec2 size) {
     }
     flyInput();
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-        if (io.MouseDown[1])  // while flying the wheel sets the speed
+        if (io.MouseDown[1]) {  // while flying the wheel sets the speed
             state_.flySpeedFactor = std::clamp(state_.flySpeedFactor * std::pow(1.25, double(io.MouseWheel)),
                                                1.0 / 64.0, 64.0);
-        else
+            char text[96];
+            std::snprintf(text, sizeof text, "fly speed: %.3g world units a second (x%.3g; Shift: 4x)",
+                          orbit_->flySpeed() * state_.flySpeedFactor, state_.flySpeedFactor);
+            state_.say(text);
+        } else {
             orbit_->zoom(io.MouseWheel);
+        }
     }
 }
 

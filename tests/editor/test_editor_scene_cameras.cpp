@@ -125,6 +125,8 @@ TEST_F(EditorSceneCameras, FlyModeTravelsPerSecondOfTheClockAndLooksAroundTheEye
     ImGui::GetIO().MouseDown[1] = false;
     h.frame(2);
     EXPECT_NEAR(h.state().flySpeedFactor, 1.5625, 1e-9);
+    ASSERT_TRUE(h.state().lastMessage());
+    EXPECT_NE(h.state().lastMessage()->text.find("fly speed: "), std::string::npos) << h.state().lastMessage()->text;
 }
 
 TEST_F(EditorSceneCameras, AltClickSetsTheOrbitPivotOnTheSurfaceUnderTheCursor) {
