@@ -73,7 +73,7 @@ int runBench(const BenchOptions& options) {
             return 2;
         }
     }
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*base});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     // The lights the frames use (a scene's own with useSceneLights): the rows set each one's map resolution.

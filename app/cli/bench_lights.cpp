@@ -31,7 +31,7 @@ int runBenchLights(const BenchOptions& options) {
     if (!requested) return 2;
     if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*requested});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     const Settings base = withEffectiveLights(*requested, scene);

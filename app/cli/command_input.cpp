@@ -1,6 +1,8 @@
 #include "cli/command_input.h"
 
 #include "accuracy/light_isolation.h"
+#include "frame/camera.h"
+#include "scene/scene_casters.h"
 #include "settings/atomic_file.h"
 #include "settings/regular_file.h"
 
@@ -30,11 +32,21 @@ std::string checkViewSize(int width, int height) {
     return "--width/--height must be in [1, 16384], got " + std::to_string(width) + "x" + std::to_string(height);
 }
 
-SceneLoadResult loadSceneForCommand(const std::string& spec) {
+SceneLoadResult loadSceneForCommand(const std::string& spec, std::initializer_list<const Settings*> settings) {
     SceneLoadResult loaded = loadScene(spec);
-    if (loaded.scene)
-        for (const std::string& w : loaded.scene->warnings)
-            std::cerr << "warning: " << loaded.scene->name << ": " << w << "\n";
+    if (!loaded.scene) return loaded;
+    for (const std::string& w : loaded.scene->warnings)
+        std::cerr << "warning: " << loaded.scene->name << ": " << w << "\n";
+    for (const Settings* s : settings) {
+        if (!s) continue;
+        if (std::string error = sceneCameraError(s->camera, *loaded.scene); !error.empty()) {
+            loaded.scene.reset();
+            loaded.error = std::move(error);
+            return loaded;
+        }
+        for (const std::string& w : unknownCasterPathWarnings(*loaded.scene, s->casters))
+            std::cerr << "warning: " << w << "\n";
+    }
     return loaded;
 }
 

@@ -6,6 +6,7 @@
 
 #include "settings/settings.h"
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,7 +33,9 @@ std::optional<std::size_t> chooseOneLight(const Settings& settings, const Scene&
                                           const std::string& option, std::string& error);
 
 // Loads SCENE (a path or builtin:NAME) and prints the loader's warnings to stderr; on failure .error says why.
-SceneLoadResult loadSceneForCommand(const std::string& spec);
+// Each of `settings` (null entries skipped) is checked against the scene: a camera.sceneCamera the scene lacks is
+// the error, a casters.excluded path it lacks a warning.
+SceneLoadResult loadSceneForCommand(const std::string& spec, std::initializer_list<const Settings*> settings);
 
 // "" when a file can be written at path (its folder exists; it is a regular file or new; not a dangling symlink),
 // else why not — checked before the work starts, with the rules of writeFileAtomically.

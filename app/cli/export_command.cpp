@@ -18,7 +18,7 @@ int runExport(const ExportOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;
     if (std::string error = checkOutputFolder(options.out, "--out"); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
     if (!loaded.scene) return fail(loaded.error);
 
     if (options.light < -1) {

@@ -21,6 +21,10 @@ std::string milliseconds(const PassStats& pass) {
 
 void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info, const FrameStats& stats) {
     out << "scene: " << scene.name << " (" << stats.sceneTriangles << " triangles)\n";
+    // The file's cameras, by the index camera.sceneCamera takes.
+    for (std::size_t i = 0; i < scene.cameras.size(); ++i)
+        out << "  camera " << i << ": " << scene.cameras[i].name
+            << (scene.cameras[i].orthographic ? " (orthographic)" : " (perspective)") << "\n";
     out << "gl: " << info.renderer << "; timing: " << stats.timingSource << "\n";
     out << "shadow maps: " << stats.shadowMapBytes / 1024 << " KiB in all" << (stats.shadowMapReallocated ? " (allocated)" : "")
         << "\n";

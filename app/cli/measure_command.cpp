@@ -34,7 +34,7 @@ int runMeasure(const MeasureOptions& options) {
                                          {{options.scene, "--scene"}, {options.preset, "--preset"}});
         !error.empty())
         return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     std::optional<std::size_t> only;

@@ -107,7 +107,7 @@ int runMeasureMotion(const MeasureOptions& options) {
         return fail(error);
     if (!options.framesOut.empty())
         if (error = prepareFolder(options.framesOut); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     if (options.light >= 0) {

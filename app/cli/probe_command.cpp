@@ -41,7 +41,7 @@ int runProbe(const ProbeOptions& options) {
         !error.empty())
         return fail(error);
     if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
 

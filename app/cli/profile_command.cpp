@@ -31,7 +31,7 @@ int runProfile(const ProfileOptions& options) {
                     std::to_string(options.plotHeight) + ": expected 200..8192 x 120..8192");
     if (error = checkOutputFolder(options.out, "--out"); !error.empty()) return fail(error);
     if (error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     const std::optional<std::size_t> light = chooseOneLight(*settings, scene, options.light, "profile", error);

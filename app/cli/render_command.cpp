@@ -56,7 +56,7 @@ int runRender(const RenderOptions& options) {
         return fail("--measure goes with --compare (for one preset's numbers use `shadowlab measure`)");
     }
 
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings, settingsB ? &*settingsB : nullptr});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
 
@@ -104,6 +104,7 @@ int runRender(const RenderOptions& options) {
         // The picture carries the preset that made it, with the scene and the camera used (render --preset shot.png).
         Settings used = *settings;
         used.camera = recordedCamera(camera, settings->camera.autoFrame);
+        used.camera.sceneCamera = settings->camera.sceneCamera;  // the file's camera, when one was used
         if (settingsB) {
             // B from the same camera, with its own renderer (its maps are B's own); then one split picture.
             Renderer rendererB;

@@ -92,7 +92,7 @@ int runSweep(const SweepOptions& options) {
     if (std::string error = checkPictureOutput({options.chart, "--chart"}, {options.chartWidth, options.chartHeight, 4, 4, true, {}});
         !error.empty())
         return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*base});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
 

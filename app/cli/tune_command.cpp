@@ -41,7 +41,7 @@ int runTune(const TuneOptions& options) {
                                          {{options.scene, "--scene"}, {options.preset, "--preset"}});
         !error.empty())
         return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene);
+    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     std::string chooseError;
@@ -143,6 +143,7 @@ int runTune(const TuneOptions& options) {
                                             " (metrics version 2):" + summary;
             // The preset records the scene and the camera the bias was tuned from, so that view comes back.
             tuned.camera = recordedCamera(camera, settings->camera.autoFrame);
+            tuned.camera.sceneCamera = settings->camera.sceneCamera;
             if (std::string error = savePresetFile(options.out, tuned, "tuned", description, options.scene);
                 !error.empty())
                 return fail(error);

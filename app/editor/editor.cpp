@@ -6,6 +6,7 @@
 #include "image/image_io.h"
 #include "image/split_view.h"
 #include "scene/builtin_scenes.h"
+#include "scene/scene_casters.h"
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
@@ -289,6 +290,8 @@ void Editor::renderViewport() {
     // A frame's error or warning is said when it appears, not again with every frame while it lasts (repeated,
     // it would replace the result of whatever the user did meanwhile on the status line).
     std::vector<std::string> problems = stats.ok ? stats.warnings : std::vector<std::string>{stats.error};
+    for (std::string& warning : unknownCasterPathWarnings(*state_.scene, key.settings.casters))
+        problems.push_back(std::move(warning));
     for (const std::string& problem : problems)
         if (std::find(frameProblems_.begin(), frameProblems_.end(), problem) == frameProblems_.end())
             state_.say(problem, true);
@@ -533,6 +536,24 @@ void Editor::resetCameraFromSettings(bool announce) {
     orbit_.emplace(presetCamera(&note), state_.scene->bounds);
     cameraNeedsViewport_ = !(viewportRect_.z >= 16.0f && viewportRect_.w >= 16.0f);
     if (announce && !note.empty()) state_.say(note);
+    // A camera index this scene lacks (a preset of another version of the file): the free camera is shown.
+    if (std::string error = sceneCameraError(state_.settings.camera, *state_.scene); !error.empty())
+        state_.say(error + "; the free camera is shown", true);
+}
+
+void Editor::chooseSceneCamera(int index) {
+    if (!state_.scene || !state_.edit("camera.sceneCamera", index)) return;
+    if (index < 0) {
+        state_.say("free camera: the view stays where it is");
+        return;
+    }
+    if (std::string error = sceneCameraError(state_.settings.camera, *state_.scene); !error.empty()) {
+        state_.say(error, true);
+        return;
+    }
+    resetCameraFromSettings();
+    state_.say("view: camera " + std::to_string(index) + " '" + state_.scene->cameras[std::size_t(index)].name +
+               "' of " + state_.scene->name);
 }
 
 Settings Editor::settingsToSave() const {
@@ -543,8 +564,11 @@ Settings Editor::settingsToSave() const {
     const double size = std::max(1e-12, glm::length(preset.position - preset.target));
     const bool moved = glm::length(shown.position - preset.position) > 1e-9 * size ||
                        glm::length(shown.target - preset.target) > 1e-9 * size;
-    const bool autoFrame = state_.settings.camera.autoFrame && samePresetScene(state_.preset.scene(), state_.sceneSpec);
+    const bool sameScene = samePresetScene(state_.preset.scene(), state_.sceneSpec);
+    const bool autoFrame = state_.settings.camera.autoFrame && sameScene;
     out.camera = recordedCamera(shown, autoFrame && !moved);
+    // The file's camera stays chosen while the view is still its view; once moved, the position is what is saved.
+    out.camera.sceneCamera = sameScene && !moved ? state_.settings.camera.sceneCamera : -1;
     return out;
 }
 
@@ -567,7 +591,7 @@ void Editor::dropFiles(const std::vector<std::string>& paths) {
 }
 
 bool Editor::busy() const {
-    if (state_.animateLight || screenshotRequested_ || windowScreenshotPath_ || state_.probe.request)
+    if (state_.animateLight || screenshotRequested_ || windowScreenshotPath_ || state_.probe.request || flyMoving_)
         return true;
     // Nothing to draw into (no scene yet, or a minimized window): wait for events rather than spin.
     if (!state_.scene || !orbit_ || viewportRect_.z < 16.0f || viewportRect_.w < 16.0f) return false;

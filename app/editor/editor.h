@@ -86,6 +86,7 @@ public:
     void deletePreset() override;
     void requestScreenshot(bool withShadowMap) override;
     void frameScene() override;
+    void chooseSceneCamera(int index) override;
     void saveProbeJson() override;
     void measureAccuracy() override;
     void suggestBias() override;
@@ -150,6 +151,10 @@ private:
     void viewModeCombo();
     void drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize);
     void viewportCameraInput(ImVec2 pos, ImVec2 size);
+    // Fly mode while the right button is held on the view: mouse look, WASD / Q E travel per second of the clock.
+    void flyInput();
+    // Alt+click: orbits turn around the surface under the cursor.
+    void pickPivot(ImVec2 imagePos);
     void closePopupOnEscape();
     void drawPanels();
     void drawSidebar(Sidebar side, PanelContext& ctx, const Panel* wanted);
@@ -184,6 +189,8 @@ private:
     // A press on the view becomes a camera drag only if its first move stays inside the view (see
     // viewportCameraInput); otherwise it is refused until the button is let go.
     bool cameraDragLive_ = false, cameraDragRefused_ = false;
+    std::optional<double> flyClock_;  // the clock at the previous fly-mode frame (none: not flying)
+    bool flyMoving_ = false;          // a travel key is held while flying: frames must keep coming
     void resetCameraFromSettings(bool announce = false);
     // The camera the preset gives on this scene and viewport (auto-framed on a scene it was not tuned on).
     Camera presetCamera(std::string* note = nullptr) const;

@@ -3,6 +3,11 @@
 // GLFW key code, so these are GLFW's values (stable since GLFW 3.0); headless tests press the same indices.
 namespace shadowlab::editor::keys {
 
+// Fly mode (right button held on the view): W A S D travel, Q / E down / up.
+inline constexpr int kA = 65;
+inline constexpr int kD = 68;
+inline constexpr int kE = 69;
+inline constexpr int kW = 87;
 inline constexpr int kF = 70;
 inline constexpr int kO = 79;
 inline constexpr int kP = 80;  // held over the viewport: probe the pixel under the cursor
@@ -11,5 +16,6 @@ inline constexpr int kS = 83;
 inline constexpr int kF12 = 301;
 inline constexpr int kLeftShift = 340;
 inline constexpr int kLeftControl = 341;
+inline constexpr int kLeftAlt = 342;
 
 }  // namespace shadowlab::editor::keys

@@ -37,8 +37,8 @@ void Editor::probeViewportInput(ImVec2 imagePos) {
     if (x < 0 || y < 0 || x >= int(viewportRect_.z) || y >= int(viewportRect_.w)) return;
     const glm::ivec2 pixel(x, y);
     // A left click that did not move (a drag orbits instead); Shift+click pans.
-    const bool click = ImGui::IsItemDeactivated() && io.MouseReleased[0] && !io.KeyShift &&
-                       io.MouseDragMaxDistanceSqr[0] < 9.0f;
+    const bool click = ImGui::IsItemDeactivated() && io.MouseReleased[0] && !io.KeyShift && !io.KeyAlt &&
+                       io.MouseDragMaxDistanceSqr[0] < 9.0f;  // Alt+click sets the orbit's pivot
     const bool held = ImGui::IsItemHovered() && io.KeysDown[keys::kP] && !io.WantTextInput;
     const ProbeState& p = state_.probe;
     const bool samePixel = p.report && p.report->x == x && p.report->y == y;

@@ -88,6 +88,8 @@ struct EditorState {
     bool animateLight = false;
     float animateDegreesPerSecond = 30.0f;
     double animatedAzimuthDeg = 0.0;  // added to the light's azimuth while animating (a preview)
+    // Fly mode's speed, times the scene-sized base (OrbitCamera::flySpeed): the wheel changes it while flying.
+    double flySpeedFactor = 1.0;
 
     FrameStats stats;           // the newest frame the renderer drew
     bool haveStats = false;
@@ -175,6 +177,9 @@ public:
     virtual void deletePreset() = 0;
     virtual void requestScreenshot(bool withShadowMap) = 0;
     virtual void frameScene() = 0;
+    // The view moves to one of the scene's cameras (its index; -1 = the free camera, which keeps the view): the
+    // choice is the camera.sceneCamera setting, saved with the preset.
+    virtual void chooseSceneCamera(int index) = 0;
     // The Probe panel's report as JSON (probe --json's format, with the scene and preset) in the screenshots folder.
     virtual void saveProbeJson() = 0;
     // Accuracy: measure the current view, search for a bias (applied to the settings when done), cancel either.

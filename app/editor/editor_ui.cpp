@@ -5,6 +5,7 @@
 #include "editor/field_widgets.h"
 #include "editor/message_log.h"
 #include "editor/panels/panel_registry.h"
+#include "frame/surface_pick.h"
 #include "settings/settings_fields.h"
 
 #include <imgui_internal.h>
@@ -129,7 +130,9 @@ void Editor::drawViewport() {
     state_.controls.recordLastItem("viewport.frame");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Frame the scene (F). In the view: left drag orbits, middle or Shift+left drag pans, the "
-                          "wheel zooms");
+                          "wheel zooms, Alt+click sets the orbit's pivot on the surface clicked. Right drag flies: "
+                          "the mouse looks around, W A S D travel, Q / E go down / up, Shift is 4x faster, the wheel "
+                          "sets the speed");
     flow(buttonWidth("Reset view"));
     if (ImGui::Button("Reset view")) resetCameraFromSettings();
     state_.controls.recordLastItem("viewport.resetView");
@@ -146,7 +149,7 @@ void Editor::drawViewport() {
     state_.controls.recordLastItem("viewport.screenshotWithMap");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Screenshots also write the shadow map as float EXR and PNG");
     // How to move the camera, where there is room for it (else on the Frame button's tooltip).
-    const char* help = "drag: orbit | middle / Shift+drag: pan | wheel: zoom";
+    const char* help = "drag: orbit | middle / Shift+drag: pan | wheel: zoom | Alt+click: pivot | right drag + WASD: fly";
     const float helpWidth = ImGui::CalcTextSize(help).x;
     ImGui::SameLine();
     if (ImGui::GetContentRegionAvail().x > helpWidth + 12.0f) {
@@ -165,7 +168,9 @@ void Editor::drawViewport() {
     abDividerInput(imagePos, imageSize);
     ImGui::SetCursorScreenPos(imagePos);
     if (imageSize.x >= 1.0f && imageSize.y >= 1.0f) {
-        ImGui::InvisibleButton("##view", imageSize, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+        ImGui::InvisibleButton("##view", imageSize,
+                               ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle |
+                                   ImGuiButtonFlags_MouseButtonRight);
         state_.controls.recordLastItem("viewport.image");
         ImDrawList* draw = ImGui::GetWindowDrawList();
         const AccuracyState& a = state_.accuracy;
@@ -188,6 +193,7 @@ void Editor::drawViewport() {
         drawProfileLine(imagePos);
         probeViewportInput(imagePos);
         viewportCameraInput(imagePos, imageSize);
+        pickPivot(imagePos);
     }
     drawStatusBar();
     ImGui::End();
@@ -205,19 +211,69 @@ void Editor::viewportCameraInput(ImVec2 pos, ImVec2 size) {
     } else if (moved && !cameraDragLive_ && !cameraDragRefused_) {
         // A click on the toolbar that the window system delivered before the cursor's move reaches ImGui as a
         // press on the view whose first move lands outside it: that is no drag (it used to orbit by the whole move).
-        const int button = io.MouseDown[2] ? 2 : 0;
+        const int button = io.MouseDown[2] ? 2 : io.MouseDown[1] ? 1 : 0;
         if (inside(io.MouseClickedPos[button]) && inside(io.MousePos))
             cameraDragLive_ = true;
         else
             cameraDragRefused_ = true;
     }
     if (cameraDragLive_ && moved) {
-        if (io.MouseDown[2] || (io.MouseDown[0] && io.KeyShift))
+        if (io.MouseDown[1])
+            orbit_->look(io.MouseDelta.x, io.MouseDelta.y);  // fly mode: turn around the eye
+        else if (io.MouseDown[2] || (io.MouseDown[0] && io.KeyShift))
             orbit_->pan(io.MouseDelta.x, io.MouseDelta.y, int(size.y));
         else if (io.MouseDown[0] && !io.KeyCtrl)  // Ctrl+drag draws the depth profile's line
             orbit_->orbit(io.MouseDelta.x, io.MouseDelta.y);
     }
-    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) orbit_->zoom(io.MouseWheel);
+    flyInput();
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+        if (io.MouseDown[1]) {  // while flying the wheel sets the speed
+            state_.flySpeedFactor = std::clamp(state_.flySpeedFactor * std::pow(1.25, double(io.MouseWheel)),
+                                               1.0 / 64.0, 64.0);
+            char text[96];
+            std::snprintf(text, sizeof text, "fly speed: %.3g world units a second (x%.3g; Shift: 4x)",
+                          orbit_->flySpeed() * state_.flySpeedFactor, state_.flySpeedFactor);
+            state_.say(text);
+        } else {
+            orbit_->zoom(io.MouseWheel);
+        }
+    }
+}
+
+void Editor::flyInput() {
+    const ImGuiIO& io = ImGui::GetIO();
+    // The view holds the right button: flying. Travel follows the editor's clock, not the frame count.
+    const bool flying = ImGui::IsItemActive() && io.MouseDown[1] && !io.WantTextInput;
+    const auto axis = [&](int plus, int minus) { return double(io.KeysDown[plus]) - double(io.KeysDown[minus]); };
+    const glm::dvec3 axes(axis(keys::kD, keys::kA), axis(keys::kE, keys::kQ), axis(keys::kW, keys::kS));
+    flyMoving_ = flying && axes != glm::dvec3(0.0);
+    if (!flying) {
+        flyClock_.reset();
+        return;
+    }
+    const double t = now();
+    // A stalled frame does not throw the eye across the scene: at most a quarter second of travel at once.
+    const double seconds = flyClock_ ? std::clamp(t - *flyClock_, 0.0, 0.25) : 0.0;
+    flyClock_ = t;
+    if (flyMoving_) orbit_->fly(axes, seconds, state_.flySpeedFactor * (io.KeyShift ? 4.0 : 1.0));
+}
+
+void Editor::pickPivot(ImVec2 imagePos) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool altClick = ImGui::IsItemDeactivated() && io.MouseReleased[0] && io.KeyAlt &&
+                          io.MouseDragMaxDistanceSqr[0] < 9.0f;
+    if (!altClick || !orbit_ || !state_.haveStats) return;
+    const int x = int(std::floor(io.MousePos.x - imagePos.x)), y = int(std::floor(io.MousePos.y - imagePos.y));
+    const std::optional<glm::dvec3> point = pickSurface(target_, state_.stats, x, y);
+    if (!point) {
+        state_.say("pivot: no surface under the cursor (pixel " + std::to_string(x) + ", " + std::to_string(y) + ")");
+        return;
+    }
+    orbit_->setPivot(*point);
+    char text[160];
+    std::snprintf(text, sizeof text, "pivot: orbits now turn around (%.4g, %.4g, %.4g), the surface at pixel (%d, %d)",
+                  point->x, point->y, point->z, x, y);
+    state_.say(text);
 }
 
 void Editor::viewModeCombo() {

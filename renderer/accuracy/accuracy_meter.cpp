@@ -13,6 +13,7 @@
 #include "reference/embree_scene.h"
 #include "reference/parallel_rows.h"
 #include "reference/visibility.h"
+#include "scene/scene_casters.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -35,7 +36,7 @@ double msSince(Clock::time_point start) {
 // What the surface samples depend on.
 struct SurfaceKey {
     glm::dvec3 position, target;
-    double fovYDeg, nearPlane, farPlane;
+    double fovYDeg, nearPlane, farPlane, orthoHalfHeight;
     int width, height;
     bool operator==(const SurfaceKey&) const = default;
 };
@@ -68,7 +69,8 @@ struct EdgeUnits {
     const SurfaceSamples& samples;
     const ShadowBoundary& boundary;  // knows the texel of every light kind (a point light's: its cube face's)
     glm::dvec3 eye, forward;
-    double pixelPerDepth;
+    const Camera& viewCamera;
+    int viewHeight;
 
     EdgeUnits(const SurfaceSamples& s, const ShadowBoundary& b, const Camera& camera, const glm::dvec3& origin,
               int height)
@@ -76,9 +78,12 @@ struct EdgeUnits {
           boundary(b),
           eye(camera.position - origin),
           forward(glm::normalize(camera.target - camera.position)),
-          pixelPerDepth(2.0 * std::tan(glm::radians(camera.fovYDeg) / 2.0) / double(height)) {}
+          viewCamera(camera),
+          viewHeight(height) {}
     double worldPerTexel(std::size_t i) const { return boundary.texelWorldSizeAt(samples.point[i]); }
-    double worldPerPixel(std::size_t i) const { return glm::dot(samples.point[i] - eye, forward) * pixelPerDepth; }
+    double worldPerPixel(std::size_t i) const {
+        return viewCamera.worldPerPixel(glm::dot(samples.point[i] - eye, forward), viewHeight);
+    }
 };
 
 // Texels per screen pixel over the measured pixels: the texel density view's ratio (shaders/main.frag.glsl).
@@ -99,6 +104,11 @@ TexelDensity texelDensityOf(const std::vector<std::uint8_t>& measured, const Edg
     work = ratios;
     d.p95 = percentile(work, 95);
     return d;
+}
+
+// What the BVH is built from: the scene's geometry and which of its instances cast.
+std::size_t referenceFingerprint(const Scene& scene, const std::vector<char>& casting) {
+    return withCasters(sceneFingerprint(scene), casting);
 }
 
 std::string invalidSettings(const Settings& settings) {
@@ -286,15 +296,16 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.cost.toolFrameMs = msSince(t);
     if (cancelled(progress)) return stop();
 
-    // The BVH, once per scene geometry.
-    const std::size_t fingerprint = sceneFingerprint(scene);
+    // The BVH, once per scene geometry and set of casters.
+    const std::vector<char> casting = castingInstances(scene, settings.casters);
+    const std::size_t fingerprint = referenceFingerprint(scene, casting);
     report.cost.bvhReused = m.scene == &scene && m.fingerprint == fingerprint && m.bvh;
     if (!report.cost.bvhReused) {
         setStage(progress, 0.1f, "building the BVH");
         m.dropScene();
         m.origin = stats.renderOrigin;
         m.gpuScene = std::make_unique<GpuScene>(scene, m.origin);
-        m.bvh = std::make_unique<EmbreeScene>(scene, m.origin);
+        m.bvh = std::make_unique<EmbreeScene>(scene, m.origin, casting);
         m.scene = &scene;
         m.fingerprint = fingerprint;
         report.cost.bvhBuildMs = m.bvh->buildMilliseconds();
@@ -303,8 +314,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     if (cancelled(progress)) return stop();
 
     // Surface samples, once per camera and size.
-    const SurfaceKey surfaceKey{camera.position, camera.target, camera.fovYDeg, camera.nearPlane, camera.farPlane,
-                                width, height};
+    const SurfaceKey surfaceKey{camera.position, camera.target,   camera.fovYDeg, camera.nearPlane,
+                                camera.farPlane, camera.orthoHalfHeight, width, height};
     const bool surfaceReused = m.surfaceKey && *m.surfaceKey == surfaceKey;
     if (!surfaceReused) {
         setStage(progress, 0.3f, "G-buffer: rebuilding surface points");
@@ -455,11 +466,12 @@ AccuracyReport AccuracyMeter::remeasure(const Scene& scene, const Settings& give
     if (!isolated) return fail(settingsError);
     const Settings& settings = *isolated;
     // The reference must describe this view: scene, camera and size here, the light after the frame says where.
-    const SurfaceKey surfaceKey{camera.position, camera.target, camera.fovYDeg, camera.nearPlane, camera.farPlane,
-                                width, height};
-    if (m.scene != &scene || !m.bvh || m.fingerprint != sceneFingerprint(scene) || !m.surfaceKey ||
+    const SurfaceKey surfaceKey{camera.position, camera.target,   camera.fovYDeg, camera.nearPlane,
+                                camera.farPlane, camera.orthoHalfHeight, width, height};
+    if (m.scene != &scene || !m.bvh ||
+        m.fingerprint != referenceFingerprint(scene, castingInstances(scene, settings.casters)) || !m.surfaceKey ||
         !(*m.surfaceKey == surfaceKey))
-        return fail("no reference for this view (scene, camera or size changed): measure it first", true);
+        return fail("no reference for this view (scene, casters, camera or size changed): measure it first", true);
 
     auto t = Clock::now();
     const FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height);

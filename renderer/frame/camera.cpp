@@ -26,7 +26,18 @@ glm::dmat4 Camera::view(const glm::dvec3& origin) const {
 }
 
 glm::dmat4 Camera::projection(double aspect) const {
-    return glm::perspective(glm::radians(fovYDeg), std::max(aspect, 1e-6), nearPlane, farPlane);
+    aspect = std::max(aspect, 1e-6);
+    if (orthoHalfHeight > 0.0) {
+        const double halfWidth = orthoHalfHeight * aspect;
+        return glm::ortho(-halfWidth, halfWidth, -orthoHalfHeight, orthoHalfHeight, nearPlane, farPlane);
+    }
+    return glm::perspective(glm::radians(fovYDeg), aspect, nearPlane, farPlane);
+}
+
+double Camera::worldPerPixel(double depth, int heightPixels) const {
+    const double height = double(std::max(heightPixels, 1));
+    if (orthoHalfHeight > 0.0) return 2.0 * orthoHalfHeight / height;
+    return depth * 2.0 * std::tan(glm::radians(fovYDeg) / 2.0) / height;
 }
 
 ViewCamera viewCameraOf(const Camera& camera, double aspect, const glm::dvec3& origin) {
@@ -104,8 +115,38 @@ CameraSettings recordedCamera(const Camera& used, bool autoFrame) {
     return out;
 }
 
+std::string sceneCameraError(const CameraSettings& settings, const Scene& scene) {
+    const int index = settings.sceneCamera;
+    if (index == -1 || (index >= 0 && std::size_t(index) < scene.cameras.size())) return {};
+    std::string error = "camera.sceneCamera: " + std::to_string(index) + " is not a camera of scene " + scene.name;
+    if (scene.cameras.empty()) return error + " (it has none; allowed -1, the free camera)";
+    error += " (allowed -1 = the free camera, or 0.." + std::to_string(scene.cameras.size() - 1) + ":";
+    for (std::size_t i = 0; i < scene.cameras.size() && i < 8; ++i)
+        error += (i ? ", " : " ") + std::to_string(i) + " '" + scene.cameras[i].name + "'";
+    return error + (scene.cameras.size() > 8 ? ", ...)" : ")");
+}
+
+Camera sceneCameraView(const SceneCamera& file, const Bounds& bounds) {
+    Camera camera;
+    camera.position = file.position;
+    // The target only gives the direction (and the orbit's pivot distance): the scene's centre's depth along it.
+    const double depth = glm::dot(bounds.centreOrOrigin() - file.position, file.forward);
+    camera.target = file.position + file.forward * std::max(depth, 1e-3 * std::max(1.0, double(bounds.radius())));
+    if (file.orthographic)
+        camera.orthoHalfHeight = file.ymag;
+    else
+        camera.fovYDeg = glm::degrees(file.yfovRad);
+    fitDepthRange(camera, bounds);  // the far plane of an infinite projection: the scene's reach
+    camera.nearPlane = file.znear;
+    if (file.zfar > 0.0) camera.farPlane = file.zfar;
+    camera.farPlane = std::max(camera.farPlane, camera.nearPlane * (1.0 + 1e-6) + 1e-6);
+    return camera;
+}
+
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect) {
     const Bounds& bounds = scene.bounds;
+    if (settings.sceneCamera >= 0 && std::size_t(settings.sceneCamera) < scene.cameras.size())
+        return sceneCameraView(scene.cameras[std::size_t(settings.sceneCamera)], bounds);
     Camera camera;
     camera.fovYDeg = settings.fovYDeg;
     if (settings.autoFrame) {

@@ -7,6 +7,7 @@
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
 
+#include <string>
 #include <vector>
 
 namespace shadowlab {
@@ -17,17 +18,32 @@ struct Camera {
     double fovYDeg = 45.0;
     double nearPlane = 0.05;
     double farPlane = 200.0;
+    // > 0: an orthographic view (a file's orthographic camera), half its height in world units; fovYDeg unused.
+    double orthoHalfHeight = 0.0;
 
     // Render-origin-relative view and projection for an aspect ratio (width / height).
     glm::dmat4 view(const glm::dvec3& origin) const;
     glm::dmat4 projection(double aspect) const;
+    // World size of one pixel of a view `heightPixels` tall at `depth` along the viewing direction.
+    double worldPerPixel(double depth, int heightPixels) const;
+
+    bool operator==(const Camera&) const = default;
 };
 
-// The camera the settings ask for: their position/target, or (camera.autoFrame) one looking from the scene's
-// preferred side whose view the scene's vertices fill: the projected hull just fits the limiting dimension of a
-// view of `aspect` (width / height), with a small margin, centred. Near/far always follow the scene's size so depth
-// precision suits it.
+// The camera the settings ask for: the scene's camera camera.sceneCamera (its projection and near/far as the file
+// gives them, an infinite far plane replaced by the scene's reach; the aspect is `aspect`), else their
+// position/target, or (camera.autoFrame) one looking from the scene's preferred side whose view the scene's vertices
+// fill: the projected hull just fits the limiting dimension of a view of `aspect` (width / height), with a small
+// margin, centred. The free camera's near/far follow the scene's size so depth precision suits it. A sceneCamera
+// the scene lacks (see sceneCameraError) gives the free camera.
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect);
+
+// "" when camera.sceneCamera is -1 or names one of the scene's cameras, else the error naming the key, the index and
+// the cameras there are.
+std::string sceneCameraError(const CameraSettings& settings, const Scene& scene);
+
+// The view of one of the file's cameras (what cameraFor gives for its index).
+Camera sceneCameraView(const SceneCamera& camera, const Bounds& bounds);
 
 // The camera settings that bring `used` back (what a saved preset records): its position, target and fov, with
 // `autoFrame` as given (true: auto-framing still decides on load, the recorded values say what it chose here).

@@ -97,10 +97,12 @@ GpuScene::GpuScene(const Scene& scene, const glm::dvec3& origin) : scene_(&scene
 
     const glm::dmat4 toOrigin = glm::dmat4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0,
                                            -origin.x, -origin.y, -origin.z, 1.0);
-    for (const Instance& instance : scene.instances) {
+    for (std::size_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
         if (mesh.indices.empty()) continue;
         GpuDraw draw;
+        draw.instance = i;
         draw.indexCount = GLsizei(mesh.indices.size());
         draw.firstIndexByte = meshFirstIndex[std::size_t(instance.mesh)] * sizeof(std::uint32_t);
         draw.baseVertex = meshBaseVertex[std::size_t(instance.mesh)];
@@ -115,6 +117,10 @@ GpuScene::GpuScene(const Scene& scene, const glm::dvec3& origin) : scene_(&scene
         computeDrawBounds(mesh, model, draw);
         draws_.push_back(draw);
     }
+}
+
+void GpuScene::setCasting(const std::vector<char>& castingInstances) {
+    for (GpuDraw& draw : draws_) draw.casts = draw.instance >= castingInstances.size() || castingInstances[draw.instance];
 }
 
 void GpuScene::bind() const { glBindVertexArray(vao_.id()); }

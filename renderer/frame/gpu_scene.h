@@ -22,6 +22,8 @@ struct GpuDraw {
     glm::vec3 boundsCenter{0.0f};    // render-origin-relative bounding sphere (finite vertices only)
     float boundsRadius = 0.0f;
     bool hasFiniteBounds = false;
+    std::size_t instance = 0;        // its Scene::instances entry
+    bool casts = true;               // drawn into shadow maps (casters.excluded; see setCasting)
 };
 
 class GpuScene {
@@ -30,6 +32,8 @@ public:
 
     void bind() const;
     const std::vector<GpuDraw>& draws() const { return draws_; }
+    // Which draws cast shadows, from a flag per Scene::instances entry (scene/scene_casters.h).
+    void setCasting(const std::vector<char>& castingInstances);
     // The alpha texture of a material (0 when it has none).
     GLuint materialTexture(int material) const;
     const Scene& scene() const { return *scene_; }

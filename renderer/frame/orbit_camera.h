@@ -1,7 +1,10 @@
 #pragma once
 // The editor's view camera: orbits around a target (yaw / pitch, pitch kept away from straight up and down), pans in
 // the view plane so the point under the cursor follows the mouse, zooms multiplicatively, and frames the scene the
-// way auto-framing does (the F key). Converts to and from the renderer's Camera. No GL.
+// way auto-framing does (the F key). Fly mode moves the eye instead: it looks around from where it stands and
+// travels along its own axes at a speed that follows the scene's size, per second of the caller's clock (so the
+// distance covered does not depend on the frame rate); the pivot then travels with it. Converts to and from the
+// renderer's Camera (an orthographic one stays orthographic; zoom scales its height). No GL.
 #include "frame/camera.h"
 #include "scene/scene.h"
 
@@ -33,6 +36,19 @@ public:
     // the limiting dimension kAutoFrameFill full, centred); orbits then turn around the subject's middle.
     void frame(const Scene& scene, double aspect);
 
+    // Fly mode. A mouse drag of (dx, dy) pixels turns the view around the eye (right looks right, down looks down);
+    // the pivot stays at its distance in front of the eye.
+    void look(double dxPixels, double dyPixels);
+    // Travels `seconds` along the view's axes: `axes` = (right, up, forward), each in [-1, 1] (WASD, Q/E), at
+    // flySpeed() times `speedFactor` world units per second. Eye and pivot move together.
+    void fly(const glm::dvec3& axes, double seconds, double speedFactor = 1.0);
+    // World units per second at speed factor 1: kFlyRadiiPerSecond of the scene's radius.
+    double flySpeed() const { return kFlyRadiiPerSecond * sceneRadius_; }
+    static constexpr double kFlyRadiiPerSecond = 0.2;
+
+    // Orbits now turn around `point` (a surface picked in the view): the eye stays, the view turns to face it.
+    void setPivot(const glm::dvec3& point);
+
     glm::dvec3 target() const { return target_; }
     glm::dvec3 eye() const;
     double distance() const { return distance_; }
@@ -44,6 +60,8 @@ public:
 
 private:
     void setSceneBounds(const Bounds& bounds);
+    // Yaw and pitch from a unit vector pointing from the target to the eye (pitch clamped).
+    void setOffsetDirection(const glm::dvec3& toEye);
     void clampDistance();
 
     glm::dvec3 target_{0.0};
@@ -51,6 +69,7 @@ private:
     double yaw_ = 0.0;    // around +y; 0 = eye on +z of the target
     double pitch_ = 0.0;  // above the target's horizontal plane
     double fovYDeg_ = 45.0;
+    double orthoHalfHeight_ = 0.0;  // > 0: orthographic (a file's camera); scales with the distance
     Bounds bounds_;
     double sceneRadius_ = 1.0;
 };

@@ -36,4 +36,16 @@ std::vector<std::uint8_t> RenderTarget::readColor() const {
     return pixels;
 }
 
+float RenderTarget::readDepth(int x, int row) const {
+    float depth = 1.0f;
+    if (!framebuffer_ || x < 0 || row < 0 || x >= width_ || row >= height_) return depth;
+    GLint previous = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(x, row, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previous));
+    return depth;
+}
+
 }  // namespace shadowlab

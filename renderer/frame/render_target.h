@@ -22,6 +22,8 @@ public:
 
     // RGBA8 pixels, row 0 = bottom (GL order).
     std::vector<std::uint8_t> readColor() const;
+    // The window-space depth (0..1) of pixel (x, row) in GL order (row 0 = bottom); 1 where nothing was drawn.
+    float readDepth(int x, int row) const;
 
 private:
     gl::Texture color_;

@@ -3,6 +3,7 @@
 
 #include "gl/gl_errors.h"
 #include "light/volume_overlap.h"
+#include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
 
 #include <glm/ext/matrix_transform.hpp>
@@ -126,6 +127,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
         gpuSceneFingerprint_ = fingerprint;
     }
+    // What casts (casters.excluded): the maps' contents change with it as with the scene.
+    const std::vector<char> casters = castingInstances(scene, settings.casters);
+    gpuScene_->setCasting(casters);
+    const std::size_t viewFingerprint = withCasters(fingerprint, casters);
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
     const glm::dmat4 view = camera.view(stats.renderOrigin);
@@ -203,7 +208,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.resolution = array.resolution();
         entry.format = array.format();
 
-        const ViewInputs inputs{fingerprint, p.view.space.viewProjection(), light, state.map.generation(),
+        const ViewInputs inputs{viewFingerprint, p.view.space.viewProjection(), light, state.map.generation(),
                                 p.castersInVolume == 0, p.view.kind == ShadowViewKind::Cascade};
         const ViewDecision decision = decideView(
             state.rendered, inputs, volumesOverlap(p.view.space.volumeViewProjection(), stats.cameraViewProjection));

@@ -82,7 +82,7 @@ void cullingFilter(const RTCFilterFunctionNArguments* args) {
 
 }  // namespace
 
-EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin) {
+EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin, const std::vector<char>& castingInstances) {
     const auto start = std::chrono::steady_clock::now();
     RTCDevice device = rtcNewDevice(nullptr);
     if (!device) throw std::runtime_error("Embree: cannot create a device (error " +
@@ -93,9 +93,10 @@ EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin) {
     rtcSetSceneBuildQuality(rtcScene, RTC_BUILD_QUALITY_MEDIUM);
     rtcSetSceneFlags(rtcScene, RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
 
-    for (const Instance& instance : scene.instances) {
+    for (std::size_t n = 0; n < scene.instances.size(); ++n) {
+        const Instance& instance = scene.instances[n];
         const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
-        if (mesh.indices.empty()) continue;
+        if (mesh.indices.empty() || (n < castingInstances.size() && !castingInstances[n])) continue;
         RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
         // Positions made relative to the render origin in double, then stored as float: exact for large worlds.
         const glm::dmat4 model = glm::dmat4(instance.transform);

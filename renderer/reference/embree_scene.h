@@ -39,8 +39,9 @@ struct RayHit {
 class EmbreeScene {
 public:
     // Throws std::runtime_error if Embree cannot start. The scene must outlive this object (MASK filters read its
-    // uvs and images).
-    EmbreeScene(const Scene& scene, const glm::dvec3& origin);
+    // uvs and images). `castingInstances` (a flag per Scene::instances entry, scene/scene_casters.h; empty = all):
+    // only the instances that cast are in the BVH, as only they are in the shadow maps.
+    EmbreeScene(const Scene& scene, const glm::dvec3& origin, const std::vector<char>& castingInstances = {});
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;

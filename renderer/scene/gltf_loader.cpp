@@ -1,9 +1,11 @@
 #include "scene/gltf_loader.h"
 
 // The top-level flow: read the file with tinygltf, check its required extensions, import materials, walk the node
-// graph from the scene's roots (cycles, depth and blow-up cut) and instance each node's mesh primitives under its
-// world transform. The parts live in gltf_accessors, gltf_geometry, gltf_primitives, gltf_images, gltf_materials,
+// graph from the scene's roots (cycles, depth and blow-up cut), record each visited node (Scene::nodes) and instance
+// its mesh primitives and place its camera under its world transform. The parts live in gltf_accessors, gltf_geometry, gltf_primitives, gltf_images, gltf_materials,
 // gltf_lights and gltf_extensions.
+#include "scene/gltf_camera_precheck.h"
+#include "scene/gltf_cameras.h"
 #include "scene/gltf_common.h"
 #include "scene/gltf_extensions.h"
 #include "scene/gltf_geometry.h"
@@ -38,6 +40,8 @@ using namespace gltf;
 constexpr int kMaxNodeDepth = 512;                  // deeper than any real hierarchy: a broken file
 constexpr std::size_t kMaxNodeVisits = 1'000'000;   // a node shared by many parents can explode combinatorially
 constexpr std::size_t kMaxWarnings = 100;
+constexpr std::size_t kMaxRecordedNodes = 100'000;         // Scene::nodes: the outliner's and presets' node list
+constexpr std::size_t kMaxNodePathBytes = std::size_t(64) << 20;  // their paths together (deep, long-named chains)
 constexpr double kMaxSceneExtent = 1e18;  // its square, 1e36, is still a float; light-space math squares lengths           // keep the list readable on badly broken files
 
 class Loader {
@@ -62,7 +66,7 @@ public:
 private:
     const std::vector<int>& meshPrimitives(int meshIndex);
     std::vector<int> rootNodes();
-    void visit(int index, const glm::dmat4& parent, int depth);
+    void visit(int index, const glm::dmat4& parent, int depth, int parentNode);
     glm::dmat4 localMatrix(int index);
 
     const tg::Model& model_;
@@ -75,6 +79,8 @@ private:
     std::size_t visits_ = 0, suppressedWarnings_ = 0, degenerateInstances_ = 0;
     bool cycleWarned_ = false, depthWarned_ = false, visitsWarned_ = false, skinWarned_ = false;
     bool instanceCapHit_ = false;
+    bool nodesCut_ = false;          // past kMaxRecordedNodes or kMaxNodePathBytes: no more nodes recorded
+    std::size_t nodePathBytes_ = 0;
     int capNode_ = -1;  // the node whose instances passed kMaxInstances
 };
 
@@ -113,7 +119,7 @@ glm::dmat4 Loader::localMatrix(int index) {
     return m;
 }
 
-void Loader::visit(int index, const glm::dmat4& parent, int depth) {
+void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNode) {
     if (index < 0 || index >= int(model_.nodes.size())) {
         warn("node " + str(index) + " does not exist; ignored");
         return;
@@ -137,6 +143,27 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth) {
         warn("node " + str(index) + ": transform is not finite in float; the node and its children are ignored");
         return;
     }
+    // The node as presets name it (its path) and the outliner lists it; its instances point back at it.
+    // A file whose node graph multiplies (a node listed by many parents) is not recorded past the limits: its
+    // remaining instances belong to no node (they always cast).
+    int sceneNode = -1;
+    if (!nodesCut_) {
+        SceneNode recorded;
+        recorded.name = node.name;
+        const std::string segment = nodePathSegment(node.name, index);
+        recorded.path = parentNode < 0 ? segment : scene_.nodes[std::size_t(parentNode)].path + "/" + segment;
+        recorded.parent = parentNode;
+        nodePathBytes_ += recorded.path.size();
+        if (scene_.nodes.size() >= kMaxRecordedNodes || nodePathBytes_ > kMaxNodePathBytes) {
+            nodesCut_ = true;
+            warn("more than " + str(kMaxRecordedNodes) + " nodes or " + str(kMaxNodePathBytes >> 20) +
+                 " MiB of node paths: later nodes are not listed (their meshes always cast shadows)");
+        } else {
+            sceneNode = int(scene_.nodes.size());
+            if (parentNode >= 0) scene_.nodes[std::size_t(parentNode)].children.push_back(sceneNode);
+            scene_.nodes.push_back(std::move(recorded));
+        }
+    }
     if (node.mesh >= int(model_.meshes.size())) warn("node " + str(index) + ": mesh " + str(node.mesh) + " does not exist");
     if (node.mesh >= 0 && node.mesh < int(model_.meshes.size())) {
         if (node.skin >= 0 && !skinWarned_) {
@@ -155,12 +182,13 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth) {
                 capNode_ = index;
                 return;
             }
-            scene_.instances.push_back(Instance{mesh, glm::mat4(world)});
+            scene_.instances.push_back(Instance{mesh, glm::mat4(world), sceneNode});
         }
     }
     if (std::optional<SceneLight> light = importLight(model_, index, world, sink_)) scene_.lights.push_back(*light);
+    if (std::optional<SceneCamera> camera = importCamera(model_, index, world, sink_)) scene_.cameras.push_back(*camera);
     onPath_[std::size_t(index)] = 1;
-    for (int child : node.children) visit(child, world, depth + 1);
+    for (int child : node.children) visit(child, world, depth + 1, sceneNode);
     onPath_[std::size_t(index)] = 0;
 }
 
@@ -194,7 +222,7 @@ std::optional<Scene> Loader::run(std::string& error) {
                 " nodes is some node's child (the node graph is a cycle)";
         return std::nullopt;
     }
-    for (int root : roots) visit(root, glm::dmat4(1.0), 0);
+    for (int root : roots) visit(root, glm::dmat4(1.0), 0, -1);
     if (instanceCapHit_) {
         error = "more than " + str(kMaxInstances) + " mesh instances (the limit), reached at node " + str(capNode_) +
                 ": nodes listed as children many times over multiply into more copies than can be drawn";
@@ -276,6 +304,11 @@ SceneLoadResult loadBytes(const std::vector<unsigned char>& bytes, const std::st
     const std::string_view json =
         binary ? glbJsonChunk(bytes) : std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (std::string problem = precheckGltfJson(json); !problem.empty()) return failure(label, problem);
+    // A camera tinygltf cannot parse would sink the whole file: it is stood in for and refused alone.
+    std::vector<unsigned char> standIn;
+    if (std::optional<std::string> fixed = standInBrokenCameras(json))
+        standIn = binary ? glbWithJson(bytes, json, *fixed) : std::vector<unsigned char>(fixed->begin(), fixed->end());
+    const std::vector<unsigned char>& input = standIn.empty() ? bytes : standIn;
 
     DecodeBudget budget;
     budget.take(bytes.size());
@@ -286,9 +319,9 @@ SceneLoadResult loadBytes(const std::vector<unsigned char>& bytes, const std::st
     EncodedImages images{&model, &budget, {}, {}};
     gltf.SetImageLoader(&keepEncodedImage, &images);
     std::string err, warn;
-    const auto size = static_cast<unsigned int>(bytes.size());
-    const bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
-                           : gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+    const auto size = static_cast<unsigned int>(input.size());
+    const bool ok = binary ? gltf.LoadBinaryFromMemory(&model, &err, &warn, input.data(), size, baseDir)
+                           : gltf.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(input.data()),
                                                       size, baseDir);
     if (!ok) {
         if (const std::string ext = unsupportedRequiredExtension(json); !ext.empty())

@@ -10,6 +10,16 @@ namespace shadowlab {
 
 bool Instance::mirrored() const { return glm::determinant(glm::mat3(transform)) < 0.0f; }
 
+std::string nodePathSegment(const std::string& name, int gltfIndex) {
+    if (name.empty()) return "#" + std::to_string(gltfIndex);
+    std::string out = name.front() == '#' ? "\\" : "";  // never read as an unnamed node's "#<index>"
+    for (char c : name) {
+        if (c == '/' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out;
+}
+
 float Bounds::radius() const { return empty ? 0.0f : 0.5f * glm::length(max - min); }
 
 void Bounds::extend(const glm::vec3& p) {
@@ -103,10 +113,21 @@ std::string Scene::invariantError() const {
             return "material '" + mat.name + "': invalid base colour image";
     for (const Instance& inst : instances) {
         if (inst.mesh < 0 || inst.mesh >= int(meshes.size())) return "instance refers to a missing mesh";
+        if (inst.node < -1 || inst.node >= int(nodes.size())) return "instance refers to a missing node";
         for (int c = 0; c < 4; ++c)
             if (!finite3(glm::vec3(inst.transform[c])) || !std::isfinite(inst.transform[c][3]))
                 return "instance transform is not finite";
     }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        const SceneNode& node = nodes[n];
+        if (node.parent < -1 || node.parent >= int(n)) return "node '" + node.path + "': its parent does not precede it";
+        for (int child : node.children)
+            if (child <= int(n) || child >= int(nodes.size()) || nodes[std::size_t(child)].parent != int(n))
+                return "node '" + node.path + "': a child that does not name it as its parent";
+    }
+    for (const SceneCamera& camera : cameras)
+        if (!finite3(glm::vec3(camera.position)) || std::abs(glm::length(camera.forward) - 1.0) > 1e-6)
+            return "camera '" + camera.name + "': position not finite or direction not unit length";
     return {};
 }
 

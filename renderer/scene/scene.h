@@ -51,6 +51,7 @@ struct Mesh {
 struct Instance {
     int mesh = 0;
     glm::mat4 transform{1.0f};  // object to world
+    int node = -1;              // the SceneNode it was placed by; -1 = none (built-in scenes)
     bool mirrored() const;      // negative determinant: triangle winding is reversed in world space
 };
 
@@ -66,6 +67,33 @@ struct SceneLight {
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
 };
+
+// A camera of the file (glTF `cameras`, placed by the node that uses it). The view's aspect ratio is the window's,
+// never the file's; a camera's roll is not kept (the view's up stays +y, as the free camera's).
+struct SceneCamera {
+    std::string name;                    // the camera's name, else its node's, else "camera N"
+    int index = 0;                       // in the file's `cameras` list (messages name it)
+    glm::dvec3 position{0.0};            // world
+    glm::dvec3 forward{0.0, 0.0, -1.0};  // unit, world: the node's -Z
+    bool orthographic = false;
+    double yfovRad = 0.8;                // perspective: vertical field of view
+    double ymag = 1.0;                   // orthographic: half the view's height, world units (xmag follows the aspect)
+    double znear = 0.1;
+    double zfar = 0.0;                   // 0 = infinite (perspective without zfar)
+};
+
+// A node of the file's hierarchy as the loader walked it from the scene's roots (a node two parents list appears
+// under each). `path` names it in presets: the names from the root down joined by '/', an unnamed node as
+// "#<glTF node index>", a '/' or '\' inside a name and a leading '#' escaped with '\' (see nodePathSegment).
+struct SceneNode {
+    std::string name;
+    std::string path;
+    int parent = -1;            // index into Scene::nodes, -1 = a root
+    std::vector<int> children;  // indices into Scene::nodes, in the file's order
+};
+
+// One segment of a node path: the name with '/', '\' and a leading '#' escaped, or "#<index>" for an unnamed node.
+std::string nodePathSegment(const std::string& name, int gltfIndex);
 
 struct Bounds {
     glm::vec3 min{0.0f};
@@ -84,6 +112,8 @@ struct Scene {
     std::vector<Image> images;
     std::vector<Instance> instances;
     std::vector<SceneLight> lights;
+    std::vector<SceneCamera> cameras;  // the file's cameras that passed the checks, in the order their nodes were met
+    std::vector<SceneNode> nodes;      // the walked hierarchy, parents before children; empty for built-in scenes
     std::vector<std::string> warnings;  // what was repaired or ignored while loading
 
     // Unit direction from the scene's centre toward an auto-framed camera: of eight three-quarter views from above,

@@ -13,8 +13,9 @@ bool samePresetScene(const std::string& presetScene, const std::string& sceneSpe
 std::string adaptPresetToScene(Settings& settings, const std::string& presetScene, const std::string& sceneSpec) {
     if (samePresetScene(presetScene, sceneSpec)) return {};
     std::string note = "the preset was tuned on " + presetScene + ", shown here on " + sceneSpec;
-    if (!settings.camera.autoFrame) {
+    if (!settings.camera.autoFrame || settings.camera.sceneCamera >= 0) {
         settings.camera.autoFrame = true;
+        settings.camera.sceneCamera = -1;  // a camera of that file, not of this one
         note += ": its camera is for that scene, so the view is auto-framed";
     }
     return note;

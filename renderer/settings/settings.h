@@ -113,8 +113,18 @@ struct CameraSettings {
     glm::dvec3 position{8.0, 6.0, 10.0};
     glm::dvec3 target{0.0, 0.0, 0.0};
     float fovYDeg = 45.0f;
+    // A camera of the scene's file (an index into Scene::cameras) replaces all of the above; -1 = the free camera.
+    int sceneCamera = -1;
 
     bool operator==(const CameraSettings&) const = default;
+};
+
+// What casts shadows: every mesh, except those under the scene's nodes named here by path (SceneNode::path, e.g.
+// "City/SkyBox"); such a node's whole subtree casts none. Both the shadow maps and the reference leave them out.
+struct CasterSettings {
+    std::vector<std::string> excluded;
+
+    bool operator==(const CasterSettings&) const = default;
 };
 
 struct Settings {
@@ -124,6 +134,7 @@ struct Settings {
     SamplerSettings sampler;
     FilterSettings filter;
     CameraSettings camera;
+    CasterSettings casters;
     ViewMode view = ViewMode::Lit;
 
     // Every problem as "key: what is wrong (allowed range)"; empty when the settings can be rendered.

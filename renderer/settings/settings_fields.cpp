@@ -220,6 +220,36 @@ SettingsField vec3Field(std::string fieldKey, std::string description, std::stri
     return f;
 }
 
+// A list of distinct non-empty strings (node paths). A lone string is a list of one (`--set key=City/SkyBox`);
+// repeats are dropped, the order kept.
+template <class Access>
+SettingsField stringListField(std::string fieldKey, std::string description, std::size_t maxItems,
+                              std::size_t maxLength, Access access) {
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::StringList);
+    f.max = double(maxItems);
+    f.allowed = "a list of at most " + std::to_string(maxItems) + " non-empty strings of at most " +
+                std::to_string(maxLength) + " bytes";
+    f.get = [access](const Settings& s) { return json(access(s)); };
+    f.set = [key = f.key, allowed = f.allowed, maxItems, maxLength, access](Settings& s, const json& j) -> std::string {
+        const json list = j.is_string() ? json::array({j}) : j;
+        if (!list.is_array()) return problem(key, "expected a list of strings, got " + describeJsonValue(j), allowed);
+        if (list.size() > maxItems)
+            return problem(key, std::to_string(list.size()) + " entries are too many", allowed);
+        std::vector<std::string> items;
+        for (const json& item : list) {
+            if (!item.is_string() || item.get_ref<const std::string&>().empty() ||
+                item.get_ref<const std::string&>().size() > maxLength)
+                return problem(key, "entry " + describeJsonValue(item) + " is not a non-empty string of at most " +
+                                        std::to_string(maxLength) + " bytes", allowed);
+            if (std::find(items.begin(), items.end(), item.get<std::string>()) == items.end())
+                items.push_back(item.get<std::string>());
+        }
+        access(s) = std::move(items);
+        return {};
+    };
+    return f;
+}
+
 // Positions: beyond 1e7 a float's step is ~1 unit and light/camera matrices fall apart (HARD_CASES 3).
 auto boundedPosition(double limit) {
     return [limit](double x, double y, double z) -> std::string {
@@ -475,6 +505,21 @@ std::vector<SettingsField> buildGlobalFields() {
     f.push_back(tagged(floatField("camera.fovYDeg", "Camera vertical field of view, degrees", 5, 150,
                                   [](auto& s) -> auto& { return s.camera.fovYDeg; }),
                        kInvalidatesCamera));
+
+    f.push_back(tagged(intField("camera.sceneCamera",
+                                "A camera of the scene's file by its index (`render` and the editor's Scene panel "
+                                "list them; the view's aspect ratio is the window's): it replaces autoFrame, position, target and fovYDeg. "
+                                "-1 = the free camera",
+                                -1, 1 << 20, {}, [](auto& s) -> auto& { return s.camera.sceneCamera; }),
+                       kInvalidatesCamera));
+
+    // what casts
+    f.push_back(tagged(stringListField("casters.excluded",
+                                       "Scene nodes whose meshes cast no shadow, by path (\"City/SkyBox\"; the "
+                                       "editor's Outliner lists them): each excludes its whole subtree from the "
+                                       "shadow maps and the accuracy reference. A path the scene lacks is a warning",
+                                       10000, 4096, [](auto& s) -> auto& { return s.casters.excluded; }),
+                       kView));
 
     f.push_back(tagged(enumField<ViewMode>(
                            "view",

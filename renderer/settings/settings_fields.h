@@ -17,7 +17,7 @@
 
 namespace shadowlab {
 
-enum class SettingsFieldKind { Bool, Int, Float, Enum, Vec3 };
+enum class SettingsFieldKind { Bool, Int, Float, Enum, Vec3, StringList };
 
 // What a change of a field makes stale (bit flags). Every change redraws the main pass; these say what else.
 enum Invalidates : unsigned {
@@ -34,7 +34,7 @@ struct SettingsField {
     std::string allowed;      // human text of what set() accepts, e.g. "[0, 1]" or "one of d16, d24, d32f"
     SettingsFieldKind kind = SettingsFieldKind::Float;
     double min = 0.0;                  // Int / Float: inclusive range (also a slider's range)
-    double max = 0.0;
+    double max = 0.0;                  // StringList: the most entries
     std::vector<std::string> choices;  // Enum: the names, in enum order
     std::vector<int> intChoices;       // Int restricted to a set (filter.kernel); empty = any integer in [min, max]
     unsigned invalidates = kInvalidatesNothingElse;  // Invalidates flags
@@ -58,7 +58,7 @@ struct SettingsField {
     std::string pattern() const;
 };
 
-// The global fields (ambient, useSceneLights, sampler, filter, camera, view), in preset order.
+// The global fields (ambient, useSceneLights, sampler, filter, camera, casters, view), in preset order.
 const std::vector<SettingsField>& globalSettingsFields();
 
 // Light `light`'s fields ("lights.<light>.*"), in preset order; light < kMaxLights. Setting a field of light

@@ -63,7 +63,8 @@ CasterSphere casterSphere(const GpuDraw& draw) {
 
 std::vector<CasterSphere> casterSpheres(const GpuScene& scene) {
     std::vector<CasterSphere> spheres;
-    for (const GpuDraw& draw : scene.draws()) spheres.push_back(casterSphere(draw));
+    for (const GpuDraw& draw : scene.draws())
+        if (draw.casts) spheres.push_back(casterSphere(draw));
     return spheres;
 }
 
@@ -93,6 +94,7 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     scene.bind();
     const Scene& model = scene.scene();
     for (const GpuDraw& draw : scene.draws()) {
+        if (!draw.casts) continue;  // its node is excluded (casters.excluded)
         if (!casterInVolume(casterSphere(draw), light)) {
             ++counts.castersSkipped;
             continue;

@@ -1,7 +1,7 @@
 #pragma once
 // The depth-only pass from the light into the shadow map: D3D-style depth bias through glPolygonOffsetClamp,
 // cull mode (flipped for mirrored instances), depth clamp, alpha-tested MASK casters, and casters outside the
-// light's volume skipped.
+// light's volume skipped. Draws that do not cast (GpuDraw::casts: casters.excluded) are never drawn.
 #include "frame/gpu_scene.h"
 #include "gl/gl_objects.h"
 #include "light/light_space.h"
@@ -16,7 +16,7 @@ namespace shadowlab {
 
 // A draw's bounding sphere, as the planner tests it against each view's volume (views/shadow_planner.h).
 CasterSphere casterSphere(const GpuDraw& draw);
-std::vector<CasterSphere> casterSpheres(const GpuScene& scene);
+std::vector<CasterSphere> casterSpheres(const GpuScene& scene);  // of the draws that cast
 
 // Clears a map to the far depth (1, or 0 reversed-Z): a view with no caster in its volume reads as lit everywhere.
 void clearShadowMap(const ShadowMap& map, bool reversedZ);

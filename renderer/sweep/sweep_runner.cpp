@@ -85,6 +85,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
 
     // Times and measures one point into r: nullopt when cancelled, else "" or why it failed.
     auto measurePoint = [&](const SweepPoint& point, SweepPointResult& r, std::size_t done) -> std::optional<std::string> {
+        if (std::string error = sceneCameraError(point.settings.camera, scene); !error.empty()) return error;
         if (castingLights(point.settings, scene).empty())
             return std::string("no light casts a shadow with these values (every light is off or has "
                                "castsShadows=false): nothing to time or measure");

@@ -106,6 +106,19 @@ expect_ok render-point-cross "$SHADOWLAB" render --scene builtin:textbook --set 
 expect_error no-light-3 "there is no light 3" "$SHADOWLAB" render --scene builtin:textbook --light 3 \
   --shadow-map-png m.png --width 64 --height 64 --out x.png
 
+# Issue 20: a file's cameras and what casts, through --set.
+CITY="$SOURCE_DIR/tests/data/scenes/sky_box_city.gltf"
+expect_ok render-scene-camera "$SHADOWLAB" render --scene "$CITY" --set camera.sceneCamera=0 \
+  --set 'casters.excluded=["Root/City/SkyBox","Root/City/Gone"]' --width 64 --height 48 --out street.png
+grep -q "camera 0: Street (perspective)" render-scene-camera.out && pass "render lists the file's cameras" \
+  || fail "no camera list in: $(cat render-scene-camera.out)"
+grep -q "camera 3 ('zero fov') refused" render-scene-camera.err && pass "a hostile camera is refused alone" \
+  || fail "no refusal in: $(cat render-scene-camera.err)"
+grep -q "no node 'Root/City/Gone'" render-scene-camera.err && pass "an unknown caster path is a warning" \
+  || fail "no unknown-path warning in: $(cat render-scene-camera.err)"
+expect_error scene-camera-range "camera.sceneCamera: 9 is not a camera of scene sky_box_city" "$SHADOWLAB" render \
+  --scene "$CITY" --set camera.sceneCamera=9 --width 32 --height 32 --out x.png
+
 # No command opens the editor; without a display it says so and exits non-zero (tests/e2e/editor_test.sh opens it).
 expect_error noargs "needs a display" "$SHADOWLAB"
 

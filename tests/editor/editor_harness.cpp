@@ -231,6 +231,7 @@ void EditorHarness::setKey(int key, bool down) {
     io.KeysDown[key] = down;
     io.KeyCtrl = io.KeysDown[keys::kLeftControl];
     io.KeyShift = io.KeysDown[keys::kLeftShift];
+    io.KeyAlt = io.KeysDown[keys::kLeftAlt];
 }
 
 void EditorHarness::pressKey(int key, bool ctrl, bool shift) {

@@ -106,6 +106,8 @@ Settings awkwardSettings() {
     s.camera.position = {-0.1f, 0.2f, 0.3f};
     s.camera.target = {1e-30f, 5e-39f, -0.0f};
     s.camera.fovYDeg = 59.999996f;
+    s.camera.sceneCamera = 3;
+    s.casters.excluded = {"City/SkyBox", "Ro\\/ot/#4", "\xc3\xa9t\xc3\xa9"};
     s.view = ViewMode::LightDepth;
     return s;
 }
@@ -140,7 +142,9 @@ TEST(Presets, JsonHasTheDocumentedShape) {
         return leaves;
     };
     EXPECT_EQ(leavesOf(j) - 4 + leavesOf(light), settingsFieldsOf(Settings{}).size());
-    EXPECT_EQ(j.size(), 4u + 3u + 3u + 1u);
+    EXPECT_EQ(j.size(), 4u + 3u + 4u + 1u);
+    EXPECT_EQ(j["camera"]["sceneCamera"], -1);
+    EXPECT_EQ(j["casters"]["excluded"], json::array());
 
     // The file text keeps Settings order and short floats.
     std::string text = presetToText(Settings{});

@@ -10,6 +10,7 @@ const std::vector<Panel>& panels() {
     static const std::vector<Panel> all = {
         {"Scene", Sidebar::Left, "Scene", drawScenePanel},
         {"Presets", Sidebar::Left, "Scene", drawPresetsPanel},  // last in its tab: its list takes the height left
+        {"Outliner", Sidebar::Left, "Outliner", drawOutlinerPanel},  // the file's nodes: what casts
         {"Lights", Sidebar::Left, "Lights", drawLightsPanel},
         {"Light", Sidebar::Left, "Lights", drawLightPanel, true},
         {"Projection", Sidebar::Left, "Lights", drawProjectionPanel, true},

@@ -9,6 +9,41 @@
 
 namespace shadowlab::editor {
 
+namespace {
+
+// "Free camera" and the file's cameras by name (by index when unnamed): choosing one moves the view to it and sets
+// camera.sceneCamera.
+void sceneCameraCombo(PanelContext& ctx) {
+    EditorState& state = ctx.state;
+    if (!state.scene) return;
+    const std::vector<SceneCamera>& cameras = state.scene->cameras;
+    const auto label = [&](int index) {
+        if (index < 0) return std::string("Free camera");
+        const SceneCamera& c = cameras[std::size_t(index)];
+        return std::to_string(index) + ": " + c.name + (c.orthographic ? " (orthographic)" : "");
+    };
+    const int chosen = state.settings.camera.sceneCamera;
+    const bool known = chosen >= -1 && chosen < int(cameras.size());
+    ImGui::SetNextItemWidth(-80.0f);
+    ImGui::BeginDisabled(cameras.empty() && chosen == -1);
+    if (ImGui::BeginCombo("camera", known ? label(chosen).c_str() : "(not in this scene)")) {
+        for (int i = -1; i < int(cameras.size()); ++i) {
+            if (ImGui::Selectable(label(i).c_str(), i == chosen)) ctx.actions.chooseSceneCamera(i);
+            state.controls.recordLastItem("scene.camera=" + std::to_string(i));
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::EndDisabled();
+    state.controls.recordLastItem("scene.camera");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", cameras.empty() ? "This scene's file has no cameras: the view is the free camera"
+                                                : "View from one of the file's cameras (camera.sceneCamera, saved with "
+                                                  "the preset; the aspect ratio is the view's). Moving the view "
+                                                  "leaves it");
+}
+
+}  // namespace
+
 void drawScenePanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
     if (state.scene)
@@ -47,6 +82,8 @@ void drawScenePanel(PanelContext& ctx) {
     }
     ImGui::EndDisabled();
     state.controls.recordLastItem("scene.recent");
+
+    sceneCameraCombo(ctx);
 
     if (state.loading) {
         const SceneLoadProgress& p = *state.loading;

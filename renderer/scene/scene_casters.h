@@ -1,0 +1,28 @@
+#pragma once
+// What casts shadows: the settings' excluded node paths (casters.excluded) applied to a scene's node hierarchy. The
+// shadow pass and the exact-visibility reference both take their casters from here, so a node left out of the maps
+// never blocks a reference ray either (every accuracy number compares like with like).
+#include "scene/scene.h"
+#include "settings/settings.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+// Per Scene::nodes: 1 when the node casts (neither it nor an ancestor is excluded).
+std::vector<char> castingNodes(const Scene& scene, const CasterSettings& casters);
+
+// Per Scene::instances: 1 when the instance casts (an instance of no node always does).
+std::vector<char> castingInstances(const Scene& scene, const CasterSettings& casters);
+
+// One warning per excluded path no node of the scene has ("casters.excluded: no node 'X' in scene S; ignored"):
+// a preset tuned on an older version of a file still loads.
+std::vector<std::string> unknownCasterPathWarnings(const Scene& scene, const CasterSettings& casters);
+
+// A scene's geometry fingerprint combined with its casting instances: what the maps and the reference are built from
+// (changes whenever either does).
+std::size_t withCasters(std::size_t sceneFingerprint, const std::vector<char>& castingInstances);
+
+}  // namespace shadowlab
