@@ -50,7 +50,7 @@ done
 
 # Extracted outside the trees (above) and run with them hidden.
 hide_trees "$SOURCE_DIR" "$BUILD_DIR"
-[ -z "$hidden_note" ] || echo "note: $hidden_note"
+[ -z "$hidden_note" ] && pass "source and build trees hidden from the extracted binary" || echo "note: $hidden_note"
 cd "$root"
 expect_ok deb-render hidden "$root/usr/bin/shadowlab" render --scene builtin:grazing --preset soft --width 64 --height 48 \
   --out render.png
