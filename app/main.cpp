@@ -179,10 +179,12 @@ int main(int argc, char** argv) {
     hardCmd->add_flag("--quick", hard.quick, "small maps and views, fewer sweep steps (ctest)");
     hardCmd->add_option("--json", hard.json, "write every case's rows as JSON");
     hardCmd->add_option("--out-dir", hard.outDir, "write the pictures (overlays, frame pairs) into this folder");
-    hardCmd->add_option("--scenes", hard.sharedScenes, "the ../shared/scenes folder (default: the build tree's link to it)");
+    hardCmd->add_option("--scenes", hard.sharedScenes,
+                        "the ../shared/scenes folder (default: the build tree's link to it)");
 
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
-    CLI::App* infoCmd = app.add_subcommand("info", "Print the shipped data folder, GL vendor / renderer / version and limits");
+    CLI::App* infoCmd =
+        app.add_subcommand("info", "Print the shipped data folder, GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
 
     try {
