@@ -183,7 +183,8 @@ int main(int argc, char** argv) {
     hardCmd->add_flag("--quick", hard.quick, "small maps and views, fewer sweep steps (ctest)");
     hardCmd->add_option("--json", hard.json, "write every case's rows as JSON");
     hardCmd->add_option("--out-dir", hard.outDir, "write the pictures (overlays, frame pairs) into this folder");
-    hardCmd->add_option("--scenes", hard.sharedScenes, "the ../shared/scenes folder (default: beside the source tree)");
+    hardCmd->add_option("--scenes", hard.sharedScenes,
+                        "the ../shared/scenes folder (default: the build tree's link to it)");
 
     cli::CheckOptions check;
     CLI::App* checkCmd = app.add_subcommand("check", "A CI gate: measure cases (a case file, or one from flags) against "
@@ -219,7 +220,8 @@ int main(int argc, char** argv) {
     }
 
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
-    CLI::App* infoCmd = app.add_subcommand("info", "Print GL vendor / renderer / version and limits");
+    CLI::App* infoCmd =
+        app.add_subcommand("info", "Print the shipped data folder, GL vendor / renderer / version and limits");
     CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
 
     try {

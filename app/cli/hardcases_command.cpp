@@ -7,6 +7,7 @@
 #include "frame/renderer.h"
 #include "hardcases/hard_case_runner.h"
 #include "settings/atomic_file.h"
+#include "settings/shipped_data.h"
 
 #include <filesystem>
 #include <iostream>
@@ -36,7 +37,15 @@ int runHardCases(const HardCasesOptions& options) {
     hardcases::HardCaseOptions caseOptions;
     caseOptions.quick = options.quick;
     caseOptions.outDir = options.outDir;
-    caseOptions.sharedScenes = options.sharedScenes.empty() ? SHADOWLAB_SHARED_SCENES : options.sharedScenes;
+    caseOptions.sharedScenes = options.sharedScenes;
+    if (caseOptions.sharedScenes.empty()) {
+        // A build tree links its data folder's shared-scenes to ../shared/scenes; an install has none (test data).
+        caseOptions.sharedScenes = (shippedData().tried / "shared-scenes").string();
+        if (!std::filesystem::is_directory(caseOptions.sharedScenes))
+            std::cerr << "note: no test scenes at " << caseOptions.sharedScenes
+                      << " (only a build tree links them): the cases that need them are not run; --scenes DIR names "
+                         "the ../shared/scenes folder\n";
+    }
     try {
         HeadlessContext context;
         AccuracyMeter meter;

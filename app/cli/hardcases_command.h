@@ -11,7 +11,7 @@ struct HardCasesOptions {
     bool quick = false;
     std::string json;
     std::string outDir;
-    std::string sharedScenes;  // --scenes DIR; default: the source tree's ../shared/scenes
+    std::string sharedScenes;  // --scenes DIR; default: <shipped data>/shared-scenes (a build tree's link to it)
 };
 
 int runHardCases(const HardCasesOptions& options);

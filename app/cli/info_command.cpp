@@ -3,12 +3,17 @@
 #include "context/gl_info.h"
 #include "context/headless_context.h"
 #include "scene/builtin_scenes.h"
+#include "settings/shipped_data.h"
 
 #include <iostream>
 
 namespace shadowlab::cli {
 
 int runInfo() {
+    // First, and without GL: an install that cannot find its presets says so even where no context starts.
+    const ShippedData& data = shippedData();
+    if (data.dir.empty()) std::cout << "shipped data: none (" << data.problem << ")\n";
+    else std::cout << "shipped data: " << data.dir.string() << "\n";
     try {
         HeadlessContext context;
         const GlInfo info = queryGlInfo();
@@ -29,7 +34,7 @@ int runInfo() {
         std::cerr << "error: " << e.what() << "\n";
         return 1;
     }
-    return 0;
+    return data.dir.empty() ? 1 : 0;
 }
 
 int runScenes() {

@@ -3,6 +3,7 @@
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
+#include "settings/shipped_data.h"
 
 #include <filesystem>
 #include <iostream>
@@ -12,13 +13,15 @@ namespace shadowlab::cli {
 std::string resolvePresetPath(const std::string& preset) {
     namespace fs = std::filesystem;
     if (fs::exists(preset)) return preset;
-    // Shipped presets: beside the binary's project (build tree) first, then the source tree it was built from.
-    for (const fs::path& dir : {fs::path(SHADOWLAB_PRESET_DIR)}) {
-        fs::path candidate = dir / preset;
-        if (candidate.extension() != ".json") candidate += ".json";
-        if (fs::exists(candidate)) return candidate.string();
+    const fs::path dir = shippedPresetsDir();
+    if (dir.empty()) {
+        // The load below says "no such file"; this says why a shipped name was not found either.
+        std::cerr << "note: --preset " << preset << ": " << shippedData().problem << "\n";
+        return preset;
     }
-    return preset;
+    fs::path candidate = dir / preset;
+    if (candidate.extension() != ".json") candidate += ".json";
+    return fs::exists(candidate) ? candidate.string() : preset;
 }
 
 std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides,

@@ -9,7 +9,8 @@
 
 namespace shadowlab::cli {
 
-// Resolves "soft" to <presets dir>/soft.json when no such file exists in the working directory.
+// Resolves "soft" to <shipped data>/presets/soft.json (settings/shipped_data.h) when no such file exists in the working
+// directory.
 std::string resolvePresetPath(const std::string& preset);
 
 // nullopt after printing the errors to stderr; warnings go to stderr too. A preset tuned on another scene than

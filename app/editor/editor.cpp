@@ -10,6 +10,7 @@
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
+#include "settings/shipped_data.h"
 #include "settings/user_config.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -61,7 +62,10 @@ Editor::Editor(EditorOptions options) : options_(std::move(options)) {
     state_.limits.maxTextureSize = renderer_->glInfo().maxTextureSize;
     state_.time = now();
 
-    if (options_.shippedPresetsDir.empty()) options_.shippedPresetsDir = SHADOWLAB_PRESET_DIR;
+    if (options_.shippedPresetsDir.empty()) {
+        options_.shippedPresetsDir = shippedPresetsDir().string();
+        if (options_.shippedPresetsDir.empty()) state_.say(shippedData().problem, true);
+    }
     if (options_.userPresetsDir.empty()) options_.userPresetsDir = userPresetsDir().string();
     if (options_.recentFilesPath.empty()) options_.recentFilesPath = recentFilesPath().string();
     state_.userPresetsDir = options_.userPresetsDir;

@@ -28,7 +28,7 @@ namespace shadowlab::editor {
 struct EditorOptions {
     std::string scene = kDefaultSceneSpec;  // "builtin:NAME" or a .gltf / .glb path
     std::string preset;                     // a preset path or a shipped preset's name; empty = "default"
-    std::string shippedPresetsDir;          // empty = the source tree's presets/
+    std::string shippedPresetsDir;          // empty = shippedPresetsDir() (see settings/shipped_data.h)
     std::string userPresetsDir;             // empty = userPresetsDir() (see settings/user_config.h)
     std::string recentFilesPath;            // empty = recentFilesPath(); "-" = do not remember
     std::string screenshotDir = "screenshots";

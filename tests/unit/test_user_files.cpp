@@ -1,7 +1,9 @@
 // The user's own files: config and preset folders from the environment, the recent-files list (order, limit,
-// duplicates, atomic JSON round trip, clear errors), and the preset catalog (shipped read-only + user folder).
+// duplicates, atomic JSON round trip, clear errors), the preset catalog (shipped read-only + user folder) and where a
+// binary finds its shipped data.
 #include "settings/preset_catalog.h"
 #include "settings/recent_files.h"
+#include "settings/shipped_data.h"
 #include "settings/user_config.h"
 
 #include <gtest/gtest.h>
@@ -215,4 +217,34 @@ TEST(PresetCatalog, MissingUserFolderAndSameFolderTwice) {
     EXPECT_EQ(twice.size(), 7u);
     for (const PresetEntry& e : twice) EXPECT_TRUE(e.readOnly);
     EXPECT_TRUE(listPresets("/nonexistent/a", "/nonexistent/b").empty());
+}
+
+// The shipped data is found from the binary's own folder: an installed prefix anywhere, nothing else.
+TEST(ShippedData, FoundBesideTheBinaryWhereverThePrefixIs) {
+    TempDir prefix;
+    fs::create_directories(prefix.path / "bin");
+    fs::create_directories(prefix.path / "share" / "shadowlab" / "presets");
+    const ShippedData found = findShippedData(prefix.path / "bin" / "shadowlab");
+    EXPECT_EQ(found.dir, prefix.path / "share" / "shadowlab");
+    EXPECT_TRUE(found.problem.empty()) << found.problem;
+}
+
+TEST(ShippedData, NoneFoundNamesThePathTriedAndTheBinary) {
+    TempDir prefix;
+    fs::create_directories(prefix.path / "bin");
+    fs::create_directories(prefix.path / "share" / "shadowlab");  // a data folder without presets/ does not count
+    const fs::path binary = prefix.path / "bin" / "shadowlab";
+    const ShippedData found = findShippedData(binary);
+    EXPECT_TRUE(found.dir.empty());
+    EXPECT_EQ(found.tried, prefix.path / "share" / "shadowlab");
+    EXPECT_NE(found.problem.find((prefix.path / "share" / "shadowlab" / "presets").string()), std::string::npos)
+        << found.problem;
+    EXPECT_NE(found.problem.find(binary.string()), std::string::npos) << found.problem;
+}
+
+// The test binary runs from the build tree (build/tests), whose share/shadowlab links to the source tree's presets.
+TEST(ShippedData, TheBuildTreeFindsTheSourcePresets) {
+    const ShippedData& data = shippedData();
+    ASSERT_TRUE(data.problem.empty()) << data.problem;
+    EXPECT_TRUE(fs::equivalent(shippedPresetsDir(), fs::path(SHADOWLAB_SOURCE_DIR) / "presets"));
 }
