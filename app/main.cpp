@@ -12,7 +12,7 @@
 #include "cli/sweep_command.h"
 #include "cli/tune_command.h"
 #include "editor_window/edit_command.h"
-#include "settings/settings_fields.h"
+#include "settings/settings_reference.h"
 
 #include <CLI/CLI.hpp>
 
@@ -20,7 +20,8 @@
 
 int main(int argc, char** argv) {
     using namespace shadowlab;
-    CLI::App app{"ShadowLab: tune shadow maps and see what each setting costs"};
+    // Named, so that --help and errors say "shadowlab", not the path it was started by (docs/ quote --help).
+    CLI::App app{"ShadowLab: tune shadow maps and see what each setting costs", "shadowlab"};
     app.require_subcommand(0, 1);
 
     cli::RenderOptions render;
@@ -222,7 +223,10 @@ int main(int argc, char** argv) {
     CLI::App* scenesCmd = app.add_subcommand("scenes", "List the built-in scenes");
     CLI::App* infoCmd =
         app.add_subcommand("info", "Print the shipped data folder, GL vendor / renderer / version and limits");
-    CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, allowed values and meaning");
+    CLI::App* keysCmd = app.add_subcommand("keys", "List every setting's preset key, type, default, allowed values, "
+                                                   "unit, what a change invalidates and meaning");
+    bool keysMarkdown = false;
+    keysCmd->add_flag("--markdown", keysMarkdown, "as Markdown tables: the settings reference of docs/settings.md");
 
     try {
         app.parse(argc, argv);
@@ -251,12 +255,7 @@ int main(int argc, char** argv) {
     if (*scenesCmd) return cli::runScenes();
     if (*infoCmd) return cli::runInfo();
     if (*keysCmd) {
-        // Light fields once, as "lights.#.<key>" (# = the light's index, 0..kMaxLights-1).
-        for (const SettingsField* field : settingsKeyListing())
-            std::cout << field->pattern() << "  " << field->allowed << "  " << field->description << "\n";
-        std::cout << "\nSchema-1 keys, still accepted:\n";
-        for (const SettingsField& alias : schema1Aliases())
-            std::cout << alias.key << "  = " << alias.aliasOf << "\n";
+        std::cout << (keysMarkdown ? settingsReferenceMarkdown() : settingsReferenceText());
         return 0;
     }
     // No subcommand: the editor on the built-in default scene.

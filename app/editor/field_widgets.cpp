@@ -116,6 +116,7 @@ void fieldHelp(const EditorState&, const char* key) {
     ImGui::TextUnformatted(field.key.c_str());
     ImGui::TextUnformatted(field.description.c_str());
     ImGui::TextDisabled("allowed: %s", field.allowed.c_str());
+    if (!field.unit.empty()) ImGui::TextDisabled("unit: %s", field.unit.c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }

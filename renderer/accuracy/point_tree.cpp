@@ -1,44 +1,50 @@
 #include "accuracy/point_tree.h"
 
-#include <algorithm>
+#include <nanoflann.hpp>
+
 #include <cmath>
 #include <limits>
 
 namespace shadowlab {
 
-PointTree::PointTree(std::vector<glm::dvec2> points) : points_(std::move(points)) { build(0, points_.size(), 0); }
+namespace {
 
-void PointTree::build(std::size_t begin, std::size_t end, int axis) {
-    if (end - begin <= 1) return;
-    const std::size_t mid = begin + (end - begin) / 2;
-    std::nth_element(points_.begin() + std::ptrdiff_t(begin), points_.begin() + std::ptrdiff_t(mid),
-                     points_.begin() + std::ptrdiff_t(end),
-                     [axis](const glm::dvec2& a, const glm::dvec2& b) { return a[axis] < b[axis]; });
-    build(begin, mid, 1 - axis);
-    build(mid + 1, end, 1 - axis);
-}
-
-void PointTree::search(std::size_t begin, std::size_t end, int axis, const glm::dvec2& q, double& best2) const {
-    if (begin >= end) return;
-    const std::size_t mid = begin + (end - begin) / 2;
-    const glm::dvec2 d = points_[mid] - q;
-    best2 = std::min(best2, d.x * d.x + d.y * d.y);
-    const double split = q[axis] - points_[mid][axis];
-    // Near side first; the far side only if the splitting line is closer than the best so far.
-    if (split < 0.0) {
-        search(begin, mid, 1 - axis, q, best2);
-        if (split * split < best2) search(mid + 1, end, 1 - axis, q, best2);
-    } else {
-        search(mid + 1, end, 1 - axis, q, best2);
-        if (split * split < best2) search(begin, mid, 1 - axis, q, best2);
+// nanoflann's dataset interface over the points.
+struct Cloud {
+    std::vector<glm::dvec2> points;
+    std::size_t kdtree_get_point_count() const { return points.size(); }
+    double kdtree_get_pt(std::size_t i, std::size_t axis) const { return points[i][glm::length_t(axis)]; }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+        return false;  // let the tree compute its bounding box
     }
-}
+};
+
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 2, std::size_t>;
+
+}  // namespace
+
+struct PointTree::Index {
+    Cloud cloud;  // declared before the tree, which is built from it in its constructor
+    Tree tree;
+    explicit Index(std::vector<glm::dvec2> points) : cloud{std::move(points)}, tree(2, cloud) {}
+};
+
+PointTree::PointTree(std::vector<glm::dvec2> points)
+    : index_(points.empty() ? nullptr : std::make_unique<Index>(std::move(points))) {}
+PointTree::~PointTree() = default;
+PointTree::PointTree(PointTree&&) noexcept = default;
+PointTree& PointTree::operator=(PointTree&&) noexcept = default;
+
+std::size_t PointTree::size() const { return index_ ? index_->cloud.points.size() : 0; }
 
 double PointTree::nearestDistance(const glm::dvec2& query) const {
-    if (points_.empty()) return std::numeric_limits<double>::infinity();
-    double best2 = std::numeric_limits<double>::infinity();
-    search(0, points_.size(), 0, query, best2);
-    return std::sqrt(best2);
+    if (!index_) return std::numeric_limits<double>::infinity();
+    const double q[2] = {query.x, query.y};
+    std::size_t nearest = 0;
+    double distance2 = std::numeric_limits<double>::infinity();
+    index_->tree.knnSearch(q, 1, &nearest, &distance2);
+    return std::sqrt(distance2);
 }
 
 }  // namespace shadowlab

@@ -1,26 +1,16 @@
 #include "image/png_text.h"
 
-#include <array>
+#include <zlib.h>
+
 #include <cstring>
 
 namespace shadowlab {
 
 namespace {
 
-// PNG's CRC-32 (ISO 3309, polynomial 0xedb88320) over the chunk type and data.
-std::uint32_t crc32(const std::uint8_t* data, std::size_t size, std::uint32_t crc = 0) {
-    static const std::array<std::uint32_t, 256> table = [] {
-        std::array<std::uint32_t, 256> t{};
-        for (std::uint32_t n = 0; n < 256; ++n) {
-            std::uint32_t c = n;
-            for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xedb88320u ^ (c >> 1) : c >> 1;
-            t[n] = c;
-        }
-        return t;
-    }();
-    crc = ~crc;
-    for (std::size_t i = 0; i < size; ++i) crc = table[(crc ^ data[i]) & 0xffu] ^ (crc >> 8);
-    return ~crc;
+// PNG's CRC-32 (ISO 3309) over the chunk type and data: zlib's.
+std::uint32_t chunkCrc(const std::uint8_t* data, std::size_t size) {
+    return std::uint32_t(crc32_z(0, data, size));
 }
 
 std::uint32_t readBE32(const std::uint8_t* p) {
@@ -36,7 +26,7 @@ std::vector<std::uint8_t> chunk(const char type[4], const std::vector<std::uint8
     appendBE32(out, std::uint32_t(data.size()));
     out.insert(out.end(), type, type + 4);
     out.insert(out.end(), data.begin(), data.end());
-    appendBE32(out, crc32(out.data() + 4, data.size() + 4));
+    appendBE32(out, chunkCrc(out.data() + 4, data.size() + 4));
     return out;
 }
 
@@ -97,7 +87,7 @@ std::optional<std::string> findPngText(const PngByteReader& read, std::uint64_t 
                 chunkBytes.resize(std::size_t(length) + 8);
                 if (!read(at + 4, chunkBytes.size(), chunkBytes.data())) return std::nullopt;
                 const std::uint8_t* data = chunkBytes.data() + 4;
-                if (crc32(chunkBytes.data(), std::size_t(length) + 4) == readBE32(data + length)) {
+                if (chunkCrc(chunkBytes.data(), std::size_t(length) + 4) == readBE32(data + length)) {
                     std::size_t p = keyLength;
                     if (tEXt) return std::string(reinterpret_cast<const char*>(data + p), length - p);
                     // iTXt: compression flag, method (0 = zlib), language tag NUL, translated keyword NUL, the text.

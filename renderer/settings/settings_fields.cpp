@@ -280,6 +280,11 @@ SettingsField tagged(SettingsField f, unsigned invalidates) {
     return f;
 }
 
+SettingsField inUnit(SettingsField f, std::string unit) {
+    f.unit = std::move(unit);
+    return f;
+}
+
 constexpr unsigned kView = kInvalidatesShadowView;
 constexpr unsigned kVariant = kInvalidatesVariant;
 
@@ -302,17 +307,19 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                  "|c| <= 1e6, length >= 1e-6", directionCheck,
                                  at([](auto& l) -> auto& { return l.direction; })),
                        kView));
-    f.push_back(tagged(vec3Field(keyOf("position"), "Spot or point light position, world units", "|c| <= 1e7",
-                                 boundedPosition(1e7), at([](auto& l) -> auto& { return l.position; })),
+    f.push_back(tagged(inUnit(vec3Field(keyOf("position"), "Spot or point light position", "|c| <= 1e7",
+                                        boundedPosition(1e7), at([](auto& l) -> auto& { return l.position; })),
+                              "world units"),
                        kView));
     {
         // A range is the far plane of the light's views, whose near plane is at least 1e-4: a range below 1e-3
         // leaves no depth between them, so it is refused here (naming the range), not later as "near >= far".
         constexpr double kMinRange = 1e-3;
         SettingsField range = floatField(keyOf("range"),
-                                         "Spot or point light range, world units (glTF's range): nothing beyond it is "
-                                         "lit or shadowed; 0 = no limit",
+                                         "Spot or point light range (glTF's range): nothing beyond it is lit or "
+                                         "shadowed; 0 = no limit",
                                          0, 1e7, at([](auto& l) -> auto& { return l.range; }));
+        range.unit = "world units";
         range.set = [key = range.key, allowed = range.allowed, set = range.set](Settings& s, const nlohmann::json& j) {
             if (j.is_number() && j.get<double>() > 0.0 && j.get<double>() < kMinRange)
                 return problem(key, describeJsonValue(j) + " is too short for a light's view (its near plane is at "
@@ -321,8 +328,9 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
         };
         f.push_back(tagged(std::move(range), kView));
     }
-    f.push_back(tagged(floatField(keyOf("spotConeDeg"), "Spot light full cone angle, degrees", 1, 170,
-                                  at([](auto& l) -> auto& { return l.spotConeDeg; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("spotConeDeg"), "Spot light full cone angle", 1, 170,
+                                         at([](auto& l) -> auto& { return l.spotConeDeg; })),
+                              "degrees"),
                        kView));
     f.push_back(floatField(keyOf("intensity"), "Light intensity (multiplies the direct term)", 0, 100,
                            at([](auto& l) -> auto& { return l.intensity; })));
@@ -341,30 +349,35 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                        kView | kVariant));
 
     // its shadow map
-    f.push_back(tagged(intField(keyOf("shadow.resolution"),
-                                "Shadow map size, texels per side (the GPU's GL_MAX_TEXTURE_SIZE may lower the limit)",
-                                16, 32768, {}, at([](auto& l) -> auto& { return l.shadow.resolution; })),
+    f.push_back(tagged(inUnit(intField(keyOf("shadow.resolution"),
+                                       "Shadow map size per side (the GPU's GL_MAX_TEXTURE_SIZE may lower the limit)",
+                                       16, 32768, {}, at([](auto& l) -> auto& { return l.shadow.resolution; })),
+                              "texels"),
                        kView | kVariant));  // lights of one size and format share a map array: the array count
     f.push_back(tagged(enumField<DepthFormat>(
                            keyOf("shadow.depthFormat"), "Depth texture format of the shadow map",
                            {{DepthFormat::D16, "d16"}, {DepthFormat::D24, "d24"}, {DepthFormat::D32F, "d32f"}},
                            at([](auto& l) -> auto& { return l.shadow.format; })),
                        kView | kVariant));
-    f.push_back(tagged(floatField(keyOf("shadow.depthBias"),
-                                  "DepthBias (GL polygon offset units): constant bias in steps of the depth format",
-                                  -1e6, 1e6, at([](auto& l) -> auto& { return l.shadow.depthBias; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("shadow.depthBias"), "DepthBias (GL polygon offset units): constant bias",
+                                         -1e6, 1e6, at([](auto& l) -> auto& { return l.shadow.depthBias; })),
+                              "steps r of the depth format"),
                        kView));
-    f.push_back(tagged(floatField(keyOf("shadow.slopeScaledDepthBias"),
-                                  "SlopeScaledDepthBias (GL polygon offset factor): times the polygon's max depth slope",
-                                  -100, 100, at([](auto& l) -> auto& { return l.shadow.slopeScaledDepthBias; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("shadow.slopeScaledDepthBias"),
+                                         "SlopeScaledDepthBias (GL polygon offset factor): bias that grows with the "
+                                         "polygon's slope in light space",
+                                         -100, 100,
+                                         at([](auto& l) -> auto& { return l.shadow.slopeScaledDepthBias; })),
+                              "times the polygon's max depth slope"),
                        kView));
-    f.push_back(tagged(floatField(keyOf("shadow.depthBiasClamp"),
-                                  "DepthBiasClamp (GL polygon offset clamp): max bias in [0,1] depth units, 0 = no clamp",
-                                  0, 1, at([](auto& l) -> auto& { return l.shadow.depthBiasClamp; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("shadow.depthBiasClamp"),
+                                         "DepthBiasClamp (GL polygon offset clamp): the largest bias, 0 = no clamp", 0,
+                                         1, at([](auto& l) -> auto& { return l.shadow.depthBiasClamp; })),
+                              "window depth"),
                        kView));
-    f.push_back(tagged(floatField(keyOf("shadow.normalOffset"),
-                                  "Lookup moved along the surface normal, in shadow-map texels", 0, 16,
-                                  at([](auto& l) -> auto& { return l.shadow.normalOffset; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("shadow.normalOffset"), "Lookup moved along the surface normal", 0, 16,
+                                         at([](auto& l) -> auto& { return l.shadow.normalOffset; })),
+                              "shadow-map texels"),
                        kVariant));  // NORMAL_OFFSET is compiled in only when some light uses it
     f.push_back(tagged(enumField<CullMode>(keyOf("shadow.cullMode"),
                                            "Faces culled in the shadow pass (never those of double-sided materials; "
@@ -393,15 +406,18 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                  "Fit ortho size, near and far (spot/point: near, far) to the scene's bounding sphere",
                                  at([](auto& l) -> auto& { return l.projection.autoFit; })),
                        kView));
-    f.push_back(tagged(floatField(keyOf("projection.orthoSize"),
-                                  "Full width of the square ortho volume, world units (no autoFit)", 1e-3, 1e7,
-                                  at([](auto& l) -> auto& { return l.projection.orthoSize; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("projection.orthoSize"),
+                                         "Full width of the square ortho volume (no autoFit)", 1e-3, 1e7,
+                                         at([](auto& l) -> auto& { return l.projection.orthoSize; })),
+                              "world units"),
                        kView));
-    f.push_back(tagged(floatField(keyOf("projection.near"), "Light near plane, world units (no autoFit)", 1e-4, 1e7,
-                                  at([](auto& l) -> auto& { return l.projection.nearPlane; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("projection.near"), "Light near plane (no autoFit)", 1e-4, 1e7,
+                                         at([](auto& l) -> auto& { return l.projection.nearPlane; })),
+                              "world units"),
                        kView));
-    f.push_back(tagged(floatField(keyOf("projection.far"), "Light far plane, world units (no autoFit)", 1e-3, 1e8,
-                                  at([](auto& l) -> auto& { return l.projection.farPlane; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("projection.far"), "Light far plane (no autoFit)", 1e-3, 1e8,
+                                         at([](auto& l) -> auto& { return l.projection.farPlane; })),
+                              "world units"),
                        kView));
     f.push_back(tagged(boolField(keyOf("projection.depthClamp"),
                                  "GL_DEPTH_CLAMP in the shadow pass: casters before the near plane still cast (directional lights; spot and point views clip at their near plane)",
@@ -473,9 +489,10 @@ std::vector<SettingsField> buildGlobalFields() {
                                                {AddressMode::ClampToBorder, "border"}},
                                               [](auto& s) -> auto& { return s.sampler.addressMode; }),
                        kInvalidatesSampler));
-    f.push_back(tagged(floatField("sampler.borderDepth",
-                                  "Depth returned outside the map with border addressing; 1 = lit", 0, 1,
-                                  [](auto& s) -> auto& { return s.sampler.borderDepth; }),
+    f.push_back(tagged(inUnit(floatField("sampler.borderDepth",
+                                         "Depth returned outside the map with border addressing; 1 = lit", 0, 1,
+                                         [](auto& s) -> auto& { return s.sampler.borderDepth; }),
+                              "window depth"),
                        kInvalidatesSampler));
 
     // filter
@@ -486,24 +503,29 @@ std::vector<SettingsField> buildGlobalFields() {
                                               {FilterKind::Poisson, "poisson"}},
                                              [](auto& s) -> auto& { return s.filter.kind; }),
                        kVariant | kInvalidatesSampler));
-    f.push_back(tagged(intField("filter.kernel", "PCF grid size, NxN samples", 1, 9, {1, 3, 5, 7, 9},
-                                [](auto& s) -> auto& { return s.filter.kernel; }),
+    f.push_back(tagged(inUnit(intField("filter.kernel", "PCF grid size: N x N taps", 1, 9, {1, 3, 5, 7, 9},
+                                       [](auto& s) -> auto& { return s.filter.kernel; }),
+                              "taps per side"),
                        kVariant));
-    f.push_back(floatField("filter.poissonRadius", "Poisson disk radius, shadow-map texels", 0.5, 16,
-                           [](auto& s) -> auto& { return s.filter.poissonRadius; }));
+    f.push_back(inUnit(floatField("filter.poissonRadius", "Poisson disk radius", 0.5, 16,
+                                  [](auto& s) -> auto& { return s.filter.poissonRadius; }),
+                       "shadow-map texels"));
 
     // camera
     f.push_back(tagged(boolField("camera.autoFrame", "Place the camera to frame the scene (position/target ignored)",
                                  [](auto& s) -> auto& { return s.camera.autoFrame; }),
                        kInvalidatesCamera));
-    f.push_back(tagged(vec3Field("camera.position", "Camera position, world units", "|c| <= 1e7",
-                                 boundedPosition(1e7), [](auto& s) -> auto& { return s.camera.position; }),
+    f.push_back(tagged(inUnit(vec3Field("camera.position", "Camera position", "|c| <= 1e7", boundedPosition(1e7),
+                                        [](auto& s) -> auto& { return s.camera.position; }),
+                              "world units"),
                        kInvalidatesCamera));
-    f.push_back(tagged(vec3Field("camera.target", "Point the camera looks at, world units", "|c| <= 1e7",
-                                 boundedPosition(1e7), [](auto& s) -> auto& { return s.camera.target; }),
+    f.push_back(tagged(inUnit(vec3Field("camera.target", "Point the camera looks at", "|c| <= 1e7",
+                                        boundedPosition(1e7), [](auto& s) -> auto& { return s.camera.target; }),
+                              "world units"),
                        kInvalidatesCamera));
-    f.push_back(tagged(floatField("camera.fovYDeg", "Camera vertical field of view, degrees", 5, 150,
-                                  [](auto& s) -> auto& { return s.camera.fovYDeg; }),
+    f.push_back(tagged(inUnit(floatField("camera.fovYDeg", "Camera vertical field of view", 5, 150,
+                                         [](auto& s) -> auto& { return s.camera.fovYDeg; }),
+                              "degrees"),
                        kInvalidatesCamera));
 
     f.push_back(tagged(intField("camera.sceneCamera",

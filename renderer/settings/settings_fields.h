@@ -32,6 +32,7 @@ struct SettingsField {
     std::string key;          // dotted preset key, e.g. "shadow.depthBias"; the part before the dot is the JSON group
     std::string description;  // one line, for --help, tooltips and docs
     std::string allowed;      // human text of what set() accepts, e.g. "[0, 1]" or "one of d16, d24, d32f"
+    std::string unit;         // what a number counts, e.g. "world units", "degrees"; "" for names, flags and ratios
     SettingsFieldKind kind = SettingsFieldKind::Float;
     double min = 0.0;                  // Int / Float: inclusive range (also a slider's range)
     double max = 0.0;                  // StringList: the most entries

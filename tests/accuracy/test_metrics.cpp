@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -137,7 +138,11 @@ TEST(PointTree, NearestDistanceMatchesBruteForce) {
     std::uniform_real_distribution<double> u(-100.0, 100.0);
     std::vector<glm::dvec2> points(1000);
     for (glm::dvec2& p : points) p = {u(random), u(random)};
-    const PointTree tree(points);
+    // Built in place and then moved, as ShadowBoundary keeps its trees (the tree refers to its points).
+    std::array<PointTree, 2> trees;
+    trees[1] = PointTree(points);
+    const PointTree tree = std::move(trees[1]);
+    EXPECT_EQ(tree.size(), points.size());
     for (int q = 0; q < 300; ++q) {
         const glm::dvec2 query(u(random) * 1.5, u(random) * 1.5);
         double best = std::numeric_limits<double>::infinity();
@@ -145,6 +150,7 @@ TEST(PointTree, NearestDistanceMatchesBruteForce) {
         EXPECT_DOUBLE_EQ(tree.nearestDistance(query), best);
     }
     EXPECT_TRUE(std::isinf(PointTree().nearestDistance({0.0, 0.0})));
+    EXPECT_TRUE(trees[0].empty());
 }
 
 class HiddenBoundary : public GlTest {};
