@@ -22,9 +22,9 @@ struct Camera {
     glm::dmat4 projection(double aspect) const;
 };
 
-// The camera the settings ask for: their position/target, or (camera.autoFrame) one looking from the scene's
-// preferred side whose view the scene's vertices fill: the projected hull just fits the limiting dimension of a
-// view of `aspect` (width / height), with a small margin, centred. Near/far always follow the scene's size so depth
+// The camera the settings ask for: their position/target, or (camera.autoFrame) the scene's own viewpoint where it
+// has one, else one looking from the scene's preferred side whose view the scene's vertices fill: the projected hull
+// just fits the limiting dimension of a view of `aspect` (width / height), with a small margin, centred. Near/far always follow the scene's size so depth
 // precision suits it.
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect);
 

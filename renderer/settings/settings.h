@@ -90,7 +90,7 @@ struct FilterSettings {
 };
 
 struct CameraSettings {
-    bool autoFrame = true;  // look from the scene's side, its vertices filling the view (position/target ignored)
+    bool autoFrame = true;  // the scene's viewpoint, else its vertices filling the view (position/target ignored)
     // Double: a scene 1e6 from the origin must still move when the camera moves 1 mm (a float's step there is 6 cm).
     glm::dvec3 position{8.0, 6.0, 10.0};
     glm::dvec3 target{0.0, 0.0, 0.0};
