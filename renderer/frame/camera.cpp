@@ -149,7 +149,10 @@ Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspe
         return sceneCameraView(scene.cameras[std::size_t(settings.sceneCamera)], bounds);
     Camera camera;
     camera.fovYDeg = settings.fovYDeg;
-    if (settings.autoFrame) {
+    if (settings.autoFrame && scene.viewpoint) {
+        camera.position = scene.viewpoint->position;
+        camera.target = scene.viewpoint->target;
+    } else if (settings.autoFrame) {
         // A three-quarter view from above (by default across the default light, so shadows fall to the side, not
         // behind the objects), moved so the scene's vertices fill the frame.
         const glm::dvec3 center = bounds.centreOrOrigin();

@@ -32,10 +32,10 @@ struct Camera {
 
 // The camera the settings ask for: the scene's camera camera.sceneCamera (its projection and near/far as the file
 // gives them, an infinite far plane replaced by the scene's reach; the aspect is `aspect`), else their
-// position/target, or (camera.autoFrame) one looking from the scene's preferred side whose view the scene's vertices
-// fill: the projected hull just fits the limiting dimension of a view of `aspect` (width / height), with a small
-// margin, centred. The free camera's near/far follow the scene's size so depth precision suits it. A sceneCamera
-// the scene lacks (see sceneCameraError) gives the free camera.
+// position/target, or (camera.autoFrame) the scene's own viewpoint where it has one, else one looking from the
+// scene's preferred side whose view the scene's vertices fill: the projected hull just fits the limiting dimension of
+// a view of `aspect` (width / height), with a small margin, centred. The free camera's near/far follow the scene's
+// size so depth precision suits it. A sceneCamera the scene lacks (see sceneCameraError) gives the free camera.
 Camera cameraFor(const CameraSettings& settings, const Scene& scene, double aspect);
 
 // "" when camera.sceneCamera is -1 or names one of the scene's cameras, else the error naming the key, the index and

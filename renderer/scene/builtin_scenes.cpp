@@ -309,6 +309,120 @@ Scene courtyard() {
     return scene;
 }
 
+// A fixed hash of three integers to [0, 1): the city's variety, the same on every machine (no seeded generator).
+float cityHash(int a, int b, int c) {
+    std::uint32_t h = std::uint32_t(a) * 73856093u ^ std::uint32_t(b) * 19349663u ^ std::uint32_t(c) * 83492791u;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    return float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+void addBox(Scene& scene, const char* name, int material, const glm::vec3& center, const glm::vec3& size) {
+    MeshBuilder box(name, material);
+    box.box(center, size);
+    addObject(scene, std::move(box));
+}
+
+// One block's buildings on the lots of its inner square; `centre` is the block's centre on the ground.
+void addCityBuildings(Scene& scene, int i, int j, const glm::vec3& centre, int material) {
+    const float inner = kCityBlockSize - 2.0f * kCitySidewalkWidth;
+    const int lotsX = 1 + int(cityHash(i, j, 1) * 3.0f), lotsZ = 1 + int(cityHash(i, j, 2) * 3.0f);
+    // Taller toward the city's centre: 1 at the edge, up to 3 in the middle.
+    const float r = glm::length(glm::vec2(centre.x, centre.z)) / (0.5f * kCityBlocks * kCityPeriod);
+    const float downtown = 1.0f + 2.0f * std::exp(-4.0f * r * r);
+    const float lotX = inner / float(lotsX), lotZ = inner / float(lotsZ);
+    for (int a = 0; a < lotsX; ++a) {
+        for (int b = 0; b < lotsZ; ++b) {
+            const int lot = 16 * a + b;
+            const float height = (8.0f + 22.0f * cityHash(i, j, 100 + lot)) * downtown;
+            const bool tower = cityHash(i, j, 200 + lot) < 0.06f;
+            const float h = std::min(tower ? 2.2f * height + 20.0f : height, kCityMaxHeight);
+            const glm::vec3 c(centre.x - 0.5f * inner + (float(a) + 0.5f) * lotX, 0.0f,
+                              centre.z - 0.5f * inner + (float(b) + 0.5f) * lotZ);
+            addBox(scene, tower ? "tower" : "building", material, c + glm::vec3(0.0f, kCityCurbHeight + 0.5f * h, 0.0f),
+                   {lotX, h, lotZ});
+            if (tower) {  // a narrower top, a tenth of the height again (still under kCityMaxHeight)
+                const float top = std::min(0.1f * h, kCityMaxHeight - h);
+                if (top > 1.0f)
+                    addBox(scene, "tower-top", material, c + glm::vec3(0.0f, kCityCurbHeight + h + 0.5f * top, 0.0f),
+                           {0.6f * lotX, top, 0.6f * lotZ});
+            }
+        }
+    }
+}
+
+// The furniture of one sidewalk of the street x = 0 beside a block: `side` = -1 (x < 0) or +1, `z` the block's
+// centre. Everything stands on the sidewalk (y = kCityCurbHeight).
+void addCityFurniture(Scene& scene, float side, float z, int metal, int wood) {
+    const float curb = 0.5f * kCityStreetWidth, y0 = kCityCurbHeight;
+    for (const float dz : kCityLampOffsets) {
+        const float x = side * (curb + kCityLampCurb), w = kCityLampPoleWidth;
+        addBox(scene, "lamp-post", metal, {x, y0 + 0.5f * kCityLampHeight, z + dz}, {w, kCityLampHeight, w});
+        const float arm = 1.5f;  // over the road, just under the pole's top
+        addBox(scene, "lamp-arm", metal, {x - side * (0.5f * arm + 0.5f * w), y0 + kCityLampHeight - 0.1f, z + dz},
+               {arm, 0.08f, 0.08f});
+        addBox(scene, "lamp-head", metal, {x - side * (arm + 0.2f), y0 + kCityLampHeight - 0.2f, z + dz},
+               {0.6f, 0.15f, 0.3f});
+    }
+    // A bench along the street near the facade, its back to the building: seat, back, two end legs.
+    const float bx = side * (curb + kCitySidewalkWidth - 1.0f), bz = z + kCityBenchOffset;
+    const float seatDepth = 0.45f, seat = kCityBenchSeatHeight;
+    addBox(scene, "bench-seat", wood, {bx, y0 + seat - 0.03f, bz}, {seatDepth, 0.06f, kCityBenchLength});
+    addBox(scene, "bench-back", wood, {bx + side * 0.5f * seatDepth, y0 + seat + 0.25f, bz},
+           {0.05f, 0.4f, kCityBenchLength});
+    for (const float end : {-1.0f, 1.0f})
+        addBox(scene, "bench-leg", metal, {bx, y0 + 0.5f * (seat - 0.06f), bz + end * 0.4f * kCityBenchLength},
+               {seatDepth, seat - 0.06f, 0.06f});
+    // Bollards along the curb at both corners of the block.
+    for (const float corner : {-1.0f, 1.0f}) {
+        for (int k = 0; k < kCityBollardsPerCorner; ++k) {
+            const float along = 0.5f * kCityBlockSize - 1.0f - 1.5f * float(k);
+            addBox(scene, "bollard", metal, {side * (curb + 0.4f), y0 + 0.5f * kCityBollardHeight, z + corner * along},
+                   {kCityBollardWidth, kCityBollardHeight, kCityBollardWidth});
+        }
+    }
+}
+
+Scene city() {
+    Scene scene = baseScene("city");
+    scene.materials[0].baseColorFactor = {0.42f, 0.42f, 0.44f, 1.0f};  // asphalt
+    scene.materials[1].baseColorFactor = {0.3f, 0.32f, 0.33f, 1.0f};   // painted metal
+    const int building = int(scene.materials.size());
+    scene.materials.push_back(opaque("building", {0.78f, 0.72f, 0.62f, 1.0f}));
+    const int sidewalk = int(scene.materials.size());
+    scene.materials.push_back(opaque("sidewalk", {0.66f, 0.65f, 0.62f, 1.0f}));
+    const int wood = int(scene.materials.size());
+    scene.materials.push_back(opaque("wood", {0.55f, 0.36f, 0.2f, 1.0f}));
+
+    MeshBuilder ground("floor", 0);
+    const float g = 0.5f * kCityGroundSize;
+    ground.quad({0, 0, 0}, {g, 0, 0}, {0, 0, -g});  // cross(+x, -z) = +y
+    addObject(scene, std::move(ground));
+    const float first = -0.5f * float(kCityBlocks - 1) * kCityPeriod;
+    for (int i = 0; i < kCityBlocks; ++i) {
+        for (int j = 0; j < kCityBlocks; ++j) {
+            const glm::vec3 c(first + float(i) * kCityPeriod, 0.0f, first + float(j) * kCityPeriod);
+            addBox(scene, "sidewalk", sidewalk, c + glm::vec3(0.0f, 0.5f * kCityCurbHeight, 0.0f),
+                   {kCityBlockSize, kCityCurbHeight, kCityBlockSize});
+            addCityBuildings(scene, i, j, c, building);
+        }
+    }
+    // The street x = 0 runs between block columns kCityBlocks / 2 - 1 and kCityBlocks / 2.
+    for (int j = 0; j < kCityBlocks; ++j)
+        for (const float side : {-1.0f, 1.0f}) addCityFurniture(scene, side, first + float(j) * kCityPeriod, 1, wood);
+
+    SceneLight sun;
+    sun.name = "sun";
+    sun.direction = glm::normalize(kCitySunDir);
+    sun.color = {1.0f, 0.93f, 0.8f};
+    scene.lights.push_back(sun);
+    scene.viewpoint = Scene::Viewpoint{glm::dvec3(kCityEye), glm::dvec3(kCityEyeTarget)};
+    return scene;
+}
+
 struct Entry {
     const char* name;
     const char* description;
@@ -325,6 +439,8 @@ constexpr Entry kScenes[] = {
     {"room", "a closed room lit by a point light at its centre, a pillar and a table: cube-map seams cross the "
              "floor and walls", room},
     {"courtyard", "buildings and thin posts lit by a sun, two spot lights and a point-light lantern", courtyard},
+    {"city", "2 km of box buildings on a street grid seen from eye height in a street, a low sun; lamp posts, "
+             "benches and bollards thinner than a scene-fitted map's texel", city},
 };
 
 const Entry* find(const std::string& name) {

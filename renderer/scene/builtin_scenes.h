@@ -157,5 +157,42 @@ inline constexpr float kCourtyardSpotRange = 20.0f;
 inline constexpr glm::vec3 kCourtyardLantern{0.0f, 3.0f, 0.0f};  // 0.5 above the posts' tops
 inline constexpr float kCourtyardLanternRange = 14.0f;           // reaches the buildings' walls
 
+// "city": about 2 km of box buildings on a street grid, seen from eye height in a street, lit by a low sun. A
+// 2048^2 map fitted to it has texels of 1.4 world units, wider than the street furniture near the eye (hard for a
+// scene-fitted map; what cascades are for). The ground (material "floor") is a kCityGroundSize square at y = 0.
+// kCityBlocks x kCityBlocks blocks, kCityBlockSize on a side, kCityStreetWidth of road between them: block (i, j)
+// has its centre at ((i - (n - 1) / 2) * period, 0, (j - (n - 1) / 2) * period), so streets run along x = k * period
+// and z = k * period. Each block is a sidewalk slab kCityCurbHeight high whose inner square (kCitySidewalkWidth in
+// from its edge) is cut into 1-3 x 1-3 lots, one box building each; heights come from a fixed hash of the block and
+// lot (the same city on every machine), taller toward the centre, some towers with a narrower top.
+inline constexpr int kCityBlocks = 20;
+inline constexpr float kCityBlockSize = 80.0f;
+inline constexpr float kCityStreetWidth = 20.0f;
+inline constexpr float kCityPeriod = kCityBlockSize + kCityStreetWidth;
+static_assert(kCityBlocks % 2 == 0, "an even block count puts a street on x = 0, where the eye stands");
+inline constexpr float kCitySidewalkWidth = 4.0f;
+inline constexpr float kCityCurbHeight = 0.15f;
+inline constexpr float kCityGroundSize = 2000.0f;  // the blocks reach +-990
+inline constexpr float kCityMaxHeight = 160.0f;  // no building is taller (towers at the centre)
+// The viewpoint (Scene::viewpoint): eye height on the road of the street x = 0, looking down it toward -z.
+inline constexpr glm::vec3 kCityEye{-5.0f, 1.7f, 440.0f};
+inline constexpr glm::vec3 kCityEyeTarget{-1.0f, 1.2f, 390.0f};
+// Street furniture on both sidewalks of the street x = 0, along its whole length, each piece one box per mesh:
+// lamp posts ("lamp-post" pole, "lamp-arm", "lamp-head") at block centre + kCityLampOffsets along z, kCityLampCurb
+// in from the curb; benches ("bench-seat", "bench-back", "bench-leg") at block centre + kCityBenchOffset, facing the
+// street; bollards ("bollard") in a row along the curb at each block corner.
+inline constexpr float kCityLampOffsets[] = {-30.0f, 0.0f, 30.0f};
+inline constexpr float kCityLampCurb = 0.6f;
+inline constexpr float kCityLampHeight = 6.0f;  // above the sidewalk
+inline constexpr float kCityLampPoleWidth = 0.16f;
+inline constexpr float kCityBenchOffset = -34.0f;  // in view of the eye, clear of the bollards
+inline constexpr float kCityBenchLength = 1.8f;
+inline constexpr float kCityBenchSeatHeight = 0.45f;
+inline constexpr int kCityBollardsPerCorner = 3;
+inline constexpr float kCityBollardWidth = 0.2f;
+inline constexpr float kCityBollardHeight = 0.9f;
+// The sun (Scene::lights[0], directional): about 33 degrees above the horizon, behind the eye, shining down the street.
+inline constexpr glm::vec3 kCitySunDir{-0.25f, -0.55f, -0.8f};  // travels toward -z (not normalized)
+
 }  // namespace builtin
 }  // namespace shadowlab

@@ -122,6 +122,14 @@ struct Scene {
     glm::vec3 viewDirection = kDefaultViewDirection;
     static constexpr glm::vec3 kDefaultViewDirection{0.4921f, 0.5905f, -0.6397f};
 
+    // Where the scene is meant to be seen from, when framing it whole shows nothing of interest (builtin:city: eye
+    // height in a street of a 2 km city). When set, an auto-framed camera stands here (frame/camera.h).
+    struct Viewpoint {
+        glm::dvec3 position{0.0};
+        glm::dvec3 target{0.0, 0.0, -1.0};
+    };
+    std::optional<Viewpoint> viewpoint;
+
     // World-space bounds over every instance's finite vertices, and viewDirection (cached by computeBounds()).
     Bounds bounds;
     void computeBounds();

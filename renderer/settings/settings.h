@@ -24,7 +24,7 @@ struct ShadowMapSettings {
     int resolution = 2048;              // square map, texels per side
     DepthFormat format = DepthFormat::D32F;
     float depthBias = 2.0f;             // D3D DepthBias: units of the format's smallest depth step
-    float slopeScaledDepthBias = 2.0f;  // D3D SlopeScaledDepthBias: times the polygon's max depth slope
+    float slopeScaledDepthBias = 1.0f;  // D3D SlopeScaledDepthBias: times the polygon's max depth slope
     float depthBiasClamp = 0.0f;        // D3D DepthBiasClamp: max |bias| in depth units; 0 = no clamp
     float normalOffset = 0.5f;          // lookup moved along the normal, in shadow-map texels (world size)
     // None: the map holds every caster, as the reference does. Back loses single-sided roofs lit from above (91 %
@@ -35,7 +35,8 @@ struct ShadowMapSettings {
     bool reversedZ = false;
     // Receiver-plane depth bias (Isidoro, GDC 2006): each PCF / Poisson tap compares the depth of the receiver's plane
     // at that tap, not the centre's, so wide kernels need no slope bias of their own. Directional and spot lights.
-    bool receiverPlaneBias = false;
+    // On by default: with it the default's slope 1 is clean on every built-in and ../shared scene (docs/accuracy.md).
+    bool receiverPlaneBias = true;
 
     bool operator==(const ShadowMapSettings&) const = default;
 };
@@ -108,7 +109,7 @@ struct FilterSettings {
 };
 
 struct CameraSettings {
-    bool autoFrame = true;  // look from the scene's side, its vertices filling the view (position/target ignored)
+    bool autoFrame = true;  // the scene's viewpoint, else its vertices filling the view (position/target ignored)
     // Double: a scene 1e6 from the origin must still move when the camera moves 1 mm (a float's step there is 6 cm).
     glm::dvec3 position{8.0, 6.0, 10.0};
     glm::dvec3 target{0.0, 0.0, 0.0};

@@ -439,17 +439,19 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                   "distances between the camera's near plane and the shadow distance",
                                   0, 1, at([](auto& l) -> auto& { return l.projection.splitLambda; })),
                        kView));
-    f.push_back(tagged(vec3Field(keyOf("projection.splits"),
-                                 "Manual split distances from the camera, world units, increasing: where cascade 0 "
-                                 "ends, then 1, then 2 (those beyond the cascade count are ignored); [0, 0, 0] = the "
-                                 "practical scheme (splitLambda) decides",
-                                 "each in [0, 1e7]", manualSplitsCheck,
-                                 at([](auto& l) -> auto& { return l.projection.splits; })),
+    f.push_back(tagged(inUnit(vec3Field(keyOf("projection.splits"),
+                                        "Manual split distances from the camera, increasing: where cascade 0 ends, "
+                                        "then 1, then 2 (those beyond the cascade count are ignored); [0, 0, 0] = the "
+                                        "practical scheme (splitLambda) decides",
+                                        "each in [0, 1e7]", manualSplitsCheck,
+                                        at([](auto& l) -> auto& { return l.projection.splits; })),
+                              "world units"),
                        kView));
-    f.push_back(tagged(floatField(keyOf("projection.shadowDistance"),
-                                  "How far from the camera cascaded shadows reach, world units (beyond: lit); 0 = the "
-                                  "camera's far plane",
-                                  0, 1e7, at([](auto& l) -> auto& { return l.projection.shadowDistance; })),
+    f.push_back(tagged(inUnit(floatField(keyOf("projection.shadowDistance"),
+                                         "How far from the camera cascaded shadows reach (beyond: lit); 0 = the "
+                                         "camera's far plane",
+                                         0, 1e7, at([](auto& l) -> auto& { return l.projection.shadowDistance; })),
+                              "world units"),
                        kView));
     f.push_back(tagged(floatField(keyOf("projection.blendBand"),
                                   "Share of each cascade's depth range where it fades into the next (0 = a hard seam)",
