@@ -1,5 +1,7 @@
 #include "cli/check_command.h"
 
+#include "frame/camera.h"
+
 #include "accuracy/check_limits.h"
 #include "accuracy/flicker.h"
 #include "accuracy/light_isolation.h"
@@ -250,11 +252,15 @@ int runCheck(const CheckOptions& options) {
             const auto caseStart = std::chrono::steady_clock::now();
             if (loadedSpec != cases[i].scene || !loaded.scene) {
                 meter.sceneChanged();
-                progress.above([&] { loaded = loadSceneForCommand(cases[i].scene); });
+                progress.above([&] { loaded = loadSceneForCommand(cases[i].scene, {}); });
                 loadedSpec = cases[i].scene;
             }
+            // Each case's camera.sceneCamera against the scene (consecutive cases share one load).
+            const std::string cameraError = loaded.scene ? sceneCameraError(settings[i].camera, *loaded.scene) : "";
             if (!loaded.scene)
                 o.error = loaded.error;
+            else if (!cameraError.empty())
+                o.error = cameraError;
             else
                 measureCase(o, settings[i], *loaded.scene, meter, accuracyProgress, outDir);
             o.seconds = secondsSince(caseStart);
