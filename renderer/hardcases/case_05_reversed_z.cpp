@@ -92,11 +92,12 @@ void runReversedZ(CaseContext& context, CaseResult& result) {
     const int width = context.pick(320, 160), height = context.pick(180, 90);
     for (bool reversedZ : {false, true}) {
         context.reversedZ = reversedZ;
-        Settings s;  // the default bias: DepthBias 2, slope 2, half a texel of normal offset
+        Settings s;  // the default bias: DepthBias 2, slope 1, half a texel of normal offset, the receiver's plane
         const AccuracyReport biased = context.measure(textbook, s, width, height, reversedZ ? "bias-reversed" : "");
         s.lights[0].shadow.depthBias = 0.0f;
         s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
         s.lights[0].shadow.normalOffset = 0.0f;
+        s.lights[0].shadow.receiverPlaneBias = false;
         const AccuracyReport bare = context.measure(textbook, s, width, height);
         if (!biased.ok || !bare.ok) throw std::runtime_error(biased.ok ? bare.error : biased.error);
         result.check(std::string(reversedZ ? "reversed-Z" : "normal") + ": acne with the default bias (without any: " +

@@ -172,6 +172,7 @@ TEST_F(BiasTunerTest, GrazingWithABiasClampNeverAcceptsFaintAcne) {
     acceptedByVersion1.lights[0].shadow.depthBias = 0.0f;
     acceptedByVersion1.lights[0].shadow.slopeScaledDepthBias = 0.0f;
     acceptedByVersion1.lights[0].shadow.normalOffset = 1.0f;
+    acceptedByVersion1.lights[0].shadow.receiverPlaneBias = false;  // version 1's time had no receiver plane
     const AccuracyReport faint = meter.measure(scene, acceptedByVersion1, camera, 640, 360);
     ASSERT_TRUE(faint.ok) << faint.error;
     saveOverlay(faint, "grazing-clamp-faint");

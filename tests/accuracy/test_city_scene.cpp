@@ -22,7 +22,8 @@ constexpr int kHeight = 360;
 
 // The pixel (row 0 = top) where the camera sees world point p, or {-1, -1} off screen.
 glm::ivec2 pixelOf(const Camera& camera, const glm::dvec3& p) {
-    const glm::dvec4 clip = camera.projection(double(kWidth) / kHeight) * camera.view(glm::dvec3(0.0)) * glm::dvec4(p, 1.0);
+    const glm::dmat4 viewProjection = camera.projection(double(kWidth) / kHeight) * camera.view(glm::dvec3(0.0));
+    const glm::dvec4 clip = viewProjection * glm::dvec4(p, 1.0);
     if (clip.w <= 0.0) return {-1, -1};
     const double x = (clip.x / clip.w * 0.5 + 0.5) * kWidth, y = (0.5 - clip.y / clip.w * 0.5) * kHeight;
     if (x < 0.0 || y < 0.0 || x >= kWidth || y >= kHeight) return {-1, -1};
@@ -84,8 +85,8 @@ TEST_F(CityScene, AFittedMapsTexelIsWiderThanTheLampPostsNearTheEyeAndTheirShado
     const AccuracyReport r = meter.measure(scene, settings, camera, kWidth, kHeight);
     ASSERT_TRUE(r.ok) << r.error;
     saveOverlay(r, "city-default");
-    std::printf("city, default preset under its sun, %dx%d: texel %.3f world units, acne %.3f %%, leak %.3f %%, wrong %.3f %%, "
-                "edge error %.1f texels = %.1f screen pixels\n",
+    std::printf("city, default preset under its sun, %dx%d: texel %.3f world units, acne %.3f %%, leak %.3f %%, "
+                "wrong %.3f %%, edge error %.1f texels = %.1f screen pixels\n",
                 kWidth, kHeight, r.texelWorldSize, r.acnePercent, r.leakPercent, r.wrongPercent,
                 r.edgeErrorP95Texels, r.edgeErrorP95ScreenPixels);
     EXPECT_NEAR(r.texelWorldSize, 1.4, 0.1);

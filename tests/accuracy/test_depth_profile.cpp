@@ -28,6 +28,7 @@ Settings zeroBias(Settings s) {
     s.lights[0].shadow.depthBias = 0.0f;
     s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
     s.lights[0].shadow.normalOffset = 0.0f;
+    s.lights[0].shadow.receiverPlaneBias = false;  // the default compares each tap with the receiver's plane
     return s;
 }
 

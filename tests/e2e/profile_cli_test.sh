@@ -12,7 +12,8 @@ unset DISPLAY WAYLAND_DISPLAY
 json() { python3 -c "import json,sys; d=json.load(open('$1')); print(eval(sys.argv[1]))" "$2"; }
 
 view=(--scene builtin:grazing --preset default --width 640 --height 360)
-zero=(--set shadow.depthBias=0 --set shadow.slopeScaledDepthBias=0 --set shadow.normalOffset=0)
+zero=(--set shadow.depthBias=0 --set shadow.slopeScaledDepthBias=0 --set shadow.normalOffset=0
+      --set shadow.receiverPlaneBias=false)  # every bias term off (the default compares the receiver's plane)
 line=(--from 200,250 --to 260,250)
 expect_ok profile-acne "$SHADOWLAB" profile "${view[@]}" "${zero[@]}" "${line[@]}" --out acne.png --json acne.json
 grep -q "61 samples, 61 on surfaces" profile-acne.out && pass "61 samples along the line" \

@@ -40,7 +40,7 @@ TEST_F(CameraView, AMillimetreMoveAtAMillionUnitsChangesThePicture) {
     long changed = 0;
     for (std::size_t i = 0; i < before.rgba.size(); i += 4) changed += before.rgba[i] != after.rgba[i];
     // The edge runs across the whole view; moving it ~3 rows changes at least two rows of pixels.
-    EXPECT_GT(changed, 2 * 240) << "a float camera at 1e6 has a 6 cm step: 1 mm changes nothing";
+    EXPECT_GE(changed, 2 * 240) << "a float camera at 1e6 has a 6 cm step: 1 mm changes nothing";
     EXPECT_LT(changed, 240 * 240 / 4) << "the picture moved, it did not fall apart";
 
     // HARD_CASES 3: the same view of the scene at the origin is the same picture (within an edge pixel's rounding).

@@ -32,6 +32,7 @@ TEST_F(ReceiverPlaneVariant, OnlySpreadingFiltersOnDirectionalAndSpotLightsCompi
         set(s, std::string("filter.kind=") + c.filter);
         set(s, std::string("lights.0.type=") + c.type);
         set(s, "lights.0.position=3,6,2");
+        set(s, "shadow.receiverPlaneBias=false");  // on in the default preset
         Renderer renderer;
         const View off = renderView(renderer, scene, s, 64, 48);
         set(s, "shadow.receiverPlaneBias=true");
