@@ -62,6 +62,11 @@ light.update(range=0.0, color=[1.0, 1.0, 1.0], enabled=True, castsShadows=True,
              shadow=shipped.pop("shadow"), projection=shipped.pop("projection"))
 shipped.update(schemaVersion=2, ambient=ambient, useSceneLights=scene_lights, lights=[light])
 shipped["lights"][0]["shadow"]["resolution"] = 1024
+# Keys newer than the schema-1 file, at their defaults: the editor saves every key.
+shipped["camera"]["sceneCamera"] = -1
+shipped["casters"] = {"excluded": []}
+light["projection"].update(fit="scene", cascadeCount=4, splitLambda=0.75, splits=[0.0, 0.0, 0.0],
+                           shadowDistance=0.0, blendBand=0.1, cascadeFit="stable")
 # The save records the scene and the camera as shown; nobody moved it, so it stays auto-framed.
 if saved.pop("scene", None) != "builtin:textbook": print("no scene recorded"); sys.exit(1)
 for key in ("position", "target"): saved["camera"].pop(key); shipped["camera"].pop(key)
