@@ -171,6 +171,16 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     const ShadowMap* faceMap = renderer_->viewMap({view->light, view->kind, view->index});
     r.face = view->face;
     r.viewName = view->name;
+    if (view->kind == ShadowViewKind::Cascade) {
+        r.cascade = viewSuffix(view->kind, view->index);
+        const ViewChoice choice = selectView(lightViews.views, p);
+        if (choice.view < 0)
+            r.blendNote = "beyond the shadow distance: the GPU's S is 1 (lit); the taps below are the last cascade's";
+        else if (choice.next >= 0 && choice.weight > 0.0)
+            r.blendNote = "in the blend band: the GPU mixes this cascade with cascade:" + std::to_string(choice.next) +
+                          " at weight " + std::to_string(choice.weight) +
+                          ", so its S is compared here with this cascade's alone";
+    }
     const LightSpace* space = &view->space;
     const int res = view->resolution;
     r.resolution = res;

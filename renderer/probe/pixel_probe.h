@@ -72,6 +72,8 @@ struct PixelProbeReport {
     LightType lightType = LightType::Directional;
     int face = -1;                   // a point light: the cube face the lookup falls in (GL order +X,-X,+Y,-Y,+Z,-Z)
     std::string viewName;            // the shadow view probed, e.g. "light 0", "light 0 +X" (the light as captured)
+    std::string cascade;             // a cascaded light: the cascade probed ("cascade:1"); "" otherwise
+    std::string blendNote;           // in a cascade's blend band: what the GPU mixes (its S is not this view's alone)
     bool reversedZ = false;          // the map's depth convention: near 1, far 0 (depths below are as stored)
     double receiverDepth = 0.0;      // what each tap compares: z clamped to the far plane (fixed point: to [0, 1])
     double depthUncertainty = 0.0;   // float rounding of the GPU's receiver depth, in depth

@@ -86,7 +86,9 @@ std::vector<std::string> describeProbe(const PixelProbeReport& r) {
     lines.push_back(format("pixel %d,%d of %dx%d: ", r.x, r.y, r.width, r.height) + probeSummary(r));
     lines.push_back("light " + std::to_string(r.light) + " (" + lightTypeName(r.lightType) + ")" +
                     (r.face >= 0 ? std::string(", cube face ") + cubeFaces()[std::size_t(r.face)].name : std::string()) +
+                    (r.cascade.empty() ? std::string() : ", " + r.cascade) +
                     ", alone: S is this light's shadow factor");
+    if (!r.blendNote.empty()) lines.push_back("  " + r.blendNote);
     lines.push_back("surface: world " + vec(r.world) + format(" on '%s' (instance %d, triangle %d), %s face",
                                                               r.meshName.c_str(), r.instance, r.triangle,
                                                               r.frontFacing ? "front" : "back"));
@@ -141,6 +143,8 @@ nlohmann::json probeToJson(const PixelProbeReport& r) {
     j["light"] = r.light;
     j["lightType"] = lightTypeName(r.lightType);
     if (r.face >= 0) j["cubeFace"] = cubeFaces()[std::size_t(r.face)].name;
+    if (!r.cascade.empty()) j["cascade"] = r.cascade;
+    if (!r.blendNote.empty()) j["blend"] = r.blendNote;
     j["surface"] = {{"world", toJson(r.world)},
                     {"geometricNormal", toJson(r.geometricNormal)},
                     {"shadingNormal", toJson(r.shadingNormal)},
