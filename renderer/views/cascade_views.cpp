@@ -109,7 +109,7 @@ std::vector<CascadeSlice> cascadeSlices(const ProjectionSettings& projection, co
         s.camera = camera;
         s.nearDepth = i == 0 ? camera.nearPlane : far[i - 1];
         // The first cascade's volume starts where the scene does (nothing nearer casts onto a visible receiver).
-        s.fitNear = i == 0 ? (scene && !projection.splits.x ? std::clamp(scene->nearest, camera.nearPlane, far[0])
+        s.fitNear = i == 0 ? (scene && !(projection.splits.x > 0.0f) ? std::clamp(scene->nearest, camera.nearPlane, far[0])
                                                              : camera.nearPlane)
                            : slices.back().blendStart;
         s.farDepth = far[i];

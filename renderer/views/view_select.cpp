@@ -2,6 +2,9 @@
 
 #include <glm/common.hpp>
 
+#include <algorithm>
+#include <array>
+
 namespace shadowlab {
 
 int cubeFaceOf(const glm::dvec3& d) {
@@ -10,7 +13,7 @@ int cubeFaceOf(const glm::dvec3& d) {
     return 2 * axis + (d[axis] < 0.0 ? 1 : 0);
 }
 
-ViewChoice selectCascade(double depth, const std::vector<double>& farDepths, const std::vector<double>& blendStarts) {
+ViewChoice selectCascade(double depth, std::span<const double> farDepths, std::span<const double> blendStarts) {
     for (std::size_t i = 0; i < farDepths.size(); ++i) {
         if (!(depth <= farDepths[i])) continue;
         ViewChoice choice{int(i)};
@@ -26,12 +29,15 @@ ViewChoice selectCascade(double depth, const std::vector<double>& farDepths, con
 ViewChoice selectView(const std::vector<ShadowView>& lightViews, const glm::dvec3& p) {
     if (lightViews.empty()) return {};
     if (lightViews.front().kind == ShadowViewKind::Cascade) {
-        std::vector<double> far, blend;
-        for (const ShadowView& v : lightViews) {
-            far.push_back(v.slice.farDepth);
-            blend.push_back(v.slice.blendStart);
+        // Asked per pixel by the accuracy meter and the boundary search: no allocation (a light has at most 4).
+        std::array<double, 4> far{}, blend{};
+        const std::size_t count = std::min(lightViews.size(), far.size());
+        for (std::size_t v = 0; v < count; ++v) {
+            far[v] = lightViews[v].slice.farDepth;
+            blend[v] = lightViews[v].slice.blendStart;
         }
-        return selectCascade(lightViews.front().slice.camera.depthOf(p), far, blend);
+        return selectCascade(lightViews.front().slice.camera.depthOf(p), std::span(far).first(count),
+                             std::span(blend).first(count));
     }
     if (lightViews.front().kind == ShadowViewKind::CubeFace) {
         const int face = cubeFaceOf(p - lightViews.front().space.position);

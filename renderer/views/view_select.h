@@ -7,6 +7,7 @@
 
 #include <glm/ext/vector_double3.hpp>
 
+#include <span>
 #include <vector>
 
 namespace shadowlab {
@@ -20,7 +21,7 @@ struct ViewChoice {
 
 // Which cascade holds a point `depth` in front of the camera, given each cascade's far depth and blend start
 // (nearest first): the GLSL's selectCascade is the same code.
-ViewChoice selectCascade(double depth, const std::vector<double>& farDepths, const std::vector<double>& blendStarts);
+ViewChoice selectCascade(double depth, std::span<const double> farDepths, std::span<const double> blendStarts);
 
 // The cube face a direction from a point light selects: the axis of largest magnitude (ties: X, then Y, then Z), its
 // sign's face (>= 0: positive), in GL order +X,-X,+Y,-Y,+Z,-Z.
