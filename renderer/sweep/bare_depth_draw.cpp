@@ -76,7 +76,7 @@ BareDrawTiming BareDepthDraw::time(const glm::dmat4& lightViewProjection, int re
         timer_.end(TimedPass::Shadow);
         ms = {timer_.latestMilliseconds(TimedPass::Shadow, true).value_or(0.0)};
         return "";
-    });
+    }, timer_.source() == TimingSource::GpuQueries ? kGpuWarmUpMs : 0.0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     result.ms = timing.medianMs.empty() ? 0.0 : timing.medianMs[0];
     result.wallMsPerDraw = timing.wallMsPerRun;
