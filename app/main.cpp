@@ -18,6 +18,9 @@
 
 #include <iostream>
 
+// Every command's --preset resolves alike (cli/settings_from_cli.h, settings/preset_catalog.h).
+static const char* const kPresetHelp = "a preset JSON path, or the name of a shipped or user preset";
+
 int main(int argc, char** argv) {
     using namespace shadowlab;
     // Named, so that --help and errors say "shadowlab", not the path it was started by (docs/ quote --help).
@@ -28,7 +31,7 @@ int main(int argc, char** argv) {
     CLI::App* renderCmd = app.add_subcommand("render", "Render one frame headless (no display, no GPU needed)");
     renderCmd->add_option("--scene", render.scene, "a .gltf/.glb path or builtin:NAME (see `shadowlab scenes`)")
         ->capture_default_str();
-    renderCmd->add_option("--preset", render.preset, "a preset JSON path, or the name of a shipped preset");
+    renderCmd->add_option("--preset", render.preset, kPresetHelp);
     renderCmd->add_option("--set", render.overrides, "override a setting by its preset key: key=value (repeatable)")
         ->allow_extra_args(false);
     renderCmd->add_option("--width", render.width, "view width in pixels")->capture_default_str();
@@ -54,7 +57,7 @@ int main(int argc, char** argv) {
     cli::BenchOptions bench;
     CLI::App* benchCmd = app.add_subcommand("bench", "Time the passes per shadow-map resolution and filter");
     benchCmd->add_option("--scene", bench.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    benchCmd->add_option("--preset", bench.preset, "a preset JSON path, or the name of a shipped preset");
+    benchCmd->add_option("--preset", bench.preset, kPresetHelp);
     benchCmd->add_option("--set", bench.overrides, "override a setting: key=value (repeatable)");
     benchCmd->add_option("--width", bench.width, "view width")->capture_default_str();
     benchCmd->add_option("--height", bench.height, "view height")->capture_default_str();
@@ -70,7 +73,7 @@ int main(int argc, char** argv) {
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
     editCmd->add_option("--scene", edit.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    editCmd->add_option("--preset", edit.preset, "a preset JSON path, or the name of a shipped or user preset");
+    editCmd->add_option("--preset", edit.preset, kPresetHelp);
     editCmd->add_option("--width", edit.width, "window width")->capture_default_str()->check(CLI::Range(320, 16384));
     editCmd->add_option("--height", edit.height, "window height")->capture_default_str()->check(CLI::Range(240, 16384));
     editCmd->add_option("--screenshot-dir", edit.screenshotDir,
@@ -80,7 +83,7 @@ int main(int argc, char** argv) {
     cli::MeasureOptions measure;
     CLI::App* measureCmd = app.add_subcommand("measure", "Measure acne, leak, wrong pixels, edge error and their causes against the exact reference");
     measureCmd->add_option("--scene", measure.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    measureCmd->add_option("--preset", measure.preset, "a preset JSON path, or the name of a shipped preset");
+    measureCmd->add_option("--preset", measure.preset, kPresetHelp);
     measureCmd->add_option("--set", measure.overrides, "override a setting: key=value (repeatable)");
     measureCmd->add_option("--width", measure.width, "view width")->capture_default_str();
     measureCmd->add_option("--height", measure.height, "view height")->capture_default_str();
@@ -109,7 +112,7 @@ int main(int argc, char** argv) {
     cli::TuneOptions tune;
     CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");
     tuneCmd->add_option("--scene", tune.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    tuneCmd->add_option("--preset", tune.preset, "a preset JSON path, or the name of a shipped preset");
+    tuneCmd->add_option("--preset", tune.preset, kPresetHelp);
     tuneCmd->add_option("--set", tune.overrides, "override a setting: key=value (repeatable)");
     tuneCmd->add_option("--width", tune.width, "view width")->capture_default_str();
     tuneCmd->add_option("--height", tune.height, "view height")->capture_default_str();
@@ -124,7 +127,7 @@ int main(int argc, char** argv) {
     CLI::App* exportCmd = app.add_subcommand("export", "The shadow state as a D3D12 / D3D11 / Vulkan / OpenGL snippet or JSON");
     exportCmd->add_option("--scene", exportOptions.scene, "the scene the normal offset's world size is computed for")
         ->capture_default_str();
-    exportCmd->add_option("--preset", exportOptions.preset, "a preset JSON path, or the name of a shipped preset");
+    exportCmd->add_option("--preset", exportOptions.preset, kPresetHelp);
     exportCmd->add_option("--set", exportOptions.overrides, "override a setting: key=value (repeatable)");
     exportCmd->add_option("--format", exportOptions.format, "d3d12 | d3d11 | vulkan | gl | json")->required();
     exportCmd->add_option("--out", exportOptions.out, "write to this file (default: standard output)");
@@ -134,7 +137,7 @@ int main(int argc, char** argv) {
     cli::ProbeOptions probe;
     CLI::App* probeCmd = app.add_subcommand("probe", "Why is this pixel shadowed: taps, stored depths, bias terms, S on CPU and GPU");
     probeCmd->add_option("--scene", probe.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    probeCmd->add_option("--preset", probe.preset, "a preset JSON path, or the name of a shipped preset");
+    probeCmd->add_option("--preset", probe.preset, kPresetHelp);
     probeCmd->add_option("--set", probe.overrides, "override a setting: key=value (repeatable)");
     probeCmd->add_option("--width", probe.width, "view width")->capture_default_str();
     probeCmd->add_option("--height", probe.height, "view height")->capture_default_str();
@@ -146,7 +149,7 @@ int main(int argc, char** argv) {
     cli::ProfileOptions profile;
     CLI::App* profileCmd = app.add_subcommand("profile", "Depth profile along a line: receiver depth, map texels, bias; acne and Peter Panning marked");
     profileCmd->add_option("--scene", profile.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    profileCmd->add_option("--preset", profile.preset, "a preset JSON path, or the name of a shipped preset");
+    profileCmd->add_option("--preset", profile.preset, kPresetHelp);
     profileCmd->add_option("--set", profile.overrides, "override a setting: key=value (repeatable)");
     profileCmd->add_option("--light", profile.light, "the light whose depths the line shows (default: the only shadow-casting light)");
     profileCmd->add_option("--width", profile.width, "view width")->capture_default_str();
@@ -161,7 +164,7 @@ int main(int argc, char** argv) {
     cli::SweepOptions sweep;
     CLI::App* sweepCmd = app.add_subcommand("sweep", "What accuracy costs: time and measure every point of preset-key axes, with the raster limit and the Pareto front");
     sweepCmd->add_option("--scene", sweep.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
-    sweepCmd->add_option("--preset", sweep.preset, "a preset JSON path, or the name of a shipped preset");
+    sweepCmd->add_option("--preset", sweep.preset, kPresetHelp);
     sweepCmd->add_option("--set", sweep.overrides, "override a setting: key=value (repeatable)");
     sweepCmd->add_option("--axis", sweep.axes, "KEY=V1,V2,...: a preset key and its values (repeatable; the points are "
                                                "the cartesian product)")->required();
@@ -197,7 +200,7 @@ int main(int argc, char** argv) {
     // One case from flags; each given one is remembered, so a case file beside them is refused.
     std::vector<CLI::Option*> checkCaseFlags = {
         checkCmd->add_option("--scene", check.flagCase.scene, "a .gltf/.glb path or builtin:NAME"),
-        checkCmd->add_option("--preset", check.flagCase.preset, "a preset JSON path, or the name of a shipped preset"),
+        checkCmd->add_option("--preset", check.flagCase.preset, kPresetHelp),
         checkCmd->add_option("--set", check.flagCase.overrides, "override a setting: key=value (repeatable)"),
         checkCmd->add_option("--width", check.flagCase.width, "view width")->capture_default_str(),
         checkCmd->add_option("--height", check.flagCase.height, "view height")->capture_default_str(),

@@ -1,9 +1,11 @@
 #include "cli/settings_from_cli.h"
 
+#include "settings/preset_catalog.h"
 #include "settings/preset_io.h"
 #include "settings/preset_scene.h"
 #include "settings/settings_fields.h"
 #include "settings/shipped_data.h"
+#include "settings/user_config.h"
 
 #include <filesystem>
 #include <iostream>
@@ -11,17 +13,11 @@
 namespace shadowlab::cli {
 
 std::string resolvePresetPath(const std::string& preset) {
-    namespace fs = std::filesystem;
-    if (fs::exists(preset)) return preset;
-    const fs::path dir = shippedPresetsDir();
-    if (dir.empty()) {
-        // The load below says "no such file"; this says why a shipped name was not found either.
-        std::cerr << "note: --preset " << preset << ": " << shippedData().problem << "\n";
-        return preset;
-    }
-    fs::path candidate = dir / preset;
-    if (candidate.extension() != ".json") candidate += ".json";
-    return fs::exists(candidate) ? candidate.string() : preset;
+    const std::filesystem::path shipped = shippedPresetsDir();
+    if (std::optional<PresetEntry> found = findPreset(preset, shipped, userPresetsDir())) return found->path.string();
+    // The load below says "no such file"; this says why a shipped name was not found either.
+    if (shipped.empty()) std::cerr << "note: --preset " << preset << ": " << shippedData().problem << "\n";
+    return preset;
 }
 
 std::optional<Settings> settingsFromCli(const std::string& preset, const std::vector<std::string>& overrides,

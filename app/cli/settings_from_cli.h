@@ -9,8 +9,9 @@
 
 namespace shadowlab::cli {
 
-// Resolves "soft" to <shipped data>/presets/soft.json (settings/shipped_data.h) when no such file exists in the working
-// directory.
+// A path, else a shipped preset's name ("soft": <shipped data>/presets/soft.json, settings/shipped_data.h), else a
+// user preset's name (settings/user_config.h), as the editor resolves it (findPreset); else the text unchanged, so
+// the load names it.
 std::string resolvePresetPath(const std::string& preset);
 
 // nullopt after printing the errors to stderr; warnings go to stderr too. A preset tuned on another scene than

@@ -77,21 +77,11 @@ Editor::Editor(EditorOptions options) : options_(std::move(options)) {
     }
     refreshPresetList();
 
-    // The start preset: a path, else a shipped preset's name, else a user preset's name.
+    // The start preset: a path, else a shipped preset's name, else a user preset's name (as every command resolves it).
     const std::string preset = options_.preset.empty() ? "default" : options_.preset;
-    std::string path = preset;
-    bool shipped = false;
-    if (!fs::exists(path)) {
-        for (const PresetEntry& entry : state_.presetList)
-            if (entry.name == preset) {
-                path = entry.path.string();
-                shipped = entry.readOnly;
-                break;
-            }
-    } else {
-        std::error_code ec;
-        shipped = fs::equivalent(fs::path(path).parent_path(), options_.shippedPresetsDir, ec);
-    }
+    const std::optional<PresetEntry> start = findPreset(preset, options_.shippedPresetsDir, options_.userPresetsDir);
+    const std::string path = start ? start->path.string() : preset;
+    const bool shipped = start && start->readOnly;
     if (std::string error = state_.preset.load(path, shipped, state_.settings); !error.empty())
         state_.say("preset " + preset + " not loaded: " + error + "; using built-in defaults", true);
 

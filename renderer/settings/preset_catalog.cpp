@@ -36,4 +36,21 @@ std::vector<PresetEntry> listPresets(const fs::path& shippedDir, const fs::path&
     return all;
 }
 
+std::optional<PresetEntry> findPreset(const std::string& nameOrPath, const fs::path& shippedDir,
+                                      const fs::path& userDir) {
+    std::error_code ec;
+    if (!nameOrPath.empty() && fs::exists(nameOrPath, ec)) {
+        const fs::path path(nameOrPath);
+        const bool shipped = !shippedDir.empty() && fs::equivalent(path.parent_path().empty() ? "." : path.parent_path(),
+                                                                   shippedDir, ec);
+        return PresetEntry{path.stem().string(), path, shipped};
+    }
+    const std::string name = fs::path(nameOrPath).extension() == ".json" ? fs::path(nameOrPath).stem().string()
+                                                                          : nameOrPath;
+    if (name.empty() || name.find('/') != std::string::npos) return std::nullopt;
+    for (const PresetEntry& entry : listPresets(shippedDir, userDir))  // shipped first
+        if (entry.name == name) return entry;
+    return std::nullopt;
+}
+
 }  // namespace shadowlab

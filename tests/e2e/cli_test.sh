@@ -119,6 +119,13 @@ grep -q "no node 'Root/City/Gone'" render-scene-camera.err && pass "an unknown c
 expect_error scene-camera-range "camera.sceneCamera: 9 is not a camera of scene sky_box_city" "$SHADOWLAB" render \
   --scene "$CITY" --set camera.sceneCamera=9 --width 32 --height 32 --out x.png
 
+# A user preset by its name, as the editor finds it: every command resolves --preset alike (preset_catalog).
+mkdir -p user-presets
+cp "$SOURCE_DIR/presets/acne.json" user-presets/street-test.json
+SHADOWLAB_USER_PRESETS="$PWD/user-presets" expect_ok user-preset-by-name "$SHADOWLAB" render --scene builtin:grazing \
+  --preset street-test --width 32 --height 32 --out user.png
+expect_error user-preset-unknown "nonesuch-preset" "$SHADOWLAB" render --preset nonesuch-preset --out x.png
+
 # No command opens the editor; without a display it says so and exits non-zero (tests/e2e/editor_test.sh opens it).
 expect_error noargs "needs a display" "$SHADOWLAB"
 

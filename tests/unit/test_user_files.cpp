@@ -219,6 +219,37 @@ TEST(PresetCatalog, MissingUserFolderAndSameFolderTwice) {
     EXPECT_TRUE(listPresets("/nonexistent/a", "/nonexistent/b").empty());
 }
 
+// Every command's --preset and the editor's resolve a name the same way: a file, else shipped, else the user's.
+TEST(PresetCatalog, FindPresetTakesAPathThenAShippedNameThenAUserName) {
+    const fs::path shipped = fs::path(SHADOWLAB_SOURCE_DIR) / "presets";
+    TempDir user;
+    writeText(user.path / "street.json", "{}");
+    writeText(user.path / "soft.json", "{}");  // named like a shipped one: the shipped one wins, as the list shows
+
+    const std::optional<PresetEntry> mine = findPreset("street", shipped, user.path);
+    ASSERT_TRUE(mine.has_value());
+    EXPECT_EQ(mine->path, user.path / "street.json");
+    EXPECT_FALSE(mine->readOnly);
+    ASSERT_TRUE(findPreset("street.json", shipped, user.path).has_value());
+
+    const std::optional<PresetEntry> soft = findPreset("soft", shipped, user.path);
+    ASSERT_TRUE(soft.has_value());
+    EXPECT_EQ(soft->path, shipped / "soft.json");
+    EXPECT_TRUE(soft->readOnly);
+
+    const std::optional<PresetEntry> byPath = findPreset((user.path / "soft.json").string(), shipped, user.path);
+    ASSERT_TRUE(byPath.has_value());
+    EXPECT_EQ(byPath->path, user.path / "soft.json");
+    EXPECT_FALSE(byPath->readOnly);
+    const std::optional<PresetEntry> shippedByPath = findPreset((shipped / "acne.json").string(), shipped, user.path);
+    ASSERT_TRUE(shippedByPath.has_value());
+    EXPECT_TRUE(shippedByPath->readOnly);
+
+    EXPECT_FALSE(findPreset("nonesuch", shipped, user.path).has_value());
+    EXPECT_FALSE(findPreset("sub/street", shipped, user.path).has_value());  // a name is not a path into a folder
+    EXPECT_FALSE(findPreset("", shipped, user.path).has_value());
+}
+
 // The shipped data is found from the binary's own folder: an installed prefix anywhere, nothing else.
 TEST(ShippedData, FoundBesideTheBinaryWhereverThePrefixIs) {
     TempDir prefix;
