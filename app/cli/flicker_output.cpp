@@ -29,6 +29,12 @@ void printFlicker(std::ostream& out, const FlickerReport& r) {
         << motionInfo(m.kind).unit << " per frame = " << r.stepTexels << " texels of the light's map ("
         << (r.stepTexels < 1.0 ? "sub-texel" : "a texel or more") << "; texel = " << r.texelWorldSize
         << " world units), " << m.frames << " frames, " << r.pairs.size() << " pairs\n";
+    if (!r.cascadeStepTexels.empty()) {
+        out << "  step per cascade (texels of each cascade's map, nearest first):";
+        for (double step : r.cascadeStepTexels) out << " " << step;
+        out << (movesCamera(m.kind) ? "; each pair's first half is the new camera with the previous frame's cascades\n"
+                                    : "\n");
+    }
     out << std::fixed << std::setprecision(3);
     out << "  flicker      max " << std::setw(8) << r.maxFlickerPercent << " %  mean " << std::setw(8)
         << r.meanFlickerPercent << " %   (S crosses 0.5 at the same surface point while V does not)\n";
@@ -42,7 +48,9 @@ void printFlicker(std::ostream& out, const FlickerReport& r) {
     std::size_t rerendered = 0;
     for (const FlickerPair& p : r.pairs) rerendered += p.shadowViewsRendered;
     out << "  shadow views re-rendered after the first frame: " << rerendered
-        << (movesCamera(m.kind) ? " (a camera motion must not re-render a scene-fitted map)\n" : "\n");
+        << (!movesCamera(m.kind)         ? "\n"
+            : r.cascadeStepTexels.empty() ? " (a camera motion must not re-render a scene-fitted map)\n"
+                                          : " (cascades follow the camera)\n");
     out << std::setprecision(3);
     out << "  pair     flicker %   V changed %   |dS|>1/8 %   mean |dS|   measured   views\n";
     for (const FlickerPair& p : r.pairs) {
@@ -78,6 +86,7 @@ nlohmann::json flickerToJson(const FlickerReport& r) {
             {"stepUnit", motionInfo(r.motion.kind).unit},
             {"stepTexels", r.stepTexels},
             {"texelWorldSize", r.texelWorldSize},
+            {"cascadeStepTexels", r.cascadeStepTexels},
             {"frames", r.motion.frames},
             {"light", r.lightIndex},
             {"flickerPercent", {{"max", r.maxFlickerPercent}, {"mean", r.meanFlickerPercent}}},

@@ -211,7 +211,7 @@ struct AccuracyMeter::Impl {
 
     // The tool's own frame into toolTarget: the shadow factor S of every pixel, exactly as the main pass computes it.
     FrameStats renderToolFrame(const Scene& drawn, const Settings& settings, const Camera& camera, int width,
-                               int height) {
+                               int height, const Camera* shadowCamera = nullptr) {
         Settings toolSettings = settings;
         toolSettings.view = ViewMode::Shadow;
         if (std::string error = toolTarget.resize(width, height, GL_RGBA32F); !error.empty()) {
@@ -220,7 +220,7 @@ struct AccuracyMeter::Impl {
             failed.error = error;
             return failed;
         }
-        return renderer.render(drawn, toolSettings, camera, toolTarget);
+        return renderer.render(drawn, toolSettings, camera, toolTarget, shadowCamera);
     }
 
     // The true boundary in this light space's texels (rebuilt when the map's size or projection changed).
@@ -251,7 +251,7 @@ void AccuracyMeter::sceneChanged() {
 }
 
 AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given, const Camera& camera, int width,
-                                      int height, AccuracyProgress* progress) {
+                                      int height, AccuracyProgress* progress, const Camera* shadowCamera) {
     Impl& m = *impl_;
     const auto start = Clock::now();
     AccuracyReport report;
@@ -272,7 +272,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
     setStage(progress, 0.0f, "rendering the tool's frame");
     auto t = Clock::now();
-    FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height);
+    FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height, shadowCamera);
     if (!stats.ok) return fail(stats.error);
     report.warnings = stats.warnings;
     for (const ShadowViewStats& view : stats.views) report.shadowViewsRendered += view.ran ? 1 : 0;

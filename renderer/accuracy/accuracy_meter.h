@@ -181,8 +181,10 @@ public:
     // Measures one view for light 0 of the effective lights, alone (light_isolation.h: its shadow factor is the one
     // it has in the full frame); light_accuracy.h measures every light. Invalid settings, a size the GPU refuses or a cancel give ok = false with a reason; nothing
     // throws for user input. The scene must stay alive and unchanged while cached (call sceneChanged() after edits).
+    // `shadowCamera` (null: `camera`): the camera a cascaded light's views follow (Renderer::render's), so the
+    // flicker measure can shade this camera's pixels with the previous frame's cascades.
     AccuracyReport measure(const Scene& scene, const Settings& settings, const Camera& camera, int width, int height,
-                           AccuracyProgress* progress = nullptr);
+                           AccuracyProgress* progress = nullptr, const Camera* shadowCamera = nullptr);
 
     // Live accuracy: the same numbers for a view whose reference measure() cached (same scene, light, camera and
     // size; bias, filter, map size and format may differ), counted on the GPU (gpu_accuracy_counter.h) after one

@@ -28,36 +28,50 @@ bool mapTexel(const LightSpace& space, const glm::dvec3& world, glm::dvec2& texe
     return true;
 }
 
-// The views of `light`, relative to the scene's centre; empty when they cannot be built (the frame itself then fails
-// with the reason).
-std::vector<ShadowView> lightViews(const LightSettings& light, const Bounds& bounds) {
+// The views of `light`, relative to the scene's centre, following `camera` (null: none; then a fit that follows the
+// camera cannot be built); empty when they cannot be built (the frame itself then fails with the reason).
+std::vector<ShadowView> lightViews(const LightSettings& light, const Bounds& bounds, const ViewCamera* camera) {
     std::string error;
-    const auto views = buildLightViews(light, 0, bounds, renderOriginOf(bounds), nullptr, error);
+    const auto views = buildLightViews(light, 0, bounds, renderOriginOf(bounds), camera, error);
     return views ? *views : std::vector<ShadowView>{};
 }
 
-// A light motion's step in map texels: the largest shift of the scene's bounding-box centre or a corner between
-// frames 0 and 1, over those inside the map at frame 0 (a spot's cone sees few corners; a point light: in the cube
-// face the point lies in at frame 0).
-double lightStepTexels(const LightSettings& start, const Motion& motion, const Bounds& bounds) {
-    if (bounds.empty) return 0.0;
-    const std::vector<ShadowView> before = lightViews(lightAtFrame(start, motion, bounds, 0), bounds);
-    const std::vector<ShadowView> after = lightViews(lightAtFrame(start, motion, bounds, 1), bounds);
-    if (before.empty() || before.size() != after.size()) return 0.0;
+// Whether the light's views move with the camera (cascades): only those are built from a camera, so they alone fail
+// without one.
+bool viewsFollowCamera(const LightSettings& light, const Bounds& bounds) {
+    std::string error;
+    return !buildLightViews(light, 0, bounds, renderOriginOf(bounds), nullptr, error);
+}
+
+// A light motion's step in each view's texels: the largest shift between frames 0 and 1 of the points the view holds
+// at frame 0 (inside its map), among the scene's bounding-box centre and corners (a spot's cone sees few corners; a
+// point light: in the cube face the point lies in) and, for a cascade, the middle of its slice on the camera's axis
+// (the box's corners lie beyond the near cascades). 0 for a view that holds none of them.
+std::vector<double> lightStepTexels(const LightSettings& start, const Motion& motion, const Bounds& bounds,
+                                    const ViewCamera& camera) {
+    if (bounds.empty) return {};
+    const std::vector<ShadowView> before = lightViews(lightAtFrame(start, motion, bounds, 0), bounds, &camera);
+    const std::vector<ShadowView> after = lightViews(lightAtFrame(start, motion, bounds, 1), bounds, &camera);
+    if (before.empty() || before.size() != after.size()) return {};
     const glm::dvec3 centre(bounds.center());
-    double largest = 0.0;
-    for (int c = 0; c < 9; ++c) {
-        const glm::dvec3 corner =
-            c == 8 ? glm::dvec3(0.0)
-                   : glm::dvec3(c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
-                                c & 4 ? bounds.max.z : bounds.min.z) - centre;
-        const std::size_t view = std::size_t(std::max(selectView(before, corner).view, 0));
-        const LightSpace& from = before[view].space;
+    std::vector<glm::dvec3> points;
+    for (int c = 0; c < 9; ++c)
+        points.push_back(c == 8 ? glm::dvec3(0.0)
+                                : glm::dvec3(c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
+                                             c & 4 ? bounds.max.z : bounds.min.z) - centre);
+    for (const ShadowView& v : before)
+        if (v.kind == ShadowViewKind::Cascade)
+            points.push_back(v.slice.camera.eye + v.slice.camera.forward * (0.5 * (v.slice.nearDepth + v.slice.farDepth)));
+    std::vector<double> largest(before.size(), 0.0);
+    for (const glm::dvec3& p : points) {
+        const int held = selectView(before, p).view;
+        if (held < 0) continue;
+        const std::size_t view = std::size_t(held);
         glm::dvec2 a, b;
-        const double size = double(from.resolution);
-        if (mapTexel(from, corner, a) && mapTexel(after[view].space, corner, b) && a.x >= 0.0 && a.y >= 0.0 &&
+        const double size = double(before[view].space.resolution);
+        if (mapTexel(before[view].space, p, a) && mapTexel(after[view].space, p, b) && a.x >= 0.0 && a.y >= 0.0 &&
             a.x <= size && a.y <= size)
-            largest = std::max(largest, glm::length(b - a));
+            largest[view] = std::max(largest[view], glm::length(b - a));
     }
     return largest;
 }
@@ -123,7 +137,14 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
             1e-6 * std::max(double(scene.bounds.radius()), 1e-9))
         return fail("--motion light: lights." + std::to_string(motion.light) +
                     " is a point light at the scene's centre; turning it about the centre does not move it");
-    if (motion.kind == MotionKind::Light) report.stepTexels = lightStepTexels(start, motion, scene.bounds);
+    const double aspect = double(std::max(width, 1)) / double(std::max(height, 1));
+    const bool follows = viewsFollowCamera(start, scene.bounds);
+    if (motion.kind == MotionKind::Light) {
+        const std::vector<double> steps =
+            lightStepTexels(start, motion, scene.bounds, viewCameraOf(camera, aspect, renderOriginOf(scene.bounds)));
+        for (double step : steps) report.stepTexels = std::max(report.stepTexels, step);
+        if (follows) report.cascadeStepTexels = steps;
+    }
 
     const float outerBase = progress ? progress->base : 0.0f, outerSpan = progress ? progress->span : 1.0f;
     const std::size_t count = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
@@ -132,19 +153,41 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
     AccuracyReport previous;
     std::vector<std::uint8_t> previousPicture;
     std::size_t worstFlicker = 0;
+    // Views that follow the camera: each pair's first half is frame f's pixels shaded with frame f-1's views.
+    const bool shifted = movesCamera(motion.kind) && follows;
+    const int measuresPerFrame = shifted ? 2 : 1;
     for (int f = 0; f < motion.frames; ++f) {
-        if (progress) {
-            progress->base = outerBase + outerSpan * float(f) / float(motion.frames);
-            progress->span = outerSpan / float(motion.frames);
-        }
         Settings frameSettings = *isolated;
         frameSettings.lights[0] = lightAtFrame(start, motion, scene.bounds, f);
-        AccuracyReport current =
-            meter.measure(scene, frameSettings, cameraAtFrame(camera, motion, f), width, height, progress);
-        if (progress) {
-            progress->base = outerBase;
-            progress->span = outerSpan;
+        const Camera frameCamera = cameraAtFrame(camera, motion, f);
+        const Camera previousCamera = cameraAtFrame(camera, motion, std::max(f - 1, 0));
+        // Measure `half` of this frame (0: with frame f-1's views; 1: the frame itself); its progress share.
+        auto measureHalf = [&](int half) {
+            if (progress) {
+                progress->base = outerBase + outerSpan * (float(f) + float(half) / float(measuresPerFrame)) /
+                                                 float(motion.frames);
+                progress->span = outerSpan / float(motion.frames * measuresPerFrame);
+            }
+            AccuracyReport r = meter.measure(scene, frameSettings, frameCamera, width, height, progress,
+                                             half == 0 ? &previousCamera : nullptr);
+            if (progress) {
+                progress->base = outerBase;
+                progress->span = outerSpan;
+            }
+            return r;
+        };
+        // The first half before the frame itself, so frame f-1's views are still in the renderer (kept, not redrawn).
+        AccuracyReport withPrevious;
+        if (shifted && f > 0) {
+            withPrevious = measureHalf(0);
+            if (!withPrevious.ok) {
+                report.cancelled = withPrevious.cancelled;
+                return fail(withPrevious.cancelled ? withPrevious.error
+                                                   : "frame " + std::to_string(f) + " with frame " +
+                                                         std::to_string(f - 1) + "'s views: " + withPrevious.error);
+            }
         }
+        AccuracyReport current = measureHalf(shifted ? 1 : 0);
         if (!current.ok) {
             report.cancelled = current.cancelled;
             return fail(current.cancelled ? current.error : "frame " + std::to_string(f) + ": " + current.error);
@@ -162,13 +205,17 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
                                       : 0.0;
             if (movesCamera(motion.kind) && current.texelWorldSize > 0.0)
                 report.stepTexels = travel / current.texelWorldSize;
+            if (movesCamera(motion.kind))
+                for (const CascadeNumbers& c : current.cascades.cascades)
+                    report.cascadeStepTexels.push_back(c.texelWorldSize > 0.0 ? travel / c.texelWorldSize : 0.0);
         }
         std::vector<std::uint8_t> picture = dimmedPicture(width, height, current.pixelClass, current.pixelShadow,
                                                           current.pixelLambert, frameSettings.ambient);
         if (f > 0) {
             // The pair's halves at frame f's camera: a light motion keeps the camera (frame f-1 is the first half);
-            // a camera motion keeps the light, so frame f with frame f-1's light is frame f itself.
-            const AccuracyReport& first = movesCamera(motion.kind) ? current : previous;
+            // a camera motion keeps the light, so frame f with frame f-1's light and views is frame f itself unless
+            // the views follow the camera (then the first half was measured with frame f-1's views).
+            const AccuracyReport& first = shifted ? withPrevious : movesCamera(motion.kind) ? current : previous;
             FlickerPair pair;
             pair.from = f - 1;
             pair.counts = compareFlickerPair(halfOf(first), halfOf(current), &flickering);

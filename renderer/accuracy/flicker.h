@@ -4,12 +4,14 @@
 //
 // What is compared: the SAME surface points in both frames of a pair, so a pixel that merely sees another point after
 // the camera moved is not flicker. For the pair (f, f+1) the frame-(f+1) camera is rendered with frame f's light and
-// with frame f+1's: S_prev / V_prev and S_cur / V_cur belong to identical pixels and points (V from the accuracy
-// meter's exact reference, S from the tool's own frame). With one motion at a time this costs one measurement per
-// frame: a light motion keeps the camera (frames f and f+1 are the pair); a camera motion keeps the light, so both
-// halves are frame f+1 itself and flicker is exactly 0 as long as the shadow maps are a function of the light and the
-// scene alone (today's scene-fitted light spaces). Each pair records how many shadow views the renderer's planner
-// re-rendered for frame f+1 (FrameStats::views): 0 under camera motion shows the maps really were kept.
+// views and with frame f+1's: S_prev / V_prev and S_cur / V_cur belong to identical pixels and points (V from the
+// accuracy meter's exact reference, S from the tool's own frame). A light motion keeps the camera: frames f and f+1
+// are the pair (one measurement per frame). A camera motion keeps the light: where the light's views do not follow
+// the camera (scene fit, cube faces) both halves are frame f+1 itself and flicker is exactly 0; where they do
+// (cascades) the first half is frame f+1's camera shaded with frame f's cascades, chosen by frame f's depths
+// (AccuracyMeter::measure's shadowCamera: two measurements per frame, one reference), so a fit whose texel grid moves
+// with the camera flickers. Each pair records how many shadow views the renderer's planner re-rendered for frame f+1
+// (FrameStats::views): 0 under camera motion shows the maps really were kept; > 0 with cascades shows they followed.
 //
 // At a pixel measured in both halves (the meter's rules: OutOfRange, background, culled faces are not):
 //   flicker     = V_prev == V_cur and S crosses 0.5 (the state flips: the threshold of wrong pixels)
@@ -79,6 +81,10 @@ struct FlickerReport {
     // the angle); light: the largest shift in the map of the scene's centre or a bounding-box corner inside it.
     double stepTexels = 0.0;
     double texelWorldSize = 0.0;
+    // A cascaded light: the step in each cascade's texels, nearest first (camera: the step over the cascade's texel;
+    // camera turn: the looked-at point's sweep over it; light: the largest shift of the points it holds, the middle of
+    // its slice among them). stepTexels is cascade 0's for the camera, the largest for the light. Empty otherwise.
+    std::vector<double> cascadeStepTexels;
 
     std::vector<FlickerFrame> frames;  // motion.frames entries
     std::vector<FlickerPair> pairs;    // motion.frames - 1 entries

@@ -104,7 +104,7 @@ const ShadowMap* Renderer::viewMap(std::size_t light, int face) const {
 }
 
 FrameStats Renderer::render(const Scene& scene, const Settings& requested, const Camera& camera,
-                            RenderTarget& target) {
+                            RenderTarget& target, const Camera* shadowCamera) {
     FrameStats stats;
     stats.timingSource = timer_.sourceLabel();
     if (std::vector<std::string> problems = requested.validate(); !problems.empty()) {
@@ -137,7 +137,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
     // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention).
-    const ViewCamera viewCamera = viewCameraOf(camera, double(target.width()) / target.height(), stats.renderOrigin);
+    const Camera& followed = shadowCamera ? *shadowCamera : camera;
+    const ViewCamera viewCamera = viewCameraOf(followed, double(target.width()) / target.height(), stats.renderOrigin);
     const ShadowPlan plan = planShadowViews(
         settings, scene.bounds, stats.renderOrigin, &viewCamera, casterSpheres(*gpuScene_), info_.maxTextureSize,
         [&](std::size_t light) -> std::optional<KeptMap> {
@@ -293,7 +294,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     in.scene = gpuScene_.get();
     in.settings = &settings;
     in.viewProjection = stats.cameraViewProjection;
-    in.cameraPosition = camera.position - stats.renderOrigin;
+    // The cascades are chosen by depth from the camera they were fitted to (the CPU's selectView does the same).
+    in.cameraPosition = followed.position - stats.renderOrigin;
     in.cameraForward = viewCamera.forward;
     in.pixelPerDepth = 2.0 * viewCamera.tanHalfFovY / double(target.height());
     in.renderOrigin = stats.renderOrigin;

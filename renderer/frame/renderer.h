@@ -29,7 +29,11 @@ public:
 
     // Invalid settings (see Settings::validate) or a light that cannot be built: nothing is drawn and
     // FrameStats::error says why; the renderer keeps its previous state.
-    FrameStats render(const Scene& scene, const Settings& settings, const Camera& camera, RenderTarget& target);
+    // `shadowCamera`: the camera the shadow views follow and the cascades are chosen by (null: `camera`). The flicker
+    // measure draws frame f+1's pixels with frame f's cascades through it; it is the specular's view point too, so
+    // only the shadow factor of such a frame means anything.
+    FrameStats render(const Scene& scene, const Settings& settings, const Camera& camera, RenderTarget& target,
+                      const Camera* shadowCamera = nullptr);
 
     // Call after editing a Scene in place (geometry or materials), so the next frame re-uploads it.
     void sceneChanged() { gpuScene_.reset(); }

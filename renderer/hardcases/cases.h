@@ -21,5 +21,7 @@ void runDegenerateLight(CaseContext& context, CaseResult& result);      // 14
 void runDegenerateResolution(CaseContext& context, CaseResult& result); // 15
 void runDegenerateGeometry(CaseContext& context, CaseResult& result);   // 16
 void runScaleExtremes(CaseContext& context, CaseResult& result);        // 17
+void runCascadeSplits(CaseContext& context, CaseResult& result);        // 18
+void runCascadeSeams(CaseContext& context, CaseResult& result);         // 19
 
 }  // namespace shadowlab::hardcases

@@ -136,7 +136,7 @@ struct HardCase {
     std::function<void(CaseContext&, CaseResult&)> run;
 };
 
-// The 17 cases of HARD_CASES.md, in order.
+// The cases of HARD_CASES.md, in order.
 const std::vector<HardCase>& hardCaseList();
 
 // Number formatting for figures: "%.*g"-like with a unit.

@@ -21,6 +21,8 @@ const std::vector<HardCase>& hardCaseList() {
         {15, "degenerate and non-power-of-two resolutions", runDegenerateResolution},
         {16, "degenerate geometry", runDegenerateGeometry},
         {17, "scale extremes and texel-relative biases", runScaleExtremes},
+        {18, "cascade splits at extreme near / far", runCascadeSplits},
+        {19, "cascade seams (texel jump per split, blend band)", runCascadeSeams},
     };
     return list;
 }

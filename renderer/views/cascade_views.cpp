@@ -35,8 +35,9 @@ std::array<glm::dvec3, 8> sliceCorners(const ViewCamera& c, double a, double b) 
 void sliceSphere(const ViewCamera& c, double a, double b, double& centreDepth, double& radius) {
     const double k2 = c.tanHalfFovY * c.tanHalfFovY * (1.0 + c.aspect * c.aspect);  // corner offset^2 per depth^2
     centreDepth = std::min(0.5 * (a + b) * (1.0 + k2), b);
-    radius = std::sqrt(std::max((centreDepth - a) * (centreDepth - a) + a * a * k2,
-                                (b - centreDepth) * (b - centreDepth) + b * b * k2));
+    // In units of b: squared depths below 1e-154 underflow to 0 (a near plane of 1e-300, HARD_CASES 18).
+    const double ca = (centreDepth - a) / b, an = a / b, bc = (b - centreDepth) / b;
+    radius = b * std::sqrt(std::max(ca * ca + an * an * k2, bc * bc + k2));
 }
 
 // Rounded up to 1/64 of its power of two: the same size from the same inputs, whatever rounding the sphere had.
@@ -71,9 +72,14 @@ std::vector<double> cascadeFarDepths(const ProjectionSettings& projection, const
     const bool manual = projection.splits.x > 0.0f;
     double n = camera.nearPlane, f = cascadeShadowDistance(projection, camera);
     if (scene && scene->farthest > n && f > n) {
-        // Only the depths the scene covers: the practical scheme's first split then lands where things are.
-        if (!manual) n = std::min(std::max(n, scene->nearest), f);
-        f = std::min(f, scene->farthest);
+        // Only the depths the scene covers: the practical scheme's first split then lands where things are. A scene
+        // beyond the shadow distance or without depth (a quad facing the camera) leaves no range: the camera's stays.
+        const double tightNear = manual ? n : std::min(std::max(n, scene->nearest), f);
+        const double tightFar = std::min(f, scene->farthest);
+        if (tightFar > tightNear) {
+            n = tightNear;
+            f = tightFar;
+        }
     }
     if (!(f > n)) {
         why = "projection.shadowDistance: " + std::to_string(f) + " is not beyond the camera's near plane (" +
@@ -92,11 +98,20 @@ std::vector<double> cascadeFarDepths(const ProjectionSettings& projection, const
             }
             far[std::size_t(i)] = split;
         } else {
+            // The logarithmic term starts no nearer than f x float's epsilon: the GPU cannot tell nearer depths
+            // from the camera's (positions are floats), and a glTF camera's znear may be any positive double, so
+            // f / n would overflow (1e-307) and the first cascade would be too small for a float matrix.
             const double t = double(i + 1) / count, lambda = double(projection.splitLambda);
-            far[std::size_t(i)] = lambda * n * std::pow(f / n, t) + (1.0 - lambda) * (n + (f - n) * t);
+            const double logNear = std::max(n, f * double(std::numeric_limits<float>::epsilon()));
+            far[std::size_t(i)] = lambda * logNear * std::pow(f / logNear, t) + (1.0 - lambda) * (n + (f - n) * t);
         }
     }
-    return far;
+    // Practical splits of a range a few ulps wide round onto each other (or onto n): a zero-width slice holds
+    // nothing and its blend band would divide by zero. It is merged into the next one (fewer cascades).
+    std::vector<double> merged;
+    for (double depth : far)
+        if (depth > (merged.empty() ? n : merged.back())) merged.push_back(depth);
+    return merged;
 }
 
 std::vector<CascadeSlice> cascadeSlices(const ProjectionSettings& projection, const ViewCamera& camera,

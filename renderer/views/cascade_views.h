@@ -23,8 +23,12 @@ DepthRange boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, cons
 // logarithmic split n (f/n)^(i/N) and the uniform split n + (f - n) i/N). With `scene` (the tight fit) the
 // practical scheme spans only the depths the scene covers: with a tiny camera near plane its first cascades would
 // otherwise hold empty air (HARD_CASES 18); the stable fit leaves that to splitLambda, the splits or the shadow
-// distance, so that its cascades keep their size as the camera moves. Empty with `why` naming the key when the splits cannot be used (beyond the shadow
-// distance, or the shadow distance before the camera's near plane).
+// distance, so that its cascades keep their size as the camera moves (a scene beyond the shadow distance or
+// without depth leaves the camera's range). Strictly increasing and finite (HARD_CASES 18): the logarithmic term
+// starts no nearer than f x float's epsilon (a near plane of 1e-307 would overflow f/n and give a cascade no float
+// matrix can hold), and practical splits that round onto each other in a range a few ulps wide are merged (fewer
+// than cascadeCount come back). Empty with `why` naming the key when the splits cannot be used (beyond the shadow
+// distance, or the shadow distance not beyond the camera's near plane).
 std::vector<double> cascadeFarDepths(const ProjectionSettings& projection, const ViewCamera& camera,
                                      std::string& why, const DepthRange* scene = nullptr);
 

@@ -78,12 +78,45 @@ TEST_F(CascadesAccuracy, StableFitDoesNotFlickerUnderCameraMotionWhileItsCascade
     ASSERT_TRUE(first.ok) << first.error;
     const FlickerReport s = stable.play(MotionKind::Camera, 1.37 * first.cascades.cascades[0].texelWorldSize, 4);
     ASSERT_TRUE(s.ok) << s.error;
-    for (const FlickerPair& pair : s.pairs) EXPECT_GT(pair.shadowViewsRendered, 0u) << "cascades follow the camera";
+    for (const FlickerPair& pair : s.pairs) {
+        EXPECT_GT(pair.shadowViewsRendered, 0u) << "cascades follow the camera";
+        EXPECT_EQ(pair.counts.vChanged, 0u) << "both halves of a pair shade the same points";
+        EXPECT_GT(pair.counts.measured, 50000u);
+    }
+    ASSERT_EQ(s.cascadeStepTexels.size(), 3u);
+    EXPECT_NEAR(s.cascadeStepTexels[0], 1.37, 1e-9);
+    EXPECT_LT(s.cascadeStepTexels[2], s.cascadeStepTexels[0]);  // a coarser cascade: fewer of its texels
     EXPECT_EQ(s.maxFlickerPercent, 0.0);
     const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_TEST_OUTPUT) / "accuracy";
     std::filesystem::create_directories(dir);
     EXPECT_EQ(writePng((dir / "cascades-textbook-stable-flicker.png").string(), s.width, s.height, 4,
                        s.overlayRgba.data(), false),
+              "");
+}
+
+// Tight: the slice's box in light space moves with the camera, so its texel grid crawls by fractions of a texel and
+// shadow edges flip from frame to frame: a sideways step of 0.37 of cascade 0's texel (no cascade's grid keeps up).
+// Each pair's first half is the new camera with the previous frame's cascades, so the flicker is the maps' alone (V
+// does not change).
+TEST_F(CascadesAccuracy, TightFitFlickersUnderSubTexelCameraTranslation) {
+    CascadedTextbook tight(CascadeFit::Tight, 0.0f);
+    tight.settings.filter.kind = FilterKind::Point;
+    const AccuracyReport first = tight.meter.measure(tight.scene, tight.settings, tight.camera, kWidth, kHeight);
+    ASSERT_TRUE(first.ok) << first.error;
+    const FlickerReport t = tight.play(MotionKind::Camera, 0.37 * first.cascades.cascades[0].texelWorldSize, 4);
+    ASSERT_TRUE(t.ok) << t.error;
+    ASSERT_EQ(t.cascadeStepTexels.size(), 3u);
+    EXPECT_NEAR(t.cascadeStepTexels[0], 0.37, 1e-9);
+    for (const FlickerPair& pair : t.pairs) {
+        EXPECT_GT(pair.shadowViewsRendered, 0u);
+        EXPECT_EQ(pair.counts.vChanged, 0u);
+        EXPECT_GT(pair.counts.flicker, 20u) << "pair " << pair.from << ": the tight fit's grid crawls";
+    }
+    EXPECT_GT(t.maxFlickerPercent, 0.0);
+    const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_TEST_OUTPUT) / "accuracy";
+    std::filesystem::create_directories(dir);
+    EXPECT_EQ(writePng((dir / "cascades-textbook-tight-flicker.png").string(), t.width, t.height, 4,
+                       t.overlayRgba.data(), false),
               "");
 }
 

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace shadowlab;
@@ -247,4 +248,93 @@ TEST(Cascades, TightSplitsStartWhereTheSceneDoesStableOnesDoNotMove) {
     std::string why;
     EXPECT_EQ((*stable)[0].slice.farDepth, cascadeFarDepths(light.projection, camera, why)[0]);
     EXPECT_LT((*stable)[0].slice.farDepth, range.nearest);  // the stable fit's first cascade holds empty air here
+}
+
+// HARD_CASES 18: a near plane so small that f / n overflows (a glTF camera's znear may be any positive double). The
+// practical splits stay finite and increasing (the logarithmic term starts at f x float's epsilon), and every
+// cascade's matrix stays finite in float, as the GPU gets it, for both fits.
+TEST(Cascades, PracticalSplitsStayFiniteWhenFarOverNearOverflows) {
+    ViewCamera camera = eyeCamera({0, 1.7, 0}, {0, 0, -1});
+    camera.nearPlane = 1e-307;
+    camera.farPlane = 1e4;  // f / n = 1e311 > DBL_MAX
+    ProjectionSettings p;
+    p.cascadeCount = 4;
+    p.splitLambda = 1.0f;
+    std::string why;
+    const std::vector<double> far = cascadeFarDepths(p, camera, why);
+    ASSERT_EQ(far.size(), 4u) << why;
+    double before = camera.nearPlane;
+    for (std::size_t i = 0; i < far.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(far[i])) << "split " << i;
+        EXPECT_GT(far[i], before) << "split " << i;
+        before = far[i];
+    }
+    const double logNear = 1e4 * double(std::numeric_limits<float>::epsilon());
+    EXPECT_NEAR(far[1], std::sqrt(logNear * 1e4), 1e-9);  // n' (f/n')^(1/2)
+    for (CascadeFit fit : {CascadeFit::Stable, CascadeFit::Tight}) {
+        LightSettings light = sun();
+        light.projection.splitLambda = 1.0f;
+        light.projection.cascadeFit = fit;
+        std::string error;
+        const Bounds bounds = cityBounds();
+        const auto views = buildLightViews(light, 0, bounds, bounds.centreOrOrigin(), &camera, error);
+        ASSERT_TRUE(views) << error;
+        for (const ShadowView& v : *views) {
+            const glm::mat4 gpu(v.space.viewProjection());
+            for (int c = 0; c < 4; ++c)
+                for (int r = 0; r < 4; ++r) EXPECT_TRUE(std::isfinite(gpu[c][r])) << "fit " << int(fit) << " cascade " << v.index;
+        }
+    }
+}
+
+// A range a few ulps wide: the uniform splits round onto the near plane and onto each other. Zero-width slices are
+// merged (fewer cascades), so the depths stay strictly increasing and end at the shadow distance.
+TEST(Cascades, ZeroWidthSlicesAreMerged) {
+    ViewCamera camera = eyeCamera({0, 1.7, 0}, {0, 0, -1});
+    camera.nearPlane = 1.0;
+    camera.farPlane = std::nextafter(std::nextafter(1.0, 2.0), 2.0);  // two ulps beyond the near plane
+    ProjectionSettings p;
+    p.cascadeCount = 4;
+    p.splitLambda = 0.0f;
+    std::string why;
+    const std::vector<double> far = cascadeFarDepths(p, camera, why);
+    ASSERT_FALSE(far.empty()) << why;
+    EXPECT_LT(far.size(), 4u);
+    double before = camera.nearPlane;
+    for (double depth : far) {
+        EXPECT_GT(depth, before);
+        before = depth;
+    }
+    EXPECT_EQ(far.back(), camera.farPlane);
+    LightSettings light = sun();
+    light.projection.splitLambda = 0.0f;
+    std::string error;
+    const Bounds bounds = cityBounds();
+    const auto views = buildLightViews(light, 0, bounds, bounds.centreOrOrigin(), &camera, error);
+    ASSERT_TRUE(views) << error;
+    EXPECT_EQ(views->size(), far.size());
+}
+
+// The tight fit tightens the splits to the depths the scene covers in reach; where that leaves no range (the scene
+// beyond the shadow distance, or a flat scene facing the camera) it keeps the camera's range instead of collapsing
+// every slice to zero width (which was refused, blaming projection.shadowDistance).
+TEST(Cascades, TightFitKeepsTheCameraRangeWhenTheSceneLeavesNone) {
+    const ViewCamera camera = eyeCamera({0, 1.7, 0}, {0, 0, -1});
+    LightSettings light = sun();
+    light.projection.cascadeFit = CascadeFit::Tight;
+    light.projection.shadowDistance = 50.0f;
+    Bounds far, flat;
+    far.extend(glm::vec3(-10.0f, 0.0f, -300.0f));  // beyond the shadow distance
+    far.extend(glm::vec3(10.0f, 5.0f, -200.0f));
+    flat.extend(glm::vec3(-10.0f, -5.0f, -30.0f));  // a wall facing the camera: one depth
+    flat.extend(glm::vec3(10.0f, 5.0f, -30.0f));
+    for (const Bounds* bounds : {&far, &flat}) {
+        std::string error;
+        const auto views = buildLightViews(light, 0, *bounds, glm::dvec3(0.0), &camera, error);
+        ASSERT_TRUE(views) << error;
+        ASSERT_EQ(views->size(), 4u);
+        EXPECT_EQ(views->back().slice.farDepth, 50.0);
+        for (std::size_t i = 1; i < views->size(); ++i)
+            EXPECT_GT((*views)[i].slice.farDepth, (*views)[i - 1].slice.farDepth);
+    }
 }
