@@ -34,7 +34,11 @@ layout(std140, binding = 0) uniform Lights { LightData uLights[LIGHT_COUNT]; };
 #endif
 
 uniform vec3 uCameraPosition;  // render-origin-relative
-uniform vec3 uCameraForward;   // unit viewing direction: cascades and the texel density measure depth along it
+uniform vec3 uCameraForward;   // unit viewing direction: the texel density measures depth along it
+// The camera the cascades were fitted to (the view's, or one frozen while the view moves): they are picked by depth
+// along its viewing direction from its eye, as the CPU's view selection does with each slice's camera.
+uniform vec3 uCascadeEye;
+uniform vec3 uCascadeForward;
 uniform float uPixelPerDepth;  // a screen pixel's world size per unit of depth (texel density view)
 uniform vec3 uBaseColor;
 uniform float uAmbient;
@@ -85,8 +89,8 @@ void directionalLight(inout Shading s, LightData L, const bool casts) {
 #if MAP_ARRAYS_2D > 0
 #if CASCADES > 0
     if (casts && L.views.y > 0.0) {
-        shadow = cascadedShadow(L, vWorldPosition, offsetLookup(s, L, 1.0) - vWorldPosition, uCameraPosition,
-                                uCameraForward);
+        shadow = cascadedShadow(L, vWorldPosition, offsetLookup(s, L, 1.0) - vWorldPosition, uCascadeEye,
+                                uCascadeForward);
     } else
 #endif
     if (casts) shadow = shadow2D(L, offsetLookup(s, L, L.depth.z), L.direction.xyz, L.depth.z);
@@ -183,7 +187,8 @@ void main() {
 #elif defined(VIEW_CASCADES)
     // The lit picture tinted by the cascade that holds the pixel (its blend band mixes the next one's tint); grey
     // beyond the shadow distance or for a light without cascades.
-    const vec3 tints[4] = vec3[4](vec3(1.0, 0.25, 0.2), vec3(0.25, 0.9, 0.3), vec3(0.25, 0.45, 1.0), vec3(1.0, 0.9, 0.2));
+    // The colours: renderer/shading/cascade_tints.h (the editor's frusta and lists show the same ones).
+    const vec3 tints[4] = CASCADE_TINTS;
     vec3 tint = vec3(0.5);
 #if CASCADES > 0
     if (gCascadeView >= 0) tint = tints[gCascadeView];

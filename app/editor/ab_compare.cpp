@@ -114,7 +114,7 @@ std::vector<std::string> abLabel(const EditorState& state, bool sideA, const std
 AbRenderer::Key AbRenderer::keyFor(const EditorState& state, const Settings& settingsA, const Camera& camera, int width,
                                    int height, bool frustum) {
     return Key{settingsA, camera.position, camera.target, camera.fovYDeg, state.scene.get(), width, height, frustum,
-               frustum ? state.selectedLight : 0};
+               frustum ? state.selectedLight : 0, state.frozenCascadeCamera};
 }
 
 bool AbRenderer::due(const EditorState& state, const Settings& settingsA, const Camera& camera, int width, int height,
@@ -141,7 +141,8 @@ bool AbRenderer::render(EditorState& state, const Settings& settingsA, const Cam
     const Key key = keyFor(state, settingsA, camera, width, height, frustum != nullptr);
     if (last_ && *last_ == key) return false;
     last_ = key;
-    FrameStats stats = renderer_->render(*state.scene, settingsA, camera, target_);
+    FrameStats stats = renderer_->render(*state.scene, settingsA, camera, target_,
+                                         key.fitCamera ? &*key.fitCamera : nullptr);
     // A runs only when it changed, so its timer queries would never be read by a later frame: wait for them now.
     if (stats.ok) renderer_->waitForTimings(stats);
     if (!stats.ok) {
@@ -150,7 +151,9 @@ bool AbRenderer::render(EditorState& state, const Settings& settingsA, const Cam
         return true;
     }
     if (frustum) {
-        if (std::string error = frustum->draw(stats, lightVolumes(stats, state.selectedLight), target_); !error.empty())
+        const std::vector<OverlayLines> lines =
+            lightOverlayLines(stats, state.selectedLight, FrustumOverlayStyle{}.color, key.fitCamera.has_value());
+        if (std::string error = frustum->draw(stats, lines, target_); !error.empty())
             state.say("A/B: light frustum: " + error, true);
     }
     if (state.ab.haveStatsA) stats = withShadowTime(std::move(stats), state.ab.statsA);

@@ -56,7 +56,7 @@ std::vector<std::string> abLabel(const EditorState& state, bool sideA, const std
 class AbRenderer {
 public:
     // Runs A's passes if anything A depends on changed since its last frame; true when it did. `frustum` (may be null)
-    // draws the selected light's volume over A as over B.
+    // draws the selected light's volume over A as over B. A's cascades fit to the frozen camera as B's do.
     bool render(EditorState& state, const Settings& settingsA, const Camera& camera, int width, int height,
                 LightFrustumOverlay* frustum);
     // Whether render() with these inputs would run a pass.
@@ -74,6 +74,7 @@ private:
         int width = 0, height = 0;
         bool frustum = false;
         std::size_t frustumLight = 0;  // the selected light, while its volume is drawn
+        std::optional<FitCamera> fitCamera;  // EditorState::frozenCascadeCamera
         bool operator==(const Key&) const = default;
     };
     static Key keyFor(const EditorState& state, const Settings& settingsA, const Camera& camera, int width, int height,

@@ -224,6 +224,8 @@ void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& s
     state_.scenePathInput = spec;
     renderer_->sceneChanged();
     abRenderer_.sceneChanged();
+    state_.frozenCascadeCamera.reset();  // it was the old scene's
+    state_.viewMilliseconds.clear();
     for (std::size_t i = 0; i < state_.scene->warnings.size() && i < 3; ++i)
         state_.say(state_.scene->name + ": " + state_.scene->warnings[i]);
     // A new scene gets the preset's camera (auto-framed by default, and on a scene it was not tuned on).
@@ -251,6 +253,18 @@ Settings Editor::previewed(Settings s) const {
     return s;
 }
 
+Editor::RenderKey Editor::renderKey() const {
+    return RenderKey{effectiveSettings(),
+                     orbit_->eye(),
+                     orbit_->target(),
+                     state_.scene.get(),
+                     int(viewportRect_.z),
+                     int(viewportRect_.w),
+                     state_.showLightFrustum,
+                     state_.showLightFrustum ? state_.selectedLight : 0,
+                     state_.frozenCascadeCamera};
+}
+
 void Editor::renderViewport() {
     if (!state_.scene || !orbit_) return;
     const int w = int(viewportRect_.z);
@@ -265,8 +279,7 @@ void Editor::renderViewport() {
         lastRendered_.reset();
     }
     keepSessionBeforeRiskyChange();  // also for changes made outside the UI (a search's result)
-    RenderKey key{effectiveSettings(), orbit_->eye(), orbit_->target(), state_.scene.get(), w, h,
-                  state_.showLightFrustum, state_.showLightFrustum ? state_.selectedLight : 0};
+    RenderKey key = renderKey();
     // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
     // it is stale); a settings or scene change still renders, so the shadow map, its viewer and Stats follow the edit.
     const bool overlayHidesView = state_.accuracy.showOverlay && bool(state_.accuracy.overlayTexture);
@@ -280,7 +293,8 @@ void Editor::renderViewport() {
     }
 
     const double start = secondsNow();
-    FrameStats stats = renderer_->render(*state_.scene, key.settings, orbit_->toCamera(), target_);
+    FrameStats stats = renderer_->render(*state_.scene, key.settings, orbit_->toCamera(), target_,
+                                         key.fitCamera ? &*key.fitCamera : nullptr);
     // A frame's error or warning is said when it appears, not again with every frame while it lasts (repeated,
     // it would replace the result of whatever the user did meanwhile on the status line).
     std::vector<std::string> problems = stats.ok ? stats.warnings : std::vector<std::string>{stats.error};
@@ -310,11 +324,15 @@ void Editor::renderViewport() {
     }
     state_.clampSelectedLight();
     if (state_.showLightFrustum) {
-        // The selected light's volume: its one view, or a point light's six cube faces.
-        if (std::string error = frustum_->draw(stats, lightVolumes(stats, state_.selectedLight), target_);
-            !error.empty())
+        // The selected light's volume: its one view, a point light's six cube faces or its cascades (each in its
+        // tint, with the frozen camera's slice it answers for).
+        const std::vector<OverlayLines> lines = lightOverlayLines(
+            stats, state_.selectedLight, FrustumOverlayStyle{}.color, key.fitCamera.has_value());
+        if (std::string error = frustum_->draw(stats, lines, target_); !error.empty())
             state_.say("light frustum: " + error, true);
     }
+    for (const ShadowViewStats& view : stats.views)
+        if (view.ran && view.milliseconds) state_.viewMilliseconds[{view.light, view.kind, view.index}] = *view.milliseconds;
     state_.lastFrameMs = (secondsNow() - start) * 1000.0;
     const float shadowMs = stats.shadowPass.ran && stats.shadowPass.milliseconds ? float(*stats.shadowPass.milliseconds)
                                                                                  : 0.0f;
@@ -590,9 +608,7 @@ bool Editor::busy() const {
     // Nothing to draw into (no scene yet, or a minimized window): wait for events rather than spin.
     if (!state_.scene || !orbit_ || viewportRect_.z < 16.0f || viewportRect_.w < 16.0f) return false;
     if (!lastRendered_) return true;
-    const RenderKey key{effectiveSettings(),       orbit_->eye(),       orbit_->target(),
-                        state_.scene.get(),        int(viewportRect_.z), int(viewportRect_.w),
-                        state_.showLightFrustum,   state_.showLightFrustum ? state_.selectedLight : 0};
+    const RenderKey key = renderKey();
     // A stale map picture matters only while the viewer shows it (its tab may be closed: it redraws when opened).
     const bool mapPictureDue = mapPictureStale_ && state_.viewer.width >= 8;
     return !(key == *lastRendered_) || mapPictureDue || abViewDue();

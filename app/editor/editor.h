@@ -111,8 +111,10 @@ private:
         int width = 0, height = 0;
         bool frustum = false;
         std::size_t frustumLight = 0;  // whose volume the overlay draws (the selected light)
+        std::optional<FitCamera> fitCamera;  // the frozen camera the cascades fit to
         bool operator==(const RenderKey&) const = default;
     };
+    RenderKey renderKey() const;  // what a frame now would be made from
 
     double now() const { return options_.clock(); }  // the editor's clock (seconds)
     void pollSceneLoad();
@@ -149,7 +151,12 @@ private:
     ImVec4 viewportWindowRect() const;
     void drawViewport();
     void viewModeCombo();
+    // "freeze cascades": keeps the cascades fitted to the view's camera as it is now (or lets them follow it again).
+    void freezeCascadesToggle();
     void drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize);
+    // Bottom right, while the view or the frustum shows cascades: each cascade's colour and index, and whether they
+    // are frozen.
+    void drawCascadeLegend(ImVec2 imagePos, ImVec2 imageSize);
     void viewportCameraInput(ImVec2 pos, ImVec2 size);
     // Fly mode while the right button is held on the view: mouse look, WASD / Q E travel per second of the clock.
     void flyInput();

@@ -9,6 +9,7 @@
 #include "editor/settings_edit.h"
 #include "editor/sweep_state.h"
 #include "frame/frame_stats.h"
+#include "frame/renderer.h"
 #include "overlay/shadow_map_view.h"
 #include "scene/async_scene_loader.h"
 #include "scene/scene.h"
@@ -85,6 +86,10 @@ struct EditorState {
 
     // View options that are not settings (they never mark the preset as changed).
     bool showLightFrustum = true;
+    // "freeze cascades": the camera the cascades stay fitted to while the view moves on (set when frozen, from the
+    // view's camera at that moment); none: they follow the view. The frustum overlay then also draws each cascade's
+    // slice of that camera's frustum, so the user can fly out and look at the fit.
+    std::optional<FitCamera> frozenCascadeCamera;
     bool animateLight = false;
     float animateDegreesPerSecond = 30.0f;
     double animatedAzimuthDeg = 0.0;  // added to the light's azimuth while animating (a preview)
@@ -95,6 +100,7 @@ struct EditorState {
     bool haveStats = false;
     FrameStats lastShadowPass;  // the newest frame whose shadow pass ran (its triangles, casters, time)
     FrameHistory history;
+    std::map<ShadowViewId, double> viewMilliseconds;  // each view's newest measured pass time (shown while it is kept)
     long renderedFrames = 0;
     long idleFrames = 0;        // frames where nothing changed and no pass ran
     double lastFrameMs = 0.0;   // wall time of the newest rendered frame (renderer + readiness)

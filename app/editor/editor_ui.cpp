@@ -125,6 +125,16 @@ void Editor::drawViewport() {
     flow(checkboxWidth("light frustum"));
     ImGui::Checkbox("light frustum", &state_.showLightFrustum);
     state_.controls.recordLastItem("viewport.frustum");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The selected light's volume over the view; a cascaded light's cascades each in the colour "
+                          "of the cascades view");
+    const bool cascaded = std::any_of(state_.stats.views.begin(), state_.stats.views.end(), [](const ShadowViewStats& v) {
+        return v.hasView && v.kind == ShadowViewKind::Cascade;
+    });
+    if (cascaded || state_.frozenCascadeCamera) {  // only where there are cascades to freeze (or to let go)
+        flow(checkboxWidth("freeze cascades"));
+        freezeCascadesToggle();
+    }
     flow(buttonWidth("Frame (F)"));
     if (ImGui::Button("Frame (F)")) frameScene();
     state_.controls.recordLastItem("viewport.frame");
@@ -185,6 +195,7 @@ void Editor::drawViewport() {
                 draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(target_.colorTexture())),
                                imagePos, imageEnd, ImVec2(0, 1), ImVec2(1, 0));
             if (a.showOverlay) drawOverlayNotes(imagePos, imageSize);
+            drawCascadeLegend(imagePos, imageSize);
         } else {
             draw->AddText(ImVec2(imagePos.x + 12, imagePos.y + 12), IM_COL32(200, 200, 200, 255),
                           state_.loading ? "loading the scene..." : "no frame yet");
@@ -276,6 +287,26 @@ void Editor::pickPivot(ImVec2 imagePos) {
     state_.say(text);
 }
 
+void Editor::freezeCascadesToggle() {
+    bool frozen = state_.frozenCascadeCamera.has_value();
+    if (ImGui::Checkbox("freeze cascades", &frozen) && orbit_) {
+        if (frozen) {
+            const double aspect = viewportRect_.w > 0 ? double(viewportRect_.z) / double(viewportRect_.w) : 1.0;
+            state_.frozenCascadeCamera = FitCamera{orbit_->toCamera(), aspect};
+            state_.say("cascades frozen: they stay fitted to the camera as it is now; move the view to look at them "
+                       "(the light frustum shows each cascade's box and its slice of the frozen camera's frustum)");
+        } else {
+            state_.frozenCascadeCamera.reset();
+            state_.say("cascades follow the view's camera again");
+        }
+    }
+    state_.controls.recordLastItem("viewport.freezeCascades");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Keep the cascades fitted to the camera as it is now while the view moves: fly out and see "
+                          "each cascade's box and the slice of the frozen camera's frustum it covers (light frustum "
+                          "on). A view setting, never saved; the Probe and Accuracy fit to the view's camera");
+}
+
 void Editor::viewModeCombo() {
     // lit / shadow / light-depth are the renderer's view setting (saved in presets); the accuracy overlay is the
     // editor's own view of the newest measurement and never a setting.
@@ -309,6 +340,31 @@ void Editor::viewModeCombo() {
                           "measurement (red acne, blue leak, yellow true boundary; or each wrong pixel coloured by its "
                           "cause)");
     showFieldError(state_, "view");
+}
+
+void Editor::drawCascadeLegend(ImVec2 imagePos, ImVec2 imageSize) {
+    int count = 0;
+    for (const ShadowViewStats& v : state_.stats.views)
+        if (v.hasView && v.kind == ShadowViewKind::Cascade) count = std::max(count, v.index + 1);
+    const bool shown = state_.settings.view == ViewMode::Cascades || state_.showLightFrustum;
+    if (count == 0 || !(shown || state_.frozenCascadeCamera)) return;
+    const char* title = state_.frozenCascadeCamera ? "cascades (frozen)" : "cascades";
+    const float pad = 6.0f, h = ImGui::GetTextLineHeight(), digit = ImGui::CalcTextSize("0").x;
+    const float width = ImGui::CalcTextSize(title).x + float(count) * (h + digit + 12.0f) + 3.0f * pad;
+    const ImVec2 at(imagePos.x + imageSize.x - width - pad, imagePos.y + imageSize.y - h - 3.0f * pad);
+    if (at.x < imagePos.x || at.y < imagePos.y) return;  // no room in a tiny view
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(at, ImVec2(at.x + width, at.y + h + 2.0f * pad), IM_COL32(0, 0, 0, 170), 3.0f);
+    float x = at.x + pad;
+    draw->AddText(ImVec2(x, at.y + pad), IM_COL32(230, 230, 230, 255), title);
+    x += ImGui::CalcTextSize(title).x + pad;
+    for (int i = 0; i < count; ++i) {
+        draw->AddRectFilled(ImVec2(x, at.y + pad + 2.0f), ImVec2(x + h - 4.0f, at.y + pad + h - 2.0f), cascadeColour(i));
+        const std::string index = std::to_string(i);
+        draw->AddText(ImVec2(x + h, at.y + pad), IM_COL32(230, 230, 230, 255), index.c_str());
+        x += h + digit + 12.0f;
+    }
+    state_.controls.record("viewport.cascadeLegend", ControlRect{at.x, at.y, width, h + 2.0f * pad});
 }
 
 void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {

@@ -1,6 +1,7 @@
 #include "editor/field_widgets.h"
 
 #include "settings/settings_fields.h"
+#include "shading/cascade_tints.h"
 
 #include <string>
 
@@ -123,6 +124,20 @@ void fieldHelp(const EditorState&, const char* key) {
 
 void showFieldError(const EditorState& state, const char* key) {
     if (const std::string* error = state.fieldError(key)) errorText(*error);
+}
+
+ImU32 cascadeColour(int index) {
+    const glm::vec3 c = cascadeTint(index);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f));
+}
+
+void cascadeSwatch(int index) {
+    const float side = ImGui::GetTextLineHeight() * 0.8f;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float y = at.y + (ImGui::GetTextLineHeight() - side) * 0.5f;
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(at.x, y), ImVec2(at.x + side, y + side), cascadeColour(index));
+    ImGui::Dummy(ImVec2(side, ImGui::GetTextLineHeight()));
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
 }
 
 void warningText(const std::string& text) {

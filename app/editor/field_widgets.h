@@ -32,6 +32,11 @@ bool lightHeader(EditorState& state);
 void fieldHelp(const EditorState& state, const char* key);
 void showFieldError(const EditorState& state, const char* key);
 
+// Cascade `index`'s colour (shading/cascade_tints.h: the tint view's and the frusta's), and a square of it inline
+// before the next item (the lists that name cascades mark them with it).
+ImU32 cascadeColour(int index);
+void cascadeSwatch(int index);
+
 // Text in the theme's warning / error / disabled colours, wrapped at the panel's edge (nothing cut in a sidebar).
 void warningText(const std::string& text);
 void noteText(const std::string& text);

@@ -220,7 +220,10 @@ struct AccuracyMeter::Impl {
             failed.error = error;
             return failed;
         }
-        return renderer.render(drawn, toolSettings, camera, toolTarget, shadowCamera);
+        // The shadow camera sees through the same view (this target's aspect).
+        const std::optional<FitCamera> fit =
+            shadowCamera ? std::optional<FitCamera>(FitCamera{*shadowCamera, double(width) / height}) : std::nullopt;
+        return renderer.render(drawn, toolSettings, camera, toolTarget, fit ? &*fit : nullptr);
     }
 
     // The true boundary in this light space's texels (rebuilt when the map's size or projection changed).

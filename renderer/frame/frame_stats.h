@@ -35,6 +35,7 @@ struct ShadowViewStats {
     std::optional<double> milliseconds;
     int resolution = 0;
     DepthFormat format = DepthFormat::D32F;
+    std::size_t memoryBytes = 0;  // its layer of the map array
     int castersDrawn = 0;
     int castersSkipped = 0;  // outside the view's volume
     std::size_t triangles = 0;

@@ -104,7 +104,7 @@ const ShadowMap* Renderer::viewMap(std::size_t light, int face) const {
 }
 
 FrameStats Renderer::render(const Scene& scene, const Settings& requested, const Camera& camera,
-                            RenderTarget& target, const Camera* shadowCamera) {
+                            RenderTarget& target, const FitCamera* fitCamera) {
     FrameStats stats;
     stats.timingSource = timer_.sourceLabel();
     if (std::vector<std::string> problems = requested.validate(); !problems.empty()) {
@@ -137,10 +137,11 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
     // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention).
-    const Camera& followed = shadowCamera ? *shadowCamera : camera;
-    const ViewCamera viewCamera = viewCameraOf(followed, double(target.width()) / target.height(), stats.renderOrigin);
+    const ViewCamera viewCamera = viewCameraOf(camera, double(target.width()) / target.height(), stats.renderOrigin);
+    const ViewCamera cascadeCamera =
+        fitCamera ? viewCameraOf(fitCamera->camera, fitCamera->aspect, stats.renderOrigin) : viewCamera;
     const ShadowPlan plan = planShadowViews(
-        settings, scene.bounds, stats.renderOrigin, &viewCamera, casterSpheres(*gpuScene_), info_.maxTextureSize,
+        settings, scene.bounds, stats.renderOrigin, &cascadeCamera, casterSpheres(*gpuScene_), info_.maxTextureSize,
         [&](std::size_t light) -> std::optional<KeptMap> {
             // A light's current map: any of its views' (they share one size and format).
             for (const auto& [id, state] : views_)
@@ -208,6 +209,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.slice = p.view.slice;
         entry.resolution = array.resolution();
         entry.format = array.format();
+        entry.memoryBytes = state.map.memoryBytes();
 
         const ViewInputs inputs{viewFingerprint, p.view.space.viewProjection(), light, state.map.generation(),
                                 p.castersInVolume == 0, p.view.kind == ShadowViewKind::Cascade};
@@ -294,9 +296,10 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     in.scene = gpuScene_.get();
     in.settings = &settings;
     in.viewProjection = stats.cameraViewProjection;
-    // The cascades are chosen by depth from the camera they were fitted to (the CPU's selectView does the same).
-    in.cameraPosition = followed.position - stats.renderOrigin;
+    in.cameraPosition = camera.position - stats.renderOrigin;
     in.cameraForward = viewCamera.forward;
+    in.cascadeEye = cascadeCamera.eye;
+    in.cascadeForward = cascadeCamera.forward;
     in.pixelPerDepth = 2.0 * viewCamera.tanHalfFovY / double(target.height());
     in.renderOrigin = stats.renderOrigin;
     std::map<MapGroup, int> arrayIndex;

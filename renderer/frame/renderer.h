@@ -22,18 +22,26 @@
 
 namespace shadowlab {
 
+// The camera a frame's cascades fit to when it is not the one the picture is drawn from (the editor's "freeze the
+// cascades' camera": the user flies out and looks at cascades fitted to where the camera was), with the aspect
+// (width / height) of the view it was frozen in.
+struct FitCamera {
+    Camera camera;
+    double aspect = 1.0;
+    bool operator==(const FitCamera&) const = default;
+};
+
 class Renderer {
 public:
     // Needs a current GL 4.5 context. Throws std::runtime_error if the built-in shaders do not build.
     Renderer();
 
     // Invalid settings (see Settings::validate) or a light that cannot be built: nothing is drawn and
-    // FrameStats::error says why; the renderer keeps its previous state.
-    // `shadowCamera`: the camera the shadow views follow and the cascades are chosen by (null: `camera`). The flicker
-    // measure draws frame f+1's pixels with frame f's cascades through it; it is the specular's view point too, so
-    // only the shadow factor of such a frame means anything.
+    // FrameStats::error says why; the renderer keeps its previous state. `fitCamera`: the camera cascades fit to and
+    // are picked by, when not `camera` (nullptr: `camera`): the editor's frozen cascades, and the flicker
+    // measure, which draws frame f+1's pixels with frame f's cascades.
     FrameStats render(const Scene& scene, const Settings& settings, const Camera& camera, RenderTarget& target,
-                      const Camera* shadowCamera = nullptr);
+                      const FitCamera* fitCamera = nullptr);
 
     // Call after editing a Scene in place (geometry or materials), so the next frame re-uploads it.
     void sceneChanged() { gpuScene_.reset(); }

@@ -1,6 +1,8 @@
 #include "overlay/light_frustum_overlay.h"
 
 #include "gl/program.h"
+#include "shading/cascade_tints.h"
+#include "views/cascade_views.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
@@ -72,6 +74,35 @@ std::vector<glm::dvec3> lightVolumeLines(const LightSpace& light) {
     return lines;
 }
 
+std::vector<glm::dvec3> cascadeSliceLines(const CascadeSlice& slice) {
+    const std::array<glm::dvec3, 8> c = sliceCorners(slice.camera, slice.nearDepth, slice.farDepth);
+    const int ring[4] = {0, 1, 3, 2};  // around a face (sliceCorners' order)
+    std::vector<glm::dvec3> lines;
+    for (int i = 0; i < 4; ++i) {
+        const int a = ring[i], b = ring[(i + 1) % 4];
+        addLine(lines, c[std::size_t(a)], c[std::size_t(b)]);          // near face
+        addLine(lines, c[std::size_t(4 + a)], c[std::size_t(4 + b)]);  // far face
+        addLine(lines, c[std::size_t(a)], c[std::size_t(4 + a)]);      // side edges
+    }
+    return lines;
+}
+
+std::vector<OverlayLines> lightOverlayLines(const FrameStats& stats, std::size_t light, const glm::vec4& color,
+                                            bool slices) {
+    std::vector<OverlayLines> out;
+    for (const ShadowViewStats& view : stats.views) {
+        if (!view.hasView || view.light != light) continue;
+        if (view.kind != ShadowViewKind::Cascade) {
+            out.push_back({lightVolumeLines(view.space), color});
+            continue;
+        }
+        const glm::vec4 tint(cascadeTint(view.index), 1.0f);
+        out.push_back({lightVolumeLines(view.space), tint});
+        if (slices) out.push_back({cascadeSliceLines(view.slice), tint});
+    }
+    return out;
+}
+
 LightFrustumOverlay::LightFrustumOverlay()
     : program_(gl::buildProgram({{GL_VERTEX_SHADER, "overlay_lines.vert.glsl"},
                                  {GL_FRAGMENT_SHADER, "overlay_lines.frag.glsl"}},
@@ -92,19 +123,38 @@ std::string LightFrustumOverlay::draw(const FrameStats& stats, RenderTarget& tar
 
 std::string LightFrustumOverlay::draw(const FrameStats& stats, const std::vector<LightSpace>& volumes,
                                       RenderTarget& target, const FrustumOverlayStyle& style) {
+    std::vector<OverlayLines> lines;  // a matrix that is not finite gives points that are not: draw refuses them
+    for (const LightSpace& volume : volumes) lines.push_back({lightVolumeLines(volume), style.color});
+    return draw(stats, lines, target, style);
+}
+
+std::string LightFrustumOverlay::draw(const FrameStats& stats, const std::vector<OverlayLines>& lines,
+                                      RenderTarget& target, const FrustumOverlayStyle& style) {
     if (!stats.ok) return "no light volume to draw: the frame was not rendered (" + stats.error + ")";
     if (!allFinite(stats.cameraViewProjection))
         return "no light volume to draw: the camera's matrices are not finite";
-    for (const LightSpace& volume : volumes)
-        if (!allFinite(volume.viewProjection()))
-            return "no light volume to draw: the light's matrices are not finite";
-    if (target.width() < 1) return "no light volume to draw: the view has no size";
-    if (volumes.empty()) return {};  // a light without shadow views has no volume
-
     std::vector<glm::vec3> points;
-    for (const LightSpace& volume : volumes)
-        for (const glm::dvec3& p : lightVolumeLines(volume)) points.emplace_back(p);
+    std::vector<GLint> firsts;
+    for (const OverlayLines& group : lines) {
+        firsts.push_back(GLint(points.size()));
+        for (const glm::dvec3& p : group.points) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                return "no light volume to draw: the light's matrices are not finite";
+            points.emplace_back(p);
+        }
+    }
+    if (target.width() < 1) return "no light volume to draw: the view has no size";
+    if (points.empty()) return {};  // a light without shadow views has no volume
+    firsts.push_back(GLint(points.size()));
     glNamedBufferData(vertices_.id(), GLsizeiptr(points.size() * sizeof(glm::vec3)), points.data(), GL_STREAM_DRAW);
+    // Each group in its colour; `alpha` scales the colours' opacity.
+    const auto drawGroups = [&](float alpha) {
+        for (std::size_t g = 0; g < lines.size(); ++g) {
+            const glm::vec4& c = lines[g].color;
+            glUniform4f(colorLocation_, c.r, c.g, c.b, c.a * alpha);
+            glDrawArrays(GL_LINES, firsts[g], firsts[g + 1] - firsts[g]);
+        }
+    };
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
     glViewport(0, 0, target.width(), target.height());
@@ -121,12 +171,10 @@ std::string LightFrustumOverlay::draw(const FrameStats& stats, const std::vector
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     if (style.hiddenAlpha > 0.0f) {
         glDepthFunc(GL_GREATER);  // behind the scene's surfaces
-        glUniform4f(colorLocation_, style.color.r, style.color.g, style.color.b, style.color.a * style.hiddenAlpha);
-        glDrawArrays(GL_LINES, 0, GLsizei(points.size()));
+        drawGroups(style.hiddenAlpha);
     }
     glDepthFunc(GL_LEQUAL);
-    glUniform4fv(colorLocation_, 1, glm::value_ptr(style.color));
-    glDrawArrays(GL_LINES, 0, GLsizei(points.size()));
+    drawGroups(1.0f);
 
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);

@@ -169,6 +169,9 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
             glUniform3fv(u.cameraPosition, 1, glm::value_ptr(glm::vec3(in.cameraPosition)));
             if (u.cameraForward >= 0) glUniform3fv(u.cameraForward, 1, glm::value_ptr(glm::vec3(in.cameraForward)));
             if (u.pixelPerDepth >= 0) glUniform1f(u.pixelPerDepth, float(in.pixelPerDepth));
+            if (u.cascadeEye >= 0) glUniform3fv(u.cascadeEye, 1, glm::value_ptr(glm::vec3(in.cascadeEye)));
+            if (u.cascadeForward >= 0)
+                glUniform3fv(u.cascadeForward, 1, glm::value_ptr(glm::vec3(in.cascadeForward)));
             glUniform1f(u.ambient, settings.ambient);
             glUniform1f(u.filterScale, filterScale);
             if (!units2D.empty()) glUniform1iv(u.maps2D, GLsizei(units2D.size()), units2D.data());

@@ -41,7 +41,11 @@ struct MainPassInput {
     std::vector<GLuint> samplersCube;
     glm::dmat4 viewProjection{1.0};  // render-origin-relative
     glm::dvec3 cameraPosition{0.0};  // render-origin-relative
-    glm::dvec3 cameraForward{0.0, 0.0, -1.0};  // unit: cascades are chosen by depth along it
+    glm::dvec3 cameraForward{0.0, 0.0, -1.0};  // unit: the texel density view measures depth along it
+    // The camera the cascades were fitted to (render-origin-relative eye, unit forward): they are chosen by depth
+    // along it. The view's own camera unless the cascades follow a frozen one.
+    glm::dvec3 cascadeEye{0.0};
+    glm::dvec3 cascadeForward{0.0, 0.0, -1.0};
     double pixelPerDepth = 0.0;  // a screen pixel's world size per unit of depth (texel density view)
     glm::dvec3 renderOrigin{0.0};    // subtracted from light positions
 };

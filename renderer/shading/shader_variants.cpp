@@ -1,6 +1,7 @@
 #include "shading/shader_variants.h"
 
 #include "gl/program.h"
+#include "shading/cascade_tints.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
 
@@ -26,7 +27,10 @@ std::vector<std::string> MainVariantKey::defines() const {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;
         case ViewMode::LightDepth: d.push_back("VIEW_LIGHT_DEPTH"); break;
-        case ViewMode::Cascades: d.push_back("VIEW_CASCADES"); break;
+        case ViewMode::Cascades:
+            d.push_back("VIEW_CASCADES");
+            d.push_back(cascadeTintsDefine());  // the colours the editor's lists and frusta use too
+            break;
         case ViewMode::TexelDensity: d.push_back("VIEW_TEXEL_DENSITY"); break;
     }
     d.push_back("DIR_LIGHTS " + std::to_string(lights.directional));
@@ -50,6 +54,7 @@ std::string MainVariantKey::name() const {
     std::string joined;
     for (std::string d : defines()) {
         if (d.starts_with("FILTER_TAP_OFFSETS") || d.starts_with("FILTER_GRID_RADIUS")) continue;  // the numbers follow from the filter, said by FILTER_TAPS
+        if (d.starts_with("CASCADE_TINTS")) continue;  // fixed colours, said by VIEW_CASCADES
         if (d.starts_with("FILTER_TAPS")) d = "FILTER_" + upper(filterTechnique(filter).name) +
                                               (filter == FilterKind::Pcf ? " PCF_KERNEL " + std::to_string(kernel) : "") +
                                               " " + d;
@@ -65,7 +70,8 @@ MainUniforms locateUniforms(GLuint p) {
     return {at("uViewProjection"), at("uModel"),          at("uNormalMatrix"), at("uUvTransform"),
             at("uMaps2D[0]"),      at("uMapsCube[0]"),    at("uCameraPosition"), at("uBaseColor"),
             at("uAmbient"),        at("uFilterScale"),    at("uAlphaFactor"),  at("uAlphaCutoff"),
-            at("uBaseColorTexture"), at("uCameraForward"), at("uPixelPerDepth")};
+            at("uBaseColorTexture"), at("uCameraForward"), at("uPixelPerDepth"), at("uCascadeEye"),
+            at("uCascadeForward")};
 }
 
 }  // namespace

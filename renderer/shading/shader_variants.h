@@ -42,7 +42,8 @@ struct MainVariantKey {
 // Uniform locations of a main-pass program, looked up once when it is built (-1 where the variant lacks one).
 struct MainUniforms {
     GLint viewProjection, model, normalMatrix, uvTransform, maps2D, mapsCube, cameraPosition, baseColor, ambient,
-        filterScale, alphaFactor, alphaCutoff, baseColorTexture, cameraForward, pixelPerDepth;
+        filterScale, alphaFactor, alphaCutoff, baseColorTexture, cameraForward, pixelPerDepth, cascadeEye,
+        cascadeForward;
 };
 
 struct MainProgram {

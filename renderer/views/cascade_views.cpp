@@ -16,9 +16,6 @@
 
 namespace shadowlab {
 
-namespace {
-
-// The eight corners of the camera frustum's slice between depths a and b (render-origin-relative).
 std::array<glm::dvec3, 8> sliceCorners(const ViewCamera& c, double a, double b) {
     std::array<glm::dvec3, 8> corners;
     const double ty = c.tanHalfFovY, tx = ty * c.aspect;
@@ -28,6 +25,8 @@ std::array<glm::dvec3, 8> sliceCorners(const ViewCamera& c, double a, double b) 
             for (double sy : {-1.0, 1.0}) corners[std::size_t(k++)] = c.eye + c.forward * z + c.right * (sx * tx * z) + c.up * (sy * ty * z);
     return corners;
 }
+
+namespace {
 
 // The smallest sphere holding the slice [a, b]: its centre lies on the view axis where the near and far corners are
 // equally far, or at the far face's centre when the far corners alone decide. Depends only on a, b, the field of view

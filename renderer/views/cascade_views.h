@@ -3,10 +3,15 @@
 // between its near plane and the shadow distance (views/cascade_views.cpp builds them).
 #include "views/shadow_view.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
 namespace shadowlab {
+
+// The eight corners of the camera frustum's slice between depths a and b (render-origin-relative): depth a's four
+// then b's, each in the order (-x,-y), (-x,+y), (+x,-y), (+x,+y) of the camera's right and up.
+std::array<glm::dvec3, 8> sliceCorners(const ViewCamera& camera, double a, double b);
 
 // How far the light's cascades reach from the camera: projection.shadowDistance, or the camera's far plane (0).
 double cascadeShadowDistance(const ProjectionSettings& projection, const ViewCamera& camera);

@@ -91,6 +91,9 @@ EditorHarness::EditorHarness(const EditorOptions& options, int width, int height
 }
 
 EditorHarness::~EditorHarness() {
+    // The editor's programs die with it, but one left current (the main pass's, when no overlay drew after it) stays
+    // alive until unbound; the next test's ImGui backend would then restore that dead name (GL_INVALID_VALUE).
+    glUseProgram(0);
     editor_.reset();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext(static_cast<ImGuiContext*>(imguiContext_));

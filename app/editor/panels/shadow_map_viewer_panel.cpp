@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 
 namespace shadowlab::editor {
 
@@ -80,6 +81,7 @@ void viewPicker(EditorState& state) {
         for (const ShadowViewStats& view : state.stats.views) {
             if (!view.hasView) continue;
             const bool selected = &view == shown;
+            if (view.kind == ShadowViewKind::Cascade) cascadeSwatch(view.index);  // the colour of its frustum and tint
             if (ImGui::Selectable(view.name.c_str(), selected)) {
                 v.light = view.light;
                 v.kind = view.kind;
@@ -104,6 +106,14 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
     if (!shown) {
         ImGui::TextDisabled(state.haveStats ? "no light casts a shadow: no map to show" : "no frame rendered yet");
         return;
+    }
+    if (shown->kind == ShadowViewKind::Cascade) {
+        cascadeSwatch(shown->index);
+        char slice[128];
+        std::snprintf(slice, sizeof slice, "cascade %d: depths %.4g .. %.4g in front of the camera", shown->index,
+                      shown->slice.nearDepth, shown->slice.farDepth);
+        noteText(slice);
+        state.controls.recordLastItem("viewer.cascadeSlice");
     }
     const bool spot = shown->space.perspective;
     contrastControls(v, spot, state);

@@ -1,7 +1,8 @@
 // Stats: per-pass times (labelled CPU on a software rasterizer), why the shadow pass ran, frame-time history,
-// triangles, casters and shadow-map memory; a table of the shadow views (ran or skipped, why, time).
+// triangles, casters and shadow-map memory; a table of the shadow views (ran or skipped, why, memory, time).
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "editor/view_rows.h"
 #include "shadow/shadow_map.h"
 
 #include <cstdio>
@@ -41,37 +42,45 @@ void plot(const char* label, const std::deque<float>& values, ImVec2 size) {
     ImGui::PlotLines("##plot", v.data(), int(v.size()), 0, overlay, 0.0f, top, size);
 }
 
-// One row per shadow view of the frame: whether it rendered, why (the planner's reason), its time.
+// One row per shadow view of the frame (each cube face, each cascade in its colour): whether it rendered, why (the
+// planner's reason), its map's memory, its time.
 void viewsTable(EditorState& state, const char* clock) {
-    const std::vector<ShadowViewStats>& views = state.stats.views;
-    if (views.empty()) {
+    const std::vector<ViewRow> rows = viewRows(state.stats, state.viewMilliseconds);
+    if (rows.empty()) {
         ImGui::TextDisabled("shadow views: none (no lights)");
         return;
     }
     // Every row shown (no scrolling box that hides rows) and the reasons wrapped in their column: nothing is cut.
-    if (ImGui::BeginTable("views", 4,
+    if (ImGui::BeginTable("views", 5,
                           ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("view");
         ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("memory");
         ImGui::TableSetupColumn(clock[0] == 'C' ? "ms (CPU)" : "ms (GPU)");
         ImGui::TableSetupColumn("why", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableHeadersRow();
-        for (const ShadowViewStats& v : views) {
+        for (const ViewRow& row : rows) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(v.name.c_str());
+            if (row.cascade >= 0) cascadeSwatch(row.cascade);
+            ImGui::TextUnformatted(row.name.c_str());
+            state.controls.recordLastItem("stats.view=" + row.name);
             ImGui::TableNextColumn();
-            if (v.ran)
+            if (row.ran)
                 ImGui::TextUnformatted("ran");
             else
                 ImGui::TextDisabled("skipped");
             ImGui::TableNextColumn();
-            if (v.ran && v.milliseconds)
-                ImGui::Text("%.2f", *v.milliseconds);
-            else
-                ImGui::TextDisabled("-");
+            ImGui::TextUnformatted(row.memory.c_str());
             ImGui::TableNextColumn();
-            noteText(v.reason);
+            if (row.timeFromEarlier || row.milliseconds == "-")
+                ImGui::TextDisabled("%s", row.milliseconds.c_str());
+            else
+                ImGui::TextUnformatted(row.milliseconds.c_str());
+            if (row.timeFromEarlier && ImGui::IsItemHovered())
+                ImGui::SetTooltip("its newest run's time (this frame kept its map)");
+            ImGui::TableNextColumn();
+            noteText(row.why);
         }
         ImGui::EndTable();
     }
