@@ -61,8 +61,6 @@ std::string changeReason(const MapContents& held, const MapContents& now, Shadow
     if (keys.empty() && now.viewProjection != held.viewProjection)
         reasons.push_back(kind == ShadowViewKind::Cascade ? "the camera moved (the cascade follows it)"
                                                           : "light space changed");
-    if (now.empty != held.empty)
-        reasons.push_back(now.empty ? "no caster in its volume any more" : "casters entered its volume");
     if (reasons.empty() && !kept) reasons.push_back("shadow map reallocated");
     return joinReasons(reasons);
 }
@@ -85,6 +83,12 @@ std::string newViewReason(const ShadowPlan& previous, std::size_t light, const M
         if (!keys.empty()) return joinKeys(keys) + " changed";
     }
     return "new view";
+}
+
+// Whether a caster can write to the view's map. Asked only of a view that must render: a still frame tests no
+// caster, and the first caster found ends the search.
+bool anyCasterIn(const std::vector<CasterSphere>& casters, const LightSpace& space) {
+    return std::any_of(casters.begin(), casters.end(), [&](const CasterSphere& c) { return casterInVolume(c, space); });
 }
 
 // Decides one view: its action, its reason and what its map holds once the frame has carried them out.
@@ -112,7 +116,7 @@ void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow
         p.action = ViewAction::SkipUnseen;
         p.reason = "skipped: its volume misses the camera's view";
         if (kept) p.holds = before->holds;
-    } else if (now.empty) {
+    } else if (!anyCasterIn(in.casters, p.view.space)) {
         p.action = ViewAction::Clear;
         p.reason = "skipped: no caster in its volume (map cleared)";
         p.holds = std::move(now);
@@ -198,7 +202,6 @@ ShadowPlan planShadowViews(const PlanInputs& in) {
             p.view = view;
             p.group = group;
             p.layer = plan.layers[group]++;
-            for (const CasterSphere& caster : in.casters) p.castersInVolume += casterInVolume(caster, view.space);
             plan.views.push_back(std::move(p));
         }
     }
@@ -208,7 +211,7 @@ ShadowPlan planShadowViews(const PlanInputs& in) {
     GlobalKeyChanges globals(in.settings);
     for (PlannedView& p : plan.views) {
         MapContents now{requested, plan.settings.lights[p.view.light], in.sceneFingerprint,
-                        p.view.space.viewProjection(), p.castersInVolume == 0};
+                        p.view.space.viewProjection()};
         const bool seen = !in.cameraViewProjection ||
                           volumesOverlap(p.view.space.volumeViewProjection(), *in.cameraViewProjection);
         decide(p, in, std::move(now), plan.layers.at(p.group), seen, globals);

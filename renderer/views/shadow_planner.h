@@ -39,7 +39,6 @@ struct MapContents {
     LightSettings light;                       // its light as the frame used it (a scene light with its settings)
     std::size_t sceneFingerprint = 0;
     glm::dmat4 viewProjection{0.0};
-    bool empty = false;                        // cleared: no caster in its volume
 };
 
 enum class ViewAction { Render, Clear, Keep, SkipUnseen };
@@ -48,8 +47,7 @@ struct PlannedView {
     ShadowView view;
     MapGroup group;
     int layer = 0;             // the view's layer in its group's array (a cube array: 6 per light)
-    int castersInVolume = 0;
-    ViewAction action = ViewAction::Keep;
+    ViewAction action = ViewAction::Keep;  // Clear: no caster in its volume (tested only for a view that must run)
     std::string reason;        // "first frame", "shadow.depthBias changed", "skipped: its volume misses the camera's view"
     // What its map holds once the frame has carried out the plan; nullopt: nothing usable (never rendered, or its
     // array was reallocated while it was skipped).

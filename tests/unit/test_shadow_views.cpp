@@ -175,7 +175,7 @@ TEST(ShadowPlanner, ARefusedResolutionKeepsTheLightsMapOrStopsTheFrame) {
     EXPECT_EQ(kept.views.front().group.format, DepthFormat::D24);
 }
 
-TEST(ShadowPlanner, CountsOnlyTheCastersInAViewsVolume) {
+TEST(ShadowPlanner, ClearsTheViewsWithNoCasterInTheirVolume) {
     Settings s;
     s.lights = {lightOf(LightType::Point)};
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
@@ -185,6 +185,7 @@ TEST(ShadowPlanner, CountsOnlyTheCastersInAViewsVolume) {
     const std::vector<CasterSphere> casters = {{light + glm::dvec3(0.0, -4.0, 0.0), 0.5, true}};
     const ShadowPlan plan = planOf(s, bounds, origin, casters);
     ASSERT_EQ(plan.views.size(), 6u);
-    for (const PlannedView& p : plan.views) EXPECT_EQ(p.castersInVolume, p.view.index == 3 ? 1 : 0) << viewName(p.view);
+    for (const PlannedView& p : plan.views)
+        EXPECT_EQ(p.action, p.view.index == 3 ? ViewAction::Render : ViewAction::Clear) << viewName(p.view);
 }
 
