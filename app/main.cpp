@@ -1,6 +1,7 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/bench_command.h"
 #include "cli/bench_lights.h"
+#include "cli/bench_planner.h"
 #include "cli/check_command.h"
 #include "cli/export_command.h"
 #include "cli/hardcases_command.h"
@@ -66,9 +67,15 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
     benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
-    benchCmd->add_flag("--lights", bench.lights,
-                       "many lights: each view's time, views a static frame and a moved light render, the main pass "
-                       "with 1, 2, 4, 8 ... lights shadowed and not");
+    CLI::Option* benchLights = benchCmd->add_flag(
+        "--lights", bench.lights,
+        "many lights: each view's time, views a static frame and a moved light render, the main pass with 1, 2, 4, "
+        "8 ... lights shadowed and not");
+    benchCmd->add_flag("--planner", bench.planner,
+                       "the shadow planner's CPU time per frame with 8 lights (2 cascaded suns, 3 spots, 3 point "
+                       "lights; camera moving and still), and each cascade's shadow pass against a bare depth draw of "
+                       "the casters it holds (the settings' cascaded lights, else the first sun)")
+        ->excludes(benchLights);
 
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
@@ -238,7 +245,10 @@ int main(int argc, char** argv) {
     }
 
     if (*renderCmd) return cli::runRender(render);
-    if (*benchCmd) return bench.lights ? cli::runBenchLights(bench) : cli::runBench(bench);
+    if (*benchCmd)
+        return bench.planner ? cli::runBenchPlanner(bench)
+               : bench.lights ? cli::runBenchLights(bench)
+                              : cli::runBench(bench);
     if (*editCmd) return editor_window::runEdit(edit);
     if (*measureCmd) return cli::runMeasure(measure);
     if (*tuneCmd) return cli::runTune(tune);

@@ -21,6 +21,7 @@ struct BenchOptions {
     std::vector<std::string> filters = {"point", "hardware2x2", "pcf3", "pcf5", "pcf9", "poisson"};
     std::string json;  // optional: the table as JSON
     bool lights = false;  // many lights instead: per-view times, what the planner skips, main pass per light count
+    bool planner = false;  // the planner's CPU time with 8 lights, each cascade's pass against a bare depth draw
 };
 
 int runBench(const BenchOptions& options);

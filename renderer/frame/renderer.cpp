@@ -128,30 +128,30 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         gpuSceneFingerprint_ = fingerprint;
     }
     // What casts (casters.excluded): the maps' contents change with it as with the scene.
-    const std::vector<char> casters = castingInstances(scene, settings.casters);
-    gpuScene_->setCasting(casters);
-    const std::size_t viewFingerprint = withCasters(fingerprint, casters);
+    // What casts (casters.excluded): the planner names a change of the key; the maps' contents follow it.
+    gpuScene_->setCasting(castingInstances(scene, settings.casters));
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
     const glm::dmat4 view = camera.view(stats.renderOrigin);
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
-    // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention).
+    // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention),
+    // each decided against what its map holds (the plan the previous frame carried out).
     const ViewCamera viewCamera = viewCameraOf(camera, double(target.width()) / target.height(), stats.renderOrigin);
     const ViewCamera cascadeCamera =
         fitCamera ? viewCameraOf(fitCamera->camera, fitCamera->aspect, stats.renderOrigin) : viewCamera;
-    const ShadowPlan plan = planShadowViews(
-        settings, scene.bounds, stats.renderOrigin, &cascadeCamera, casterSpheres(*gpuScene_), info_.maxTextureSize,
-        [&](std::size_t light) -> std::optional<KeptMap> {
-            // A light's current map: any of its views' (they share one size and format).
-            for (const auto& [id, state] : views_)
-                if (id.light == light && state.map.valid()) return KeptMap{state.map.resolution(), state.map.format()};
-            return std::nullopt;
-        });
+    const std::vector<CasterSphere> spheres = casterSpheres(*gpuScene_);
+    // Cascades follow the fit camera; what the picture's camera cannot see is still judged from the picture's camera.
+    ShadowPlan plan = planShadowViews({scene, requested, stats.renderOrigin, &cascadeCamera, stats.cameraViewProjection,
+                                       spheres, fingerprint, info_.maxTextureSize,
+                                       previousPlan_ ? &*previousPlan_ : nullptr,
+                                       std::exchange(forceReason_, std::string())});
     if (!plan.error.empty()) {
         stats.error = plan.error;
-        return stats;
+        return stats;  // nothing was drawn: the previous plan still says what the maps hold
     }
+    // From here a failure may leave arrays reallocated or views half drawn: the next frame renders every view.
+    previousPlan_.reset();
     settings = plan.settings;
     stats.warnings.insert(stats.warnings.end(), plan.warnings.begin(), plan.warnings.end());
     for (const LightWithoutView& l : plan.lightsWithoutViews) {
@@ -184,7 +184,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         it = used ? std::next(it) : views_.erase(it);
     }
 
-    // Run, clear or skip each view, as the planner decides.
+    // Run or clear each view the planner says; the others keep their maps.
     double shadowMilliseconds = 0.0;
     bool anyMilliseconds = false;
     std::vector<std::string> ranReasons;
@@ -210,18 +210,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.resolution = array.resolution();
         entry.format = array.format();
         entry.memoryBytes = state.map.memoryBytes();
-
-        const ViewInputs inputs{viewFingerprint, p.view.space.viewProjection(), light, state.map.generation(),
-                                p.castersInVolume == 0, p.view.kind == ShadowViewKind::Cascade};
-        const ViewDecision decision = decideView(
-            state.rendered, inputs, volumesOverlap(p.view.space.volumeViewProjection(), stats.cameraViewProjection));
-        entry.reason = decision.reason;
-        switch (decision.action) {
+        entry.reason = p.reason;
+        switch (p.action) {
         case ViewAction::Keep: break;
         case ViewAction::SkipUnseen: anySkippedForOtherReason = true; break;
         case ViewAction::Clear:
             clearShadowMap(state.map, p.view.space.reversedZ);  // read as lit everywhere; no draw
-            state.rendered = inputs;
             anySkippedForOtherReason = true;
             break;
         case ViewAction::Render: {
@@ -230,7 +224,6 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             const ShadowPassCounts counts =
                 shadowPass_->run(*gpuScene_, p.view.space, light.shadow, light.depthClampApplies(), state.map);
             timer_.end(timed);
-            state.rendered = inputs;
             entry.ran = true;
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
@@ -244,7 +237,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
                 shadowMilliseconds += *entry.milliseconds;
                 anyMilliseconds = true;
             }
-            ranReasons.push_back(plan.views.size() == 1 ? decision.reason : entry.name + ": " + decision.reason);
+            ranReasons.push_back(plan.views.size() == 1 ? p.reason : entry.name + ": " + p.reason);
             break;
         }
         }
@@ -295,6 +288,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     MainPassInput in;
     in.scene = gpuScene_.get();
     in.settings = &settings;
+    // The variant from the key table's variant-tagged keys: derived again only when the settings changed.
+    if (!variant_ || !(variant_->first == settings)) variant_.emplace(settings, mainVariantKey(settings));
+    in.variant = variant_->second;
     in.viewProjection = stats.cameraViewProjection;
     in.cameraPosition = camera.position - stats.renderOrigin;
     in.cameraForward = viewCamera.forward;
@@ -331,6 +327,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.mainPass = {true, "every frame", timer_.latestMilliseconds(TimedPass::Main)};
     stats.mainVariants.assign(variants.begin(), variants.end());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    previousPlan_ = std::move(plan);  // what each view's map now holds: the next frame's planner compares with it
     stats.ok = true;
     return stats;
 }

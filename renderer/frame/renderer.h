@@ -47,9 +47,7 @@ public:
     void sceneChanged() { gpuScene_.reset(); }
 
     // Forces the next frame to render every shadow view (benchmarks time them every frame).
-    void invalidateShadowMap() {
-        for (auto& [key, state] : views_) state.rendered.reset();
-    }
+    void invalidateShadowMap() { forceReason_ = "forced: every view re-rendered (invalidateShadowMap)"; }
 
     // Waits for the newest GPU timings (benchmarks, one-shot renders); fills the stats' milliseconds.
     void waitForTimings(FrameStats& stats);
@@ -66,13 +64,15 @@ public:
 
 private:
     struct ViewState {
-        ShadowMap map;
-        std::optional<ViewInputs> rendered;  // what its map holds; empty: never rendered (or skipped unseen)
+        ShadowMap map;  // its layer of its group's array
     };
 
     GlInfo info_;
     std::map<MapGroup, ShadowMapArray> arrays_;
     std::map<ShadowViewId, ViewState> views_;
+    std::optional<ShadowPlan> previousPlan_;  // the plan the last frame carried out: what each view's map holds
+    std::optional<std::pair<Settings, MainVariantKey>> variant_;  // the last frame's settings and their variant
+    std::string forceReason_;                 // not empty: the next frame renders every view (invalidateShadowMap)
     ShadowSampler sampler_{false};
     ShadowSampler reversedSampler_{true};
     std::unique_ptr<ShadowPass> shadowPass_;

@@ -711,14 +711,25 @@ const SettingsField* findSettingsField(std::string_view key) {
     return nullptr;
 }
 
-SettingsDiff diffSettings(const Settings& a, const Settings& b) {
+namespace {
+
+bool carries(const SettingsField& f, unsigned tags) { return tags == kEveryField || (f.invalidates & tags) != 0; }
+
+}  // namespace
+
+SettingsDiff diffGlobals(const Settings& a, const Settings& b, unsigned tags) {
     SettingsDiff diff;
     for (const SettingsField& f : globalSettingsFields()) {
-        if (f.get(a) != f.get(b)) {
+        if (carries(f, tags) && f.get(a) != f.get(b)) {
             diff.keys.push_back(f.key);
             diff.invalidates |= f.invalidates;
         }
     }
+    return diff;
+}
+
+SettingsDiff diffSettings(const Settings& a, const Settings& b, unsigned tags) {
+    SettingsDiff diff = diffGlobals(a, b, tags);
     const std::size_t lights = std::max(a.lights.size(), b.lights.size());
     for (std::size_t i = 0; i < lights && i < kMaxLights; ++i) {
         if (i >= a.lights.size() || i >= b.lights.size()) {
@@ -727,7 +738,7 @@ SettingsDiff diffSettings(const Settings& a, const Settings& b) {
             continue;
         }
         for (const SettingsField& f : lightSettingsFields(i)) {
-            if (f.get(a) != f.get(b)) {
+            if (carries(f, tags) && f.get(a) != f.get(b)) {
                 diff.keys.push_back(f.key);
                 diff.invalidates |= f.invalidates;
             }
@@ -736,13 +747,14 @@ SettingsDiff diffSettings(const Settings& a, const Settings& b) {
     return diff;
 }
 
-SettingsDiff diffLight(const LightSettings& a, const LightSettings& b) {
+SettingsDiff diffLight(const LightSettings& a, const LightSettings& b, unsigned tags) {
+    SettingsDiff diff;
+    if (a == b) return diff;  // the common case, without a JSON value per field
     Settings sa, sb;
     sa.lights = {a};
     sb.lights = {b};
-    SettingsDiff diff;
     for (const SettingsField& f : lightSettingsFields(0)) {
-        if (f.get(sa) != f.get(sb)) {
+        if (carries(f, tags) && f.get(sa) != f.get(sb)) {
             diff.keys.emplace_back(f.lightKey());
             diff.invalidates |= f.invalidates;
         }

@@ -87,9 +87,13 @@ struct SettingsDiff {
     unsigned invalidates = kInvalidatesNothingElse;
     bool empty() const { return keys.empty(); }
 };
-SettingsDiff diffSettings(const Settings& a, const Settings& b);
-// As diffSettings, for one light only (a light's own fields, no global ones).
-SettingsDiff diffLight(const LightSettings& a, const LightSettings& b);
+// `tags`: only the fields carrying one of these Invalidates flags (kEveryField: all of them).
+inline constexpr unsigned kEveryField = ~0u;
+SettingsDiff diffSettings(const Settings& a, const Settings& b, unsigned tags = kEveryField);
+// As diffSettings, for the global fields only (ambient, filter, casters, ...).
+SettingsDiff diffGlobals(const Settings& a, const Settings& b, unsigned tags = kEveryField);
+// As diffSettings, for one light only (a light's own fields, no global ones), keys within the light ("type").
+SettingsDiff diffLight(const LightSettings& a, const LightSettings& b, unsigned tags = kEveryField);
 
 // Keys close to an unknown one (typos, missing group, wrong case), best first; empty when nothing is close or the
 // key is longer than kMaxSuggestedKeyLength (no key is near it, and the search costs length squared).

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace shadowlab {
 
@@ -99,23 +100,15 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
     std::vector<MainPassLight> lights = in.lights;
     std::stable_sort(lights.begin(), lights.end(),
                      [](const MainPassLight& a, const MainPassLight& b) { return bucket(a) < bucket(b); });
-    MainVariantKey base;
-    base.filter = settings.filter.kind;
-    base.kernel = settings.filter.kind == FilterKind::Pcf ? settings.filter.kernel : 0;
-    base.view = settings.view;
+    // The variant comes from the key table's variant-tagged keys (shading/variant_key.h); what is bound here must be
+    // what it declares, or the shader would index past its arrays.
+    const MainVariantKey& base = in.variant;
     std::vector<LightBlock> blocks;
     std::vector<CascadeBlock> cascadeBlocks;
+    int casters = 0;
     for (const MainPassLight& l : lights) {
         const bool casts = l.space != nullptr;
-        switch (l.settings->type) {
-            case LightType::Directional: ++base.lights.directional; base.lights.directionalCasters += casts; break;
-            case LightType::Spot: ++base.lights.spot; base.lights.spotCasters += casts; break;
-            case LightType::Point: ++base.lights.point; base.lights.pointCasters += casts; break;
-        }
-        base.normalOffset = base.normalOffset || (casts && l.settings->shadow.normalOffset > 0.0f);
-        base.receiverPlane = base.receiverPlane || (casts && l.settings->shadow.receiverPlaneBias &&
-                                                    l.settings->type != LightType::Point &&
-                                                    filterTechnique(settings.filter.kind).receiverPlane);
+        casters += casts;
         blocks.push_back(blockOf(l, in.renderOrigin));
         if (casts && !l.cascades.empty()) {
             // x: the light's first cascade in the Cascades block, y: how many (0: its one view).
@@ -123,14 +116,21 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
             for (const MainPassCascade& c : l.cascades) cascadeBlocks.push_back(cascadeBlockOf(c));
         }
     }
-    base.lights.cascades = int(cascadeBlocks.size());
+    const LightSetKey& declared = base.lights;
+    if (int(blocks.size()) != declared.lights() ||
+        casters != declared.directionalCasters + declared.spotCasters + declared.pointCasters ||
+        int(cascadeBlocks.size()) != declared.cascades || int(in.maps2D.size()) != declared.mapArrays2D ||
+        int(in.mapsCube.size()) != declared.mapArraysCube)
+        throw std::logic_error("main pass: the frame binds " + std::to_string(blocks.size()) + " lights (" +
+                               std::to_string(casters) + " casting), " + std::to_string(cascadeBlocks.size()) +
+                               " cascades, " + std::to_string(in.maps2D.size()) + "+" +
+                               std::to_string(in.mapsCube.size()) + " map arrays; its variant declares " +
+                               base.name());
     if (!cascadeBlocks.empty()) {
         glNamedBufferData(cascadeBuffer_.id(), GLsizeiptr(cascadeBlocks.size() * sizeof(CascadeBlock)),
                           cascadeBlocks.data(), GL_STREAM_DRAW);
         glBindBufferBase(GL_UNIFORM_BUFFER, kCascadesBinding, cascadeBuffer_.id());
     }
-    base.lights.mapArrays2D = int(in.maps2D.size());
-    base.lights.mapArraysCube = int(in.mapsCube.size());
     if (!blocks.empty()) {
         glNamedBufferData(lightBuffer_.id(), GLsizeiptr(blocks.size() * sizeof(LightBlock)), blocks.data(),
                           GL_STREAM_DRAW);

@@ -34,6 +34,7 @@ struct MainPassLight {
 struct MainPassInput {
     const GpuScene* scene = nullptr;
     const Settings* settings = nullptr;    // global settings (ambient, filter, view); lights come from `lights`
+    MainVariantKey variant;                // the frame's: mainVariantKey(*settings); each draw adds its material's part
     std::vector<MainPassLight> lights;     // enabled lights; casting ones have a space and a map
     std::vector<GLuint> maps2D;            // sampler2DArrayShadow textures, in array-index order
     std::vector<GLuint> mapsCube;          // samplerCubeArrayShadow textures

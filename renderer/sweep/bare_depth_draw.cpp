@@ -10,7 +10,8 @@
 
 namespace shadowlab {
 
-BareDepthDraw::BareDepthDraw(const Scene& scene, const glm::dvec3& origin, TimingSource source)
+BareDepthDraw::BareDepthDraw(const Scene& scene, const glm::dvec3& origin, TimingSource source,
+                             const std::vector<char>* instances)
     // The shadow pass's own depth-only vertex stage (with an identity model matrix): the same vertex work per
     // triangle, so the difference is what the pass adds around the raster.
     : program_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {})), timer_(source) {
@@ -18,7 +19,9 @@ BareDepthDraw::BareDepthDraw(const Scene& scene, const glm::dvec3& origin, Timin
     model_ = glGetUniformLocation(program_.id(), "uModel");
     std::vector<glm::vec3> triangles;
     triangles.reserve(scene.triangleCount() * 3);
-    for (const Instance& instance : scene.instances) {
+    for (std::size_t n = 0; n < scene.instances.size(); ++n) {
+        if (instances && (n >= instances->size() || !(*instances)[n])) continue;
+        const Instance& instance = scene.instances[n];
         const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
         glm::dmat4 model = glm::dmat4(instance.transform);
         model[3] -= glm::dvec4(origin, 0.0);  // relative to the render origin, in double precision

@@ -13,6 +13,7 @@
 #include <glm/ext/vector_double3.hpp>
 
 #include <string>
+#include <vector>
 
 namespace shadowlab {
 
@@ -28,8 +29,10 @@ struct BareDrawTiming {
 
 class BareDepthDraw {
 public:
-    // Flattens every instance of the scene into world space relative to `origin` (the renderer's render origin).
-    BareDepthDraw(const Scene& scene, const glm::dvec3& origin, TimingSource source);
+    // Flattens every instance of the scene into world space relative to `origin` (the renderer's render origin);
+    // with `instances` (one flag per Scene::instances entry) only those flagged: the casters one view holds.
+    BareDepthDraw(const Scene& scene, const glm::dvec3& origin, TimingSource source,
+                  const std::vector<char>* instances = nullptr);
 
     // Times `frames` draws (after the warm-up of timed_frames.h) through the light's view-projection (relative to
     // the same origin) into a resolution² map of this format.

@@ -16,6 +16,12 @@ struct MapGroup {
     auto operator<=>(const MapGroup&) const = default;
 };
 
+// The array a casting light's views go into: a point light's cube faces into a cube array, every other view into a
+// 2D array (the planner groups views by it; the main pass's variant key counts the arrays by it).
+inline MapGroup mapGroupOf(const LightSettings& light) {
+    return {light.type == LightType::Point, light.shadow.resolution, light.shadow.format, light.shadow.reversedZ};
+}
+
 // "" when the shadow.resolution key and this GPU allow `resolution`, else the message saying the range and `kept`.
 std::string shadowResolutionRefusal(int resolution, int maxTextureSize, const std::string& kept);
 

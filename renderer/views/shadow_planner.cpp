@@ -1,5 +1,7 @@
 #include "views/shadow_planner.h"
 
+#include "light/scene_lights.h"
+#include "light/volume_overlap.h"
 #include "settings/settings_fields.h"
 
 #include <algorithm>
@@ -15,25 +17,114 @@ std::string joinReasons(const std::vector<std::string>& parts) {
     return out;
 }
 
-// Why a view's inputs changed since its map was rendered, in the key table's words; "" when nothing that changes
-// the map did.
-std::string changeReason(const std::optional<ViewInputs>& last, const ViewInputs& now) {
-    if (!last) return "first frame";
-    if (now.mapGeneration != last->mapGeneration) return "shadow map reallocated";
-    std::vector<std::string> reasons;
-    if (now.sceneFingerprint != last->sceneFingerprint) reasons.push_back("scene changed");
-    // The light's keys that change its views (the key table's shadow-view tags), by name.
-    std::string keys;
-    for (const std::string& key : diffLight(last->light, now.light).keys) {
-        const SettingsField* field = findSettingsField("lights.0." + key);
-        if (field && (field->invalidates & kInvalidatesShadowView)) keys += (keys.empty() ? "" : ", ") + key;
+std::string joinKeys(const std::vector<std::string>& keys) {
+    std::string out;
+    for (const std::string& key : keys) out += (out.empty() ? "" : ", ") + key;
+    return out;
+}
+
+// The global keys tagged as changing shadow views (casters.excluded, useSceneLights) that differ between the settings
+// a map was rendered with and the frame's; each held settings object is compared once per frame (views share them).
+class GlobalKeyChanges {
+public:
+    explicit GlobalKeyChanges(const Settings& now) : now_(now) {}
+    const std::vector<std::string>& since(const std::shared_ptr<const Settings>& held) {
+        for (const auto& [settings, keys] : seen_)
+            if (settings == held.get()) return keys;
+        std::vector<std::string> keys;
+        if (!(*held == now_)) keys = diffGlobals(*held, now_, kInvalidatesShadowView).keys;
+        seen_.emplace_back(held.get(), std::move(keys));
+        return seen_.back().second;
     }
-    if (!keys.empty()) reasons.push_back(keys + " changed");
-    if (keys.empty() && now.viewProjection != last->viewProjection)
-        reasons.push_back(now.followsCamera ? "the camera moved (the cascade follows it)" : "light space changed");
-    if (now.empty != last->empty)
-        reasons.push_back(now.empty ? "no caster in its volume any more" : "casters entered its volume");
+
+private:
+    const Settings& now_;
+    std::vector<std::pair<const Settings*, std::vector<std::string>>> seen_;
+};
+
+// The keys that change a light's views (the key table's shadow-view tags) whose values differ between what a map
+// holds and now, by name: the light's own ("shadow.depthBias"), then global ones ("casters.excluded").
+std::vector<std::string> changedKeys(const MapContents& held, const MapContents& now, GlobalKeyChanges& globals) {
+    std::vector<std::string> keys = diffLight(held.light, now.light, kInvalidatesShadowView).keys;
+    for (const std::string& key : globals.since(held.settings)) keys.push_back(key);
+    return keys;
+}
+
+// Why a view whose map holds `held` must render again to hold `now`, in the key table's words; "" when nothing that
+// changes its map did. `kept`: its map's layer survived (same array, same layer, not reallocated).
+std::string changeReason(const MapContents& held, const MapContents& now, ShadowViewKind kind, bool kept,
+                         GlobalKeyChanges& globals) {
+    std::vector<std::string> reasons;
+    const std::vector<std::string> keys = changedKeys(held, now, globals);
+    if (!keys.empty()) reasons.push_back(joinKeys(keys) + " changed");
+    if (now.sceneFingerprint != held.sceneFingerprint) reasons.push_back("scene changed");
+    if (keys.empty() && now.viewProjection != held.viewProjection)
+        reasons.push_back(kind == ShadowViewKind::Cascade ? "the camera moved (the cascade follows it)"
+                                                          : "light space changed");
+    if (reasons.empty() && !kept) reasons.push_back("shadow map reallocated");
     return joinReasons(reasons);
+}
+
+// The map the previous plan gave light `light` (its views share one size and format).
+std::optional<MapGroup> previousMap(const ShadowPlan* previous, std::size_t light) {
+    if (!previous) return std::nullopt;
+    for (const PlannedView& p : previous->views)
+        if (p.view.light == light) return p.group;
+    return std::nullopt;
+}
+
+// Why a view the previous plan lacks renders: the keys that gave its light other views ("type changed",
+// "projection.cascadeCount changed"), else "new view".
+std::string newViewReason(const ShadowPlan& previous, std::size_t light, const MapContents& now,
+                          GlobalKeyChanges& globals) {
+    for (const PlannedView& p : previous.views) {
+        if (p.view.light != light || !p.holds) continue;
+        const std::vector<std::string> keys = changedKeys(*p.holds, now, globals);
+        if (!keys.empty()) return joinKeys(keys) + " changed";
+    }
+    return "new view";
+}
+
+// Whether a caster can write to the view's map. Asked only of a view that must render: a still frame tests no
+// caster, and the first caster found ends the search.
+bool anyCasterIn(const std::vector<CasterSphere>& casters, const LightSpace& space) {
+    return std::any_of(casters.begin(), casters.end(), [&](const CasterSphere& c) { return casterInVolume(c, space); });
+}
+
+// Decides one view: its action, its reason and what its map holds once the frame has carried them out.
+// `layersNow`: its array's layer count this frame.
+void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow, bool seen,
+            GlobalKeyChanges& globals) {
+    const PlannedView* before = in.previous ? in.previous->find(p.view.id()) : nullptr;
+    // Its map still holds what it held: the same layer of an array that was not reallocated (the Renderer
+    // reallocates an array when its layer count changes).
+    const bool kept = before && before->holds && before->group == p.group && before->layer == p.layer &&
+                      in.previous->layers.at(before->group) == layersNow;
+    std::string reason;
+    if (!in.forceReason.empty()) reason = in.forceReason;
+    else if (!in.previous) reason = "first frame";
+    else if (!before) reason = newViewReason(*in.previous, p.view.light, now, globals);
+    else if (!before->holds) reason = "its map holds nothing yet (new or reallocated while unseen)";
+    else reason = changeReason(*before->holds, now, p.view.kind, kept, globals);
+
+    if (reason.empty()) {
+        p.action = ViewAction::Keep;
+        p.reason = "unchanged: light, casters and shadow settings are the same";
+        p.holds = before->holds;
+    } else if (!seen) {
+        // A map no visible pixel reads is rendered once the camera sees its volume.
+        p.action = ViewAction::SkipUnseen;
+        p.reason = "skipped: its volume misses the camera's view";
+        if (kept) p.holds = before->holds;
+    } else if (!anyCasterIn(in.casters, p.view.space)) {
+        p.action = ViewAction::Clear;
+        p.reason = "skipped: no caster in its volume (map cleared)";
+        p.holds = std::move(now);
+    } else {
+        p.action = ViewAction::Render;
+        p.reason = std::move(reason);
+        p.holds = std::move(now);
+    }
 }
 
 }  // namespace
@@ -68,11 +159,15 @@ std::vector<ShadowView> ShadowPlan::lightViews(std::size_t light) const {
     return out;
 }
 
-ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, const glm::dvec3& origin,
-                           const ViewCamera* camera, const std::vector<CasterSphere>& casters, int maxTextureSize,
-                           const std::function<std::optional<KeptMap>(std::size_t light)>& keptMap) {
+const PlannedView* ShadowPlan::find(const ShadowViewId& id) const {
+    for (const PlannedView& p : views)
+        if (p.view.id() == id) return &p;
+    return nullptr;
+}
+
+ShadowPlan planShadowViews(const PlanInputs& in) {
     ShadowPlan plan;
-    plan.settings = effective;
+    plan.settings = withEffectiveLights(in.settings, in.scene);
     for (std::size_t i = 0; i < plan.settings.lights.size(); ++i) {
         LightSettings& light = plan.settings.lights[i];
         if (!light.enabled || !light.castsShadows) {
@@ -82,11 +177,10 @@ ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, cons
             continue;
         }
         // A size the GPU refuses keeps the light's previous map (and says so); with no map at all there is no frame.
-        // The kept map is looked up only then: an allowed size costs no search.
-        if (!shadowResolutionRefusal(light.shadow.resolution, maxTextureSize, "").empty()) {
-            const std::optional<KeptMap> kept = keptMap ? keptMap(i) : std::nullopt;
+        if (!shadowResolutionRefusal(light.shadow.resolution, in.maxTextureSize, "").empty()) {
+            const std::optional<MapGroup> kept = previousMap(in.previous, i);
             const std::string refusal = shadowResolutionRefusal(
-                light.shadow.resolution, maxTextureSize,
+                light.shadow.resolution, in.maxTextureSize,
                 kept ? "keeping the " + std::to_string(kept->resolution) + "² map" : "no shadow map yet");
             if (!kept) {
                 plan.error = refusal;
@@ -97,29 +191,37 @@ ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, cons
             light.shadow.format = kept->format;
         }
         std::string error;
-        const auto views = buildLightViews(light, i, bounds, origin, camera, error);
+        const auto views = buildLightViews(light, i, in.scene.bounds, in.origin, in.camera, error);
         if (!views) {
             plan.error = error;
             return plan;
         }
-        const bool cube = views->front().kind == ShadowViewKind::CubeFace;
-        const MapGroup group{cube, light.shadow.resolution, light.shadow.format, light.shadow.reversedZ};
+        const MapGroup group = mapGroupOf(light);
         for (const ShadowView& view : *views) {
-            PlannedView p{view, group, plan.layers[group]++, 0};
-            for (const CasterSphere& caster : casters) p.castersInVolume += casterInVolume(caster, view.space);
+            PlannedView p;
+            p.view = view;
+            p.group = group;
+            p.layer = plan.layers[group]++;
             plan.views.push_back(std::move(p));
         }
+    }
+
+    // Each view against what its map holds. The frame's settings are shared by the maps it renders.
+    const auto requested = std::make_shared<const Settings>(in.settings);
+    GlobalKeyChanges globals(in.settings);
+    for (PlannedView& p : plan.views) {
+        MapContents now{requested, plan.settings.lights[p.view.light], in.sceneFingerprint,
+                        p.view.space.viewProjection()};
+        const bool seen = !in.cameraViewProjection ||
+                          volumesOverlap(p.view.space.volumeViewProjection(), *in.cameraViewProjection);
+        decide(p, in, std::move(now), plan.layers.at(p.group), seen, globals);
     }
     return plan;
 }
 
-ViewDecision decideView(const std::optional<ViewInputs>& last, const ViewInputs& now, bool volumeSeen) {
-    const std::string reason = changeReason(last, now);
-    if (reason.empty()) return {ViewAction::Keep, "unchanged: light, casters and shadow settings are the same"};
-    // A map no visible pixel reads is rendered once the camera sees its volume.
-    if (!volumeSeen) return {ViewAction::SkipUnseen, "skipped: its volume misses the camera's view"};
-    if (now.empty) return {ViewAction::Clear, "skipped: no caster in its volume (map cleared)"};
-    return {ViewAction::Render, reason};
+int viewsToRender(const ShadowPlan& plan) {
+    return int(std::count_if(plan.views.begin(), plan.views.end(),
+                             [](const PlannedView& p) { return p.action == ViewAction::Render; }));
 }
 
 }  // namespace shadowlab

@@ -1,10 +1,10 @@
 #pragma once
-// The shadow planner: which views a frame needs and why. Two steps, both pure (no GL), so they are tested alone:
-//  1. planShadowViews: (settings, scene bounds, camera, casters) -> every casting light's views, grouped into map arrays
-//     with a layer each, and the lights that have no view with the reason;
-//  2. decideView: (what a view's map was last rendered from, what it would be rendered from now, whether the camera
-//     sees its volume) -> render, clear, keep or skip it, with the reason in the key table's words.
-// The Renderer allocates the arrays the plan names and carries out the decisions.
+// The shadow planner: (scene, settings, camera, the previous frame's plan) -> the views this frame needs, each with
+// its action and reason. Pure (no GL), so it is tested alone: it builds every casting light's views, groups them into
+// map arrays with a layer each, and compares each view with what its map holds (the previous plan's record of it):
+// a view renders again only when a key the key table tags as changing shadow views changed (named in the reason),
+// its light space moved, its casters changed or its map was reallocated. The Renderer allocates the arrays the plan
+// names and carries out each view's action; the plan it carried out is the next frame's `previous`.
 #include "scene/scene.h"
 #include "settings/settings.h"
 #include "views/map_group.h"
@@ -14,8 +14,8 @@
 #include <glm/ext/vector_double3.hpp>
 
 #include <cstdint>
-#include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,11 +33,25 @@ struct CasterSphere {
 // in front of its near plane (depth clamp), so only its sides and far plane cull.
 bool casterInVolume(const CasterSphere& caster, const LightSpace& space);
 
+// What a view's map holds: the inputs it was last rendered (or cleared) from.
+struct MapContents {
+    std::shared_ptr<const Settings> settings;  // the frame's settings as requested (useSceneLights, casters.excluded)
+    LightSettings light;                       // its light as the frame used it (a scene light with its settings)
+    std::size_t sceneFingerprint = 0;
+    glm::dmat4 viewProjection{0.0};
+};
+
+enum class ViewAction { Render, Clear, Keep, SkipUnseen };
+
 struct PlannedView {
     ShadowView view;
     MapGroup group;
     int layer = 0;             // the view's layer in its group's array (a cube array: 6 per light)
-    int castersInVolume = 0;
+    ViewAction action = ViewAction::Keep;  // Clear: no caster in its volume (tested only for a view that must run)
+    std::string reason;        // "first frame", "shadow.depthBias changed", "skipped: its volume misses the camera's view"
+    // What its map holds once the frame has carried out the plan; nullopt: nothing usable (never rendered, or its
+    // array was reallocated while it was skipped).
+    std::optional<MapContents> holds;
 };
 
 struct LightWithoutView {
@@ -46,7 +60,7 @@ struct LightWithoutView {
 };
 
 struct ShadowPlan {
-    Settings settings;                     // the frame's lights; a refused resolution replaced by the kept map's
+    Settings settings;                     // the frame's effective lights; a refused resolution replaced by the kept map's
     std::vector<PlannedView> views;        // every casting light's views, in light order
     std::vector<LightWithoutView> lightsWithoutViews;
     std::map<MapGroup, int> layers;        // each array's layer count
@@ -54,39 +68,30 @@ struct ShadowPlan {
     std::string error;                     // not empty: no frame (a light's views cannot be built)
     // The views of light `light`, in order (empty when it has none).
     std::vector<ShadowView> lightViews(std::size_t light) const;
+    // The view with this id, nullptr when the plan has none.
+    const PlannedView* find(const ShadowViewId& id) const;
 };
 
-// The map a light has now, kept when a new resolution is refused.
-struct KeptMap {
-    int resolution = 0;
-    DepthFormat format = DepthFormat::D32F;
+struct PlanInputs {
+    const Scene& scene;                  // its bounds; its lights with useSceneLights
+    const Settings& settings;            // as requested (validated)
+    glm::dvec3 origin{0.0};              // the render origin every light space is relative to
+    const ViewCamera* camera = nullptr;  // the frame's (cascades follow it); nullptr where there is none
+    // The camera's clip-from-world (render-origin-relative): a view whose volume it misses is not rendered (its map
+    // is read by no visible pixel). nullopt: every volume counts as seen.
+    std::optional<glm::dmat4> cameraViewProjection;
+    const std::vector<CasterSphere>& casters;
+    std::size_t sceneFingerprint = 0;    // the scene's geometry (renderer.h: sceneFingerprint)
+    int maxTextureSize = 16384;
+    const ShadowPlan* previous = nullptr;  // the plan the previous frame carried out; nullptr: the first frame
+    std::string forceReason;               // not empty: every view renders, for this reason (benchmarks)
 };
 
-// `effective`: the frame's lights with useSceneLights resolved. `keptMap(light)`: that light's current map, if any.
-// `camera`: the frame's (cascades follow it); nullptr where there is none.
-ShadowPlan planShadowViews(const Settings& effective, const Bounds& bounds, const glm::dvec3& origin,
-                           const ViewCamera* camera, const std::vector<CasterSphere>& casters, int maxTextureSize,
-                           const std::function<std::optional<KeptMap>(std::size_t light)>& keptMap);
+// The frame's plan. A resolution the GPU refuses keeps the light's map of the previous plan (a warning); with no
+// previous map there is no frame (ShadowPlan::error).
+ShadowPlan planShadowViews(const PlanInputs& in);
 
-// What a view's map was last rendered from; the view runs again only if one of these changed.
-struct ViewInputs {
-    std::size_t sceneFingerprint = 0;
-    glm::dmat4 viewProjection{0.0};
-    LightSettings light;               // compared through the key table's shadow-view tags
-    std::uint64_t mapGeneration = 0;   // the array was reallocated: its contents are gone
-    bool empty = false;                // no caster in its volume: the map is cleared, not drawn
-    bool followsCamera = false;        // a cascade: its light space moves with the camera
-    bool operator==(const ViewInputs&) const = default;
-};
-
-enum class ViewAction { Render, Clear, Keep, SkipUnseen };
-
-struct ViewDecision {
-    ViewAction action = ViewAction::Keep;
-    std::string reason;  // "first frame", "shadow.depthBias changed", "skipped: its volume misses the camera's view"
-};
-
-// `volumeSeen`: the view's volume meets the camera's (a map no visible pixel reads is rendered once it is seen).
-ViewDecision decideView(const std::optional<ViewInputs>& last, const ViewInputs& now, bool volumeSeen);
+// The views the plan renders (ViewAction::Render).
+int viewsToRender(const ShadowPlan& plan);
 
 }  // namespace shadowlab

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end: `bench` and `bench --lights` read through their JSON (issue 19: no test read it). Tiny and quick (a 64x36
+# End-to-end: `bench`, `bench --lights` and `bench --planner` read through their JSON (issue 19: no test read it). Tiny and quick (a 64x36
 # view, 2 frames a row, small maps). Every time is present, finite and positive; the JSON describes the lights it
 # timed: their count, index and type from the preset, a point light's six views, each view's light; map memory is
 # every light's maps at the row's resolution; bench --lights moves the spot it says and renders only its view, and the
@@ -103,5 +103,29 @@ for r in n["rows"]:
     check(r["shadowMapMiB"] == 0 and r["shadowPassMs"] == 0, f"no-light row has a shadow pass: {r}")
 for p in problems: print("  ", p)
 sys.exit(1 if problems else 0)
+PY
+
+# bench --planner: the planner's CPU time with 8 lights and each cascade against a bare draw of what it holds, each
+# line labelled (scene, lights, cascade). The courtyard's sun made cascaded (3 cascades of 64²).
+expect_ok bench-planner "$SHADOWLAB" bench --planner --scene builtin:courtyard --preset courtyard --width 64 \
+  --height 36 --frames 2 --set lights.0.projection.fit=cascades --set lights.0.projection.cascadeCount=3 \
+  --set lights.0.shadow.resolution=64 --json planner.json
+grep -q "^planner CPU time per frame, scene courtyard, 8 lights (2 directional cascaded, 3 spot, 3 point; 28 views)" \
+  bench-planner.out && grep -Eq "^  camera moving: [0-9.]+ ms \([1-7] of 7 cascades re-rendered per frame\)" bench-planner.out \
+  && grep -Eq "^  camera still:  [0-9.]+ ms \(0 views re-rendered\)" bench-planner.out \
+  && pass "bench --planner: the planner's labelled lines" || fail "bench --planner: $(cat bench-planner.out)"
+grep -q "^cascade shadow pass vs a bare depth draw of the casters it holds, scene courtyard, the settings' cascaded" \
+  bench-planner.out && [ "$(grep -Ec '^  light 0 cascade:[0-2] +64² D32F +([0-9]+ casters .* shadow +[0-9.]+ ms  bare +[0-9.]+ ms  ratio [0-9.]+|skipped: no caster)' bench-planner.out)" = 3 ] \
+  && grep -Eq ' ms  ratio [0-9.]+' bench-planner.out \
+  && pass "bench --planner: one labelled line per cascade" || fail "bench --planner cascades: $(cat bench-planner.out)"
+python3 - <<'PY' && pass "bench --planner JSON" || fail "bench --planner JSON (above)"
+import json, math, sys
+d = json.load(open("planner.json"))
+ok = d["planner"]["lights"] == 8 and d["planner"]["views"] == 28 and d["planner"]["movingMeanMs"] > 0 \
+     and [c["view"] for c in d["cascades"]] == ["light 0 cascade:0", "light 0 cascade:1", "light 0 cascade:2"] \
+     and any(c["ran"] for c in d["cascades"]) \
+     and all(c["shadowMs"] > 0 and c["bareMs"] > 0 and math.isfinite(c["ratio"]) for c in d["cascades"] if c["ran"])
+print(json.dumps(d, indent=1)[:2000]) if not ok else None
+sys.exit(0 if ok else 1)
 PY
 finish

@@ -205,7 +205,11 @@ TEST(Cascades, PlannerPutsALightsCascadesInOneArrayAndNamesThem) {
     s.lights = {sun(3)};
     const Bounds bounds = cityBounds();
     const ViewCamera camera = eyeCamera({0, 1.7, 0}, {0, 0, -1});
-    const ShadowPlan plan = planShadowViews(s, bounds, bounds.centreOrOrigin(), &camera, {}, 16384, nullptr);
+    Scene scene;
+    scene.bounds = bounds;
+    const std::vector<CasterSphere> city = {{glm::dvec3(0.0), 5000.0, true}};  // in every cascade's volume
+    const ShadowPlan plan =
+        planShadowViews({scene, s, bounds.centreOrOrigin(), &camera, std::nullopt, city, 0, 16384, nullptr, ""});
     ASSERT_TRUE(plan.error.empty()) << plan.error;
     ASSERT_EQ(plan.views.size(), 3u);
     for (int c = 0; c < 3; ++c) {
@@ -214,10 +218,11 @@ TEST(Cascades, PlannerPutsALightsCascadesInOneArrayAndNamesThem) {
         EXPECT_EQ(viewName(plan.views[std::size_t(c)].view), "light 0 cascade:" + std::to_string(c));
     }
     EXPECT_EQ(plan.layers.at(plan.views[0].group), 3);
-    ViewInputs before{1, plan.views[0].view.space.viewProjection(), s.lights[0], 1, false, true};
-    ViewInputs after = before;
-    after.viewProjection[3][0] += 1.0;
-    EXPECT_EQ(decideView(before, after, true).reason, "the camera moved (the cascade follows it)");
+    // The camera moves: the planner's reason says the cascades follow it (tests/unit/test_shadow_planner.cpp).
+    const ViewCamera moved = eyeCamera({40, 1.7, 0}, {0, 0, -1});  // beyond the far cascade's texel
+    const ShadowPlan next =
+        planShadowViews({scene, s, bounds.centreOrOrigin(), &moved, std::nullopt, city, 0, 16384, &plan, ""});
+    for (const PlannedView& p : next.views) EXPECT_EQ(p.reason, "the camera moved (the cascade follows it)") << viewName(p.view);
     std::string error;
     EXPECT_TRUE(findView(plan.lightViews(0), "cascade:2", error)) << error;
     EXPECT_FALSE(findView(plan.lightViews(0), "cascade:3", error));

@@ -27,6 +27,15 @@ LightSettings lightOf(LightType type) {
     return l;
 }
 
+// A frame's plan with no previous one, for a scene of these bounds.
+ShadowPlan planOf(const Settings& s, const Bounds& bounds, const glm::dvec3& origin,
+                  const std::vector<CasterSphere>& casters = {}, int maxTextureSize = 16384,
+                  const ShadowPlan* previous = nullptr) {
+    Scene scene;
+    scene.bounds = bounds;
+    return planShadowViews({scene, s, origin, nullptr, std::nullopt, casters, 0, maxTextureSize, previous, ""});
+}
+
 // The texel-space position of p in a view: x, y in [-1, 1] inside its square, false behind it.
 bool insideViewSquare(const LightSpace& space, const glm::dvec3& p) {
     const glm::dvec4 clip = space.viewProjection() * glm::dvec4(p, 1.0);
@@ -127,7 +136,7 @@ TEST(ShadowPlanner, GroupsViewsIntoArraysWithALayerEach) {
     s.lights[2].shadow.resolution = 512;  // its own 2D array
     s.lights[4].enabled = false;
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
-    const ShadowPlan plan = planShadowViews(s, bounds, bounds.centreOrOrigin(), nullptr, {}, 16384, nullptr);
+    const ShadowPlan plan = planOf(s, bounds, bounds.centreOrOrigin());
     ASSERT_TRUE(plan.error.empty()) << plan.error;
     ASSERT_EQ(plan.views.size(), 1u + 6u + 1u + 6u);
     ASSERT_EQ(plan.lightsWithoutViews.size(), 1u);
@@ -150,11 +159,15 @@ TEST(ShadowPlanner, ARefusedResolutionKeepsTheLightsMapOrStopsTheFrame) {
     s.lights = {lightOf(LightType::Spot)};
     s.lights[0].shadow.resolution = 8192;
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
-    const ShadowPlan none = planShadowViews(s, bounds, glm::dvec3(0.0), nullptr, {}, 4096, nullptr);
+    const ShadowPlan none = planOf(s, bounds, glm::dvec3(0.0), {}, 4096);
     EXPECT_NE(none.error.find("shadow.resolution: 8192"), std::string::npos) << none.error;
-    const ShadowPlan kept = planShadowViews(s, bounds, glm::dvec3(0.0), nullptr, {}, 4096, [](std::size_t) {
-        return std::optional<KeptMap>(KeptMap{1024, DepthFormat::D24});
-    });
+    // The previous frame's plan gave the light a 1024² d24 map: the refused size keeps it.
+    Settings before = s;
+    before.lights[0].shadow.resolution = 1024;
+    before.lights[0].shadow.format = DepthFormat::D24;
+    const ShadowPlan previous = planOf(before, bounds, glm::dvec3(0.0), {}, 4096);
+    ASSERT_TRUE(previous.error.empty()) << previous.error;
+    const ShadowPlan kept = planOf(s, bounds, glm::dvec3(0.0), {}, 4096, &previous);
     ASSERT_TRUE(kept.error.empty()) << kept.error;
     ASSERT_EQ(kept.warnings.size(), 1u);
     EXPECT_NE(kept.warnings[0].find("keeping the 1024² map"), std::string::npos) << kept.warnings[0];
@@ -162,7 +175,7 @@ TEST(ShadowPlanner, ARefusedResolutionKeepsTheLightsMapOrStopsTheFrame) {
     EXPECT_EQ(kept.views.front().group.format, DepthFormat::D24);
 }
 
-TEST(ShadowPlanner, CountsOnlyTheCastersInAViewsVolume) {
+TEST(ShadowPlanner, ClearsTheViewsWithNoCasterInTheirVolume) {
     Settings s;
     s.lights = {lightOf(LightType::Point)};
     const Bounds bounds = box({-5, 0, -5}, {5, 3, 5});
@@ -170,35 +183,9 @@ TEST(ShadowPlanner, CountsOnlyTheCastersInAViewsVolume) {
     const glm::dvec3 light = glm::dvec3(s.lights[0].position) - origin;
     // One small caster straight below the light: only the -Y face holds it.
     const std::vector<CasterSphere> casters = {{light + glm::dvec3(0.0, -4.0, 0.0), 0.5, true}};
-    const ShadowPlan plan = planShadowViews(s, bounds, origin, nullptr, casters, 16384, nullptr);
+    const ShadowPlan plan = planOf(s, bounds, origin, casters);
     ASSERT_EQ(plan.views.size(), 6u);
-    for (const PlannedView& p : plan.views) EXPECT_EQ(p.castersInVolume, p.view.index == 3 ? 1 : 0) << viewName(p.view);
+    for (const PlannedView& p : plan.views)
+        EXPECT_EQ(p.action, p.view.index == 3 ? ViewAction::Render : ViewAction::Clear) << viewName(p.view);
 }
 
-TEST(ShadowPlanner, DecidesEachViewWithTheReasonInTheKeyTablesWords) {
-    ViewInputs now;
-    now.sceneFingerprint = 7;
-    now.viewProjection = glm::dmat4(2.0);
-    EXPECT_EQ(decideView(std::nullopt, now, true).action, ViewAction::Render);
-    EXPECT_EQ(decideView(std::nullopt, now, true).reason, "first frame");
-    EXPECT_EQ(decideView(now, now, true).action, ViewAction::Keep);
-    EXPECT_EQ(decideView(now, now, false).action, ViewAction::Keep);  // unchanged wins: nothing to do
-
-    ViewInputs biased = now;
-    biased.light.shadow.depthBias += 5.0f;
-    const ViewDecision bias = decideView(now, biased, true);
-    EXPECT_EQ(bias.action, ViewAction::Render);
-    EXPECT_NE(bias.reason.find("shadow.depthBias changed"), std::string::npos) << bias.reason;
-
-    ViewInputs coloured = now;
-    coloured.light.color = {1.0f, 0.0f, 0.0f};  // shades the picture, not the map
-    EXPECT_EQ(decideView(now, coloured, true).action, ViewAction::Keep);
-
-    EXPECT_EQ(decideView(now, biased, false).action, ViewAction::SkipUnseen);
-    ViewInputs empty = biased;
-    empty.empty = true;
-    EXPECT_EQ(decideView(now, empty, true).action, ViewAction::Clear);
-    ViewInputs reallocated = now;
-    reallocated.mapGeneration = 1;
-    EXPECT_EQ(decideView(now, reallocated, true).reason, "shadow map reallocated");
-}
