@@ -138,6 +138,10 @@ int main(int argc, char** argv) {
     exportCmd->add_option("--set", exportOptions.overrides, "override a setting: key=value (repeatable)");
     exportCmd->add_option("--format", exportOptions.format, "d3d12 | d3d11 | vulkan | gl | json")->required();
     exportCmd->add_option("--out", exportOptions.out, "write to this file (default: standard output)");
+    exportCmd->add_option("--view", exportOptions.view, std::string(cli::kViewOptionHelp) + "; needs --light");
+    exportCmd->add_option("--width", exportOptions.width, "the view a cascaded light's cascades are fitted to")
+        ->capture_default_str();
+    exportCmd->add_option("--height", exportOptions.height, "its height")->capture_default_str();
     exportCmd->add_option("--light", exportOptions.light,
                           "export only light N (an index into the effective lights); default: every light")
         ->check(CLI::NonNegativeNumber);
@@ -152,6 +156,7 @@ int main(int argc, char** argv) {
     probeCmd->add_option("--json", probe.json, "also write the probe as JSON");
     probeCmd->add_option("--light", probe.light,
                          "probe light N only (default: every shadow-casting light, each alone, each with its own S)");
+    probeCmd->add_option("--view", probe.view, cli::kViewOptionHelp);
     probeCmd->add_flag("--measure", probe.measure, "also measure the view: the exact visibility and the error's cause");
     cli::ProfileOptions profile;
     CLI::App* profileCmd = app.add_subcommand("profile", "Depth profile along a line: receiver depth, map texels, bias; acne and Peter Panning marked");
@@ -159,6 +164,7 @@ int main(int argc, char** argv) {
     profileCmd->add_option("--preset", profile.preset, kPresetHelp);
     profileCmd->add_option("--set", profile.overrides, "override a setting: key=value (repeatable)");
     profileCmd->add_option("--light", profile.light, "the light whose depths the line shows (default: the only shadow-casting light)");
+    profileCmd->add_option("--view", profile.view, cli::kViewOptionHelp);
     profileCmd->add_option("--width", profile.width, "view width")->capture_default_str();
     profileCmd->add_option("--height", profile.height, "view height")->capture_default_str();
     profileCmd->add_option("--from", profile.from, "X0,Y0: the line's start, y down from the top")->required();

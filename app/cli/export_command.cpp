@@ -3,6 +3,8 @@
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
 #include "export/export_snippets.h"
+#include "frame/camera.h"
+#include "views/shadow_view.h"
 #include "settings/atomic_file.h"
 
 #include <iostream>
@@ -27,10 +29,16 @@ int runExport(const ExportOptions& options) {
     }
     std::optional<std::size_t> only;
     if (options.light >= 0) only = std::size_t(options.light);
+    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     std::string error;
-    const std::optional<ShadowExportSet> values = exportForScene(*settings, *loaded.scene, options.scene, only, error);
+    // The camera a cascaded light's cascades follow: the preset's, as render and measure see it at this size.
+    const Camera camera = cameraFor(settings->camera, *loaded.scene, double(options.width) / options.height);
+    const ViewCamera viewCamera = viewCameraOf(camera, double(options.width) / options.height,
+                                               renderOriginOf(loaded.scene->bounds));
+    const std::optional<ShadowExportSet> values =
+        exportForScene(*settings, *loaded.scene, options.scene, only, error, &viewCamera, options.view);
     if (!values) {
-        if (only && error.rfind("--light", 0) == 0) {
+        if (error.rfind("--light", 0) == 0 || error.rfind("--view", 0) == 0) {
             std::cerr << "error: " << error << "\n";
             return 2;
         }

@@ -12,6 +12,9 @@ struct ExportOptions {
     std::string format;  // d3d12 | d3d11 | vulkan | gl | json
     std::string out;     // optional: written atomically; otherwise stdout
     int light = -1;      // --light N: only light N of the effective lights; -1 = every light
+    std::string view;    // --view: with --light, one of its views (a cube face, cascade:N); "" = every view
+    int width = 1280;    // the view a cascaded light's cascades are fitted to (its aspect ratio)
+    int height = 720;
 };
 
 // Exit code 0 (also when no light casts: the output says so), 1 when the work failed (scene, output file), 2 for a

@@ -60,9 +60,13 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
         out << "bias: no light casts a shadow\n";
         return;
     }
-    out << "bias of " << first->name << ", the first view (glPolygonOffsetClamp, at this scene's receivers):\n";
-    for (const std::string& line : describeBias(stats.bias))
-        out << "  " << line << "\n";
+    // A cascaded light: every cascade (its texel sets the texel-relative terms, its receivers the depths).
+    for (const FrameStats::ViewBias& v : stats.viewBias) {
+        out << "bias of " << v.name
+            << (stats.viewBias.size() > 1 ? "" : ", the first view") << " (glPolygonOffsetClamp, at "
+            << (stats.viewBias.size() > 1 ? "the receivers in its volume" : "this scene's receivers") << "):\n";
+        for (const std::string& line : describeBias(v.bias)) out << "  " << line << "\n";
+    }
 }
 
 }  // namespace shadowlab::cli

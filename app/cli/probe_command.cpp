@@ -73,12 +73,15 @@ int runProbe(const ProbeOptions& options) {
                 measured = meter.measure(scene, *one, camera, options.width, options.height);
                 if (!measured->ok) return fail("--measure: light " + std::to_string(index) + ": " + measured->error);
             }
-            const PixelProbeReport report = probe.at(x, y, measured ? &*measured : nullptr);
+            std::optional<std::size_t> view;
+            if (!options.view.empty() && !(view = findView(probe.views(), options.view, error)))
+                return fail(error);
+            const PixelProbeReport report = probe.at(x, y, measured ? &*measured : nullptr, view);
             if (!report.ok) return fail("light " + std::to_string(index) + ": " + report.error);
             for (const std::string& line : describeProbe(report)) std::cout << line << "\n";
             perLight.push_back(probeToJson(report));
             disagrees = disagrees || !report.agrees;
-            if (!report.agrees)
+            if (!report.agrees)  // (true when not compared: a --view the GPU does not read there)
                 std::cerr << "error: light " << index
                           << ": the CPU's shadow factor and the GPU's disagree at this pixel (a bug)\n";
         }

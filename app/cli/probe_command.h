@@ -17,7 +17,13 @@ struct ProbeOptions {
     std::string json;   // optional
     bool measure = false;
     int light = -1;     // --light N: probe light N only (index into the effective lights); -1 = every casting light
+    std::string view;   // --view: a cube face or cascade:N to look up in; "" = the view holding the point
 };
+
+// --view's help, shared by the per-light tools (probe, profile, export).
+inline constexpr const char* kViewOptionHelp =
+    "which of the light's views: a point light's cube face (+X, -X, +Y, -Y, +Z, -Z) or a cascaded light's cascade:N "
+    "(default: every view, or the one holding the point)";
 
 // "X,Y" -> the pixel; false (and `error` set, naming `option`) when it is not two integers.
 bool parsePixel(const std::string& text, int& x, int& y, std::string& error, const std::string& option = "--pixel");

@@ -47,10 +47,17 @@ int runProfile(const ProfileOptions& options) {
         if (error = probe.capture(renderer, scene, *one, camera, options.width, options.height, *light); !error.empty())
             return fail(error);
         for (const std::string& w : probe.stats().warnings) std::cerr << "warning: " << w << "\n";
-        const DepthProfile profile = depthProfile(probe, from, to);
+        std::optional<std::size_t> view;
+        if (!options.view.empty() && !(view = findView(probe.views(), options.view, error))) return fail(error);
+        const DepthProfile profile = depthProfile(probe, from, to, view);
         if (!profile.ok) return fail(profile.error);
         std::cout << "scene " << scene.name << ", light " << *light << " (" << lightTypeName(one->lights.front().type)
-                  << ")\n"
+                  << ")"
+                  << (!options.view.empty() ? ", " + options.view + " (--view)"
+                      : probe.views().size() > 1 ? ", each point in the view holding it (of " +
+                                                       std::to_string(probe.views().size()) + "; --view chooses one)"
+                                                 : std::string())
+                  << "\n"
                   << "line " << options.from << " -> " << options.to << ": " << profile.samples.size()
                   << " samples, " << profile.surfaces << " on surfaces, " << profile.acne << " acne, "
                   << profile.peterPanning << " Peter Panning\n";
@@ -64,6 +71,7 @@ int runProfile(const ProfileOptions& options) {
             json["preset"] = options.preset;
             json["view"] = {options.width, options.height};
             json["light"] = *light;
+            if (!options.view.empty()) json["lightView"] = options.view;
             if (error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty()) return fail(error);
             std::cout << "wrote " << options.json << "\n";
         }

@@ -17,6 +17,7 @@ struct ProfileOptions {
     std::string json;      // optional: every sample's numbers
     int plotWidth = 960;
     int plotHeight = 480;
+    std::string view;  // --view: a cube face or cascade:N (default: the view holding each point)
     int light = -1;        // --light N; -1: the only shadow-casting light (several: refused, say which)
 };
 

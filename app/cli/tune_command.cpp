@@ -95,6 +95,14 @@ int runTune(const TuneOptions& options) {
                           << (best.receiverPlaneBias ? "true" : "false") << " (" << result.path.size()
                           << " candidates in " << result.seconds << " s)\n";
                 if (const std::string why = receiverPlaneChoice(result); !why.empty()) std::cout << why << "\n";
+                if (!result.report.cascades.cascades.empty()) {  // the one setting, judged in every cascade
+                    std::cout << "holds in every cascade:";
+                    for (const CascadeNumbers& c : result.report.cascades.cascades)
+                        std::cout << " cascade:" << c.cascade << " acne " << c.acnePercent << " % (texel "
+                                  << c.texelWorldSize << ", " << c.measured << " pixels"
+                                  << (c.measured < kTuneCascadeMinPixels ? ", too few to judge alone" : "") << ");";
+                    std::cout << "\n";
+                }
                 setLightShadow(tuned, index, result.best.lights[0].shadow);
                 summary += " " + label + ": acne " + std::to_string(result.report.acnePercent) + " %, leak " +
                            std::to_string(result.report.leakPercent) + " %, wrong pixels " +
@@ -102,9 +110,15 @@ int runTune(const TuneOptions& options) {
             } else {
                 allReached = false;
                 const CauseInfo& blocking = causeInfo(result.blockingCause);
-                std::cout << "\n" << label << ": NO setting reached acne <= " << options.maxAcnePercent
-                          << " %: stopped by " << blocking.name << " (" << blocking.remedy << "). Least acne: "
-                          << result.report.acnePercent << " % at DepthBias " << best.depthBias
+                std::cout << "\n" << label << ": NO setting reached acne <= " << options.maxAcnePercent << " %";
+                if (result.blockingCascade >= 0)  // the light's overall acne passes, one cascade's does not
+                    std::cout << " in every cascade: cascade:" << result.blockingCascade << " stops it (texel "
+                              << result.blockingCascadeTexel << " world units, acne " << result.blockingCascadeAcne
+                              << " % at the closest candidate; " << blocking.name << ", " << blocking.remedy
+                              << "). Overall acne there: ";
+                else
+                    std::cout << ": stopped by " << blocking.name << " (" << blocking.remedy << "). Least acne: ";
+                std::cout << result.report.acnePercent << " % at DepthBias " << best.depthBias
                           << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias << ", normal offset "
                           << best.normalOffset << " texels, cullMode " << cull << " (" << result.path.size()
                           << " candidates in " << result.seconds << " s). No preset written.\n";
@@ -123,10 +137,12 @@ int runTune(const TuneOptions& options) {
                                 {"acnePercent", s.acnePercent}, {"leakPercent", s.leakPercent},
                                 {"wrongPixelsPercent", s.wrongPercent}, {"wrongBeyondK", s.wrongBeyondK},
                                 {"meanError", s.meanError}, {"edgeErrorP95Texels", s.edgeErrorTexels},
-                                {"withinLimit", s.withinLimit}, {"bestSoFar", s.bestSoFar}});
+                                {"withinLimit", s.withinLimit}, {"bestSoFar", s.bestSoFar},
+                                {"cascadeAcnePercent", s.cascadeAcnePercent}});
             lightsJson.push_back({{"index", index},
                                   {"reachedLimit", result.reachedLimit},
                                   {"blockingCause", causeInfo(result.blockingCause).key},
+                                  {"blockingCascade", result.blockingCascade},
                                   {"seconds", result.seconds},
                                   {"closest",
                                    {{"depthBias", best.depthBias}, {"slopeScaledDepthBias", best.slopeScaledDepthBias},

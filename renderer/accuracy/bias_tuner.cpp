@@ -59,10 +59,15 @@ std::string cullModeName(CullMode mode) {
     return findSettingsField("shadow.cullMode")->get(s).get<std::string>();
 }
 
+double limitingAcne(const TuneStep& s) {
+    return s.worstCascade < 0 ? s.acnePercent
+                              : std::max(s.acnePercent, s.cascadeAcnePercent[std::size_t(s.worstCascade)]);
+}
+
 bool betterCandidate(const TuneStep& a, const TuneStep& b) {
     if (a.withinLimit != b.withinLimit) return a.withinLimit;
-    if (!a.withinLimit) {
-        if (a.acnePercent != b.acnePercent) return a.acnePercent < b.acnePercent;
+    if (!a.withinLimit) {  // the least acne where it is worst (a cascaded light: its worst judged cascade)
+        if (limitingAcne(a) != limitingAcne(b)) return limitingAcne(a) < limitingAcne(b);
         if (a.wrongBeyondK != b.wrongBeyondK) return a.wrongBeyondK < b.wrongBeyondK;
         return a.biasTexels < b.biasTexels;
     }
@@ -208,6 +213,14 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         step.meanError = report.meanError;
         step.edgeErrorTexels = report.edgeErrorP95Texels;
         step.withinLimit = report.acnePercent <= maxAcnePercent;
+        // A cascaded light: one setting for every cascade, each judged on the pixels it holds.
+        for (const CascadeNumbers& c : report.cascades.cascades) {
+            step.cascadeAcnePercent.push_back(c.acnePercent);
+            if (c.measured < kTuneCascadeMinPixels) continue;
+            if (step.worstCascade < 0 || c.acnePercent > step.cascadeAcnePercent[std::size_t(step.worstCascade)])
+                step.worstCascade = c.cascade;
+            step.withinLimit = step.withinLimit && c.acnePercent <= maxAcnePercent;
+        }
         lastCulled = report.counts.causeWrong[std::size_t(MismatchCause::CasterCulled)];
         if (!bestIndex || betterCandidate(step, result.path[*bestIndex])) {
             step.bestSoFar = true;
@@ -311,6 +324,14 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     if (result.reachedLimit) {
         result.best = result.closest;
     } else {
+        // A cascaded light: the cascade that stops it, where the overall acne alone would pass.
+        const TuneStep& closest = result.path[*bestIndex];
+        if (closest.worstCascade >= 0 && closest.acnePercent <= maxAcnePercent) {
+            const CascadeNumbers& c = result.report.cascades.cascades[std::size_t(closest.worstCascade)];
+            result.blockingCascade = c.cascade;
+            result.blockingCascadeTexel = c.texelWorldSize;
+            result.blockingCascadeAcne = c.acnePercent;
+        }
         // What keeps the least-acne candidate's acne up: the cause of most of its acne pixels.
         std::size_t most = 0;
         for (MismatchCause cause : {MismatchCause::SelfShadowing, MismatchCause::AlphaTest,

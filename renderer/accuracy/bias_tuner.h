@@ -29,13 +29,23 @@ struct TuneStep {
     std::size_t wrongBeyondK = 0;
     double meanError = 0.0;
     double edgeErrorTexels = 0.0;
-    bool withinLimit = false;        // acnePercent <= maxAcnePercent
+    // A cascaded light: each cascade's acne % over the pixels it holds (nearest first), and the worst of those that
+    // hold at least kTuneCascadeMinPixels measured pixels (-1: none); the limit holds only when it holds in each.
+    std::vector<double> cascadeAcnePercent;
+    int worstCascade = -1;
+    bool withinLimit = false;        // acnePercent <= maxAcnePercent (a cascaded light: in every judged cascade too)
     bool bestSoFar = false;          // this candidate became the best so far
 };
 
+// A cascade holding fewer measured pixels than this is not judged on its own (one acne pixel of 20 is 5 %); its
+// pixels still count in the light's overall acne.
+inline constexpr std::size_t kTuneCascadeMinPixels = 200;
+
 // Is a a better suggestion than b? Within the acne limit first; among those the fewest wrong pixels beyond k, then
-// the smallest edge error, then the smallest bias; outside the limit, the least acne.
+// the smallest edge error, then the smallest bias; outside the limit, the least acne (limitingAcne).
 bool betterCandidate(const TuneStep& a, const TuneStep& b);
+// The acne that decides a candidate outside the limit: its overall acne, or its worst judged cascade's if higher.
+double limitingAcne(const TuneStep& s);
 
 // The preset spelling of a cull mode ("back", "front", "none"), from the settings' key table.
 std::string cullModeName(CullMode mode);
@@ -48,6 +58,11 @@ struct TuneResult {
     Settings best;                   // reached: start with the best bias (cull mode, receiver plane) found; else start
     Settings closest;                // the candidate with the least acne (== best when reached)
     MismatchCause blockingCause = MismatchCause::None;  // not reached: the cause of most of closest's acne
+    // Not reached on a cascaded light: the cascade whose acne stays above the limit at the closest candidate (the
+    // worst), its texel and its acne; -1 when the light's overall acne stops it or it has no cascades.
+    int blockingCascade = -1;
+    double blockingCascadeTexel = 0.0;
+    double blockingCascadeAcne = 0.0;
     std::vector<TuneStep> path;      // every candidate measured, in order
     AccuracyReport report;           // the measurement of `closest`
     double seconds = 0.0;            // wall time of the search

@@ -48,11 +48,14 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
     const ShadowMapSettings& s = e.shadow;
     std::ostringstream o;
     const bool cube = e.lightType == LightType::Point;
-    o << c << e.label << (cube ? " (six cube-face views)" : "") << ": ShadowLab shadow pass, exported for " << (api == ExportFormat::D3D12 ? "Direct3D 12"
+    o << c << e.label << (cube ? " (six cube-face views)" : e.cascaded ? " (cascaded: " + std::to_string(e.cascadeCount) +
+                                                                          " cascades following the camera)" : "")
+      << ": ShadowLab shadow pass, exported for " << (api == ExportFormat::D3D12 ? "Direct3D 12"
                                                            : api == ExportFormat::D3D11 ? "Direct3D 11"
                                                            : api == ExportFormat::Vulkan ? "Vulkan" : "OpenGL 4.5")
       << "\n";
-    o << c << "Shadow map: " << (cube ? "a cube map of six " : "") << s.resolution << "x" << s.resolution
+    o << c << "Shadow map: " << (cube ? "a cube map of six " : e.cascaded ? "a 2D array of one layer per cascade, each " : "")
+      << s.resolution << "x" << s.resolution
       << (cube ? " faces" : "") << ", " << formatName(e, api)
       << (e.reversedZ ? "; depth test GREATER, cleared to 0.0: REVERSED-Z (near 1, far 0).\n"
                       : "; depth test LESS, cleared to 1.0: NOT reversed-Z.\n");
@@ -81,7 +84,10 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
           << " - 1) = " << number(e.depthStep) << "\n";
     o << c << "Bias = DepthBias * r + SlopeScaledDepthBias * MaxDepthSlope, then clamped to DepthBiasClamp"
       << (s.depthBiasClamp == 0.0f ? " (0 = no clamp)" : "") << ".\n";
-    if (e.bias.valid)
+    if (e.cascaded)
+        o << c << "Cascades: the same rasterizer bias in every cascade; what it amounts to in each (its receivers, its\n"
+          << c << "  texel) is listed with each cascade's view below, and the normal offset scales with each cascade's texel.\n";
+    else if (e.bias.valid)
         o << c << "At " << e.sceneLabel << "'s receivers (window depth " << number(e.bias.receiverDepthMin) << ".."
           << number(e.bias.receiverDepthMax) << "): DepthBias = " << number(e.bias.constantNear.world) << ".."
           << number(e.bias.constantFar.world) << " world units,\n" << c << "  slope-scaled at the median slope = "
@@ -172,6 +178,7 @@ std::string matrixName(const ShadowExport& e, const ExportView& v) {
     static const char* faces[6] = {"PX", "NX", "PY", "NY", "PZ", "NZ"};
     std::string name = "light" + std::to_string(e.lightIndex);
     if (v.cubeFace >= 0 && v.cubeFace < 6) name += std::string("Face") + faces[v.cubeFace];
+    if (v.cascade >= 0) name += "Cascade" + std::to_string(v.cascade);
     return name + "ViewProjection";
 }
 
@@ -179,7 +186,11 @@ std::string matrixName(const ShadowExport& e, const ExportView& v) {
 std::string viewsBlock(const ShadowExport& e, ExportFormat api) {
     const bool d3d = api == ExportFormat::D3D12 || api == ExportFormat::D3D11;
     std::ostringstream o;
-    o << "\n// " << e.label << ": " << e.views.size() << (e.views.size() == 1 ? " view" : " views (cube faces, layer = face in the order +X,-X,+Y,-Y,+Z,-Z)")
+    o << "\n// " << e.label << ": " << e.views.size()
+      << (e.cascaded ? (e.views.size() == e.cascadeCount
+                            ? " views (cascades, nearest the camera first; layer = cascade)"
+                            : " view of its " + std::to_string(e.cascadeCount) + " cascades (--view)")
+          : e.views.size() == 1 ? " view" : " views (cube faces, layer = face in the order +X,-X,+Y,-Y,+Z,-Z)")
       << ". Matrices: column-major, taking world positions minus the render origin ("
       << number(e.renderOrigin.x) << ", " << number(e.renderOrigin.y) << ", " << number(e.renderOrigin.z) << ");\n// "
       << (api == ExportFormat::GL ? (e.reversedZ ? "ShadowLab's zero-to-one reversed-Z matrix (near 1, far 0)" : "ShadowLab's own ([-1,1] clip depth)")
@@ -190,8 +201,21 @@ std::string viewsBlock(const ShadowExport& e, ExportFormat api) {
     for (const ExportView& v : e.views) {
         const glm::dmat4 m = apiMatrix(e, v, api);
         o << "// View " << v.label << ": near " << number(v.nearPlane) << ", far " << number(v.farPlane)
-          << ", one texel = " << number(v.texelWorldSize) << " world units" << (e.perspective ? " at the scene centre's distance" : "")
-          << ".\nstatic const float " << matrixName(e, v) << "[16] = {";
+          << ", one texel = " << number(v.texelWorldSize) << " world units" << (e.perspective ? " at the scene centre's distance" : "");
+        if (v.cascade >= 0) {
+            o << ".\n//   Holds points up to depth " << number(v.farDepth) << " in front of the camera";
+            if (v.blendStart < v.farDepth) o << ", fading into cascade:" << v.cascade + 1 << " from " << number(v.blendStart);
+            o << "; normal offset " << number(e.shadow.normalOffset) << " texels = " << number(v.normalOffsetWorld)
+              << " world units";
+            if (v.bias.valid)
+                o << ";\n//   at its receivers: DepthBias = " << number(v.bias.constantNear.depth) << " depth = "
+                  << number(v.bias.constantNear.world) << " world units = " << number(v.bias.constantNear.texels)
+                  << " texels, total at the median receiver = " << number(v.bias.total.depth) << " depth = "
+                  << number(v.bias.total.world) << " world units = " << number(v.bias.total.texels) << " texels";
+            else
+                o << " (no receiver in its volume)";
+        }
+        o << ".\nstatic const float " << matrixName(e, v) << "[16] = {";
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r) o << (c || r ? ", " : "") << floatLiteral(float(m[c][r]));
         o << "};\n";
@@ -356,6 +380,8 @@ std::string gl(const ShadowExport& e) {
     return o.str();
 }
 
+nlohmann::json biasJson(const BiasTerm& t) { return {{"depth", t.depth}, {"world", t.world}, {"texels", t.texels}}; }
+
 nlohmann::json jsonOf(const ShadowExport& e) {
     const ShadowMapSettings& s = e.shadow;
     nlohmann::json j;
@@ -369,9 +395,26 @@ nlohmann::json jsonOf(const ShadowExport& e) {
         nlohmann::json view = {{"label", v.label}, {"near", v.nearPlane}, {"far", v.farPlane},
                                {"texelWorldSize", v.texelWorldSize}, {"viewProjectionColumnMajor", m}};
         if (v.cubeFace >= 0) view["cubeFace"] = cubeFaces()[std::size_t(v.cubeFace)].name;
+        view["normalOffsetWorld"] = v.normalOffsetWorld;
+        if (v.cascade >= 0) {
+            view["cascade"] = v.cascade;
+            view["farDepth"] = v.farDepth;
+            view["blendStart"] = v.blendStart;
+            if (v.bias.valid)
+                view["bias"] = {{"constantNear", biasJson(v.bias.constantNear)},
+                                {"constantFar", biasJson(v.bias.constantFar)},
+                                {"slope", biasJson(v.bias.slope)},
+                                {"total", biasJson(v.bias.total)},
+                                {"texelWorldSize", v.bias.texelWorldSize}};
+        }
         views.push_back(view);
     }
     j["views"] = views;
+    if (e.cascaded)  // the selection: a pixel's depth in front of this camera picks the cascade (view_select.glsl)
+        j["cascades"] = {{"count", e.cascadeCount},
+                         {"cameraEye", {e.camera.eye.x, e.camera.eye.y, e.camera.eye.z}},
+                         {"cameraForward", {e.camera.forward.x, e.camera.forward.y, e.camera.forward.z}},
+                         {"depth", "dot(worldPos - cameraEye, cameraForward), render-origin-relative"}};
     j["renderOrigin"] = {e.renderOrigin.x, e.renderOrigin.y, e.renderOrigin.z};
     j["depth"] = {{"format", formatName(e, ExportFormat::GL)},
                   {"bits", e.depthBits},
@@ -481,8 +524,18 @@ std::string exportSnippet(const ShadowExportSet& set, ExportFormat format) {
     if (set.lights.empty() || casting == 0) o << "// " << nothing << "\n";
     for (const LightExport& l : set.lights)
         o << "//   " << l.label << ": "
-          << (l.shadow ? (l.type == LightType::Point ? "casts (6 views: cube faces +X,-X,+Y,-Y,+Z,-Z)" : "casts (1 view)")
-                       : l.noShadowReason)
+          << (!l.shadow ? l.noShadowReason
+              : l.shadow->cascaded ? "casts (" + std::to_string(l.shadow->cascadeCount) + " cascades" +
+                                         (l.shadow->views.size() < l.shadow->cascadeCount
+                                              ? ", " + l.shadow->views.front().label.substr(l.shadow->label.size() + 1) +
+                                                    " exported (--view)"
+                                              : std::string()) + ")"
+              : l.type == LightType::Point
+                  ? "casts (" + (l.shadow->views.size() == 6 ? std::string("6 views: cube faces +X,-X,+Y,-Y,+Z,-Z")
+                                                              : "face " + l.shadow->views.front().label.substr(
+                                                                              l.shadow->views.front().label.size() - 2) +
+                                                                    " of 6 (--view)") + ")"
+                  : std::string("casts (1 view)"))
           << "\n";
     for (const LightExport& l : set.lights) {
         o << "\n// ======== " << l.label;

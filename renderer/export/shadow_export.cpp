@@ -28,6 +28,7 @@ ExportView viewOf(std::size_t index, LightType type, const LightSpace& light) {
     ExportView v;
     v.label = viewLabel(index, type, light.cubeFace);
     v.cubeFace = light.cubeFace;
+    v.normalOffsetWorld = 0.0;  // set by the caller, who knows the setting
     v.viewProjection = light.viewProjection();
     v.nearPlane = light.nearPlane;
     v.farPlane = light.farPlane;
@@ -57,6 +58,7 @@ ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, 
     e.lightType = l.type;
     e.label = lightLabel(lightIndex, l.type);
     e.views.push_back(viewOf(lightIndex, l.type, light));
+    e.views.back().normalOffsetWorld = double(s.normalOffset) * light.texelWorldSize;
     e.lightPosition = light.position;
     e.lightDirection = light.direction;
     e.shadow = s;
@@ -93,7 +95,8 @@ ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, 
 
 std::optional<ShadowExportSet> exportForScene(const Settings& requested, const Scene& scene,
                                               const std::string& sceneLabel, std::optional<std::size_t> onlyLight,
-                                              std::string& error) {
+                                              std::string& error, const ViewCamera* camera,
+                                              const std::string& onlyView) {
     if (const std::vector<std::string> problems = requested.validate(); !problems.empty()) {
         error = problems.front();
         return std::nullopt;
@@ -113,6 +116,10 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
                           std::to_string(settings.lights.size() - 1) + ": " + set.lightSource + ")";
         return std::nullopt;
     }
+    if (!onlyView.empty() && !onlyLight) {
+        error = "--view " + onlyView + ": say which light with --light N (a view belongs to one light)";
+        return std::nullopt;
+    }
     // The renderer's origin (the scene's centre); the light's sizes do not depend on it.
     const glm::dvec3 origin = renderOriginOf(scene.bounds);
     for (std::size_t i = 0; i < settings.lights.size(); ++i) {
@@ -128,15 +135,41 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
             out.noShadowReason = "casts no shadow (lights." + std::to_string(i) +
                                  ".castsShadows = false): it shines everywhere, no shadow map";
         } else {
-            const auto views = buildLightViews(l, i, scene.bounds, origin, nullptr, error);
+            auto views = buildLightViews(l, i, scene.bounds, origin, camera, error);
             if (!views) return std::nullopt;
+            const bool cascaded = views->front().kind == ShadowViewKind::Cascade;
+            const std::size_t viewCount = views->size();
+            if (!onlyView.empty()) {  // --view: that view alone
+                const std::optional<std::size_t> v = findView(*views, onlyView, error);
+                if (!v) return std::nullopt;
+                *views = {(*views)[*v]};
+            }
             ShadowExport e = makeShadowExport(settings, i, views->front().space, sceneLabel);
-            for (std::size_t v = 1; v < views->size(); ++v) e.views.push_back(viewOf(i, l.type, (*views)[v].space));
+            e.views.clear();
+            for (const ShadowView& view : *views) {
+                ExportView v = viewOf(i, l.type, view.space);
+                v.normalOffsetWorld = double(l.shadow.normalOffset) * view.space.texelWorldSize;
+                if (cascaded) {
+                    v.label = lightLabel(i, l.type) + " " + viewSuffix(view.kind, view.index);
+                    v.cascade = view.index;
+                    v.farDepth = view.slice.farDepth;
+                    v.blendStart = view.slice.blendStart;
+                    // Each cascade's own receivers and texel: the texel-relative terms differ per cascade.
+                    v.bias = biasReport(l.shadow, l.shadow.format, view.space, receiverDepths(scene, view.space, origin));
+                }
+                e.views.push_back(std::move(v));
+            }
             e.renderOrigin = origin;
-            // The depth-bias report needs one view's receivers; a point light's are spread over six faces.
-            if (views->size() == 1)
+            e.cascaded = cascaded;
+            e.cascadeCount = cascaded ? viewCount : 0;
+            if (cascaded) e.camera = views->front().slice.camera;
+            // The depth-bias report needs one view's receivers; a point light's are spread over six faces, a cascaded
+            // light's are per cascade (above).
+            if (views->size() == 1 && !cascaded)
                 e.bias = biasReport(l.shadow, l.shadow.format, views->front().space,
                                     receiverDepths(scene, views->front().space, origin));
+            else if (cascaded)
+                e.bias = e.views.front().bias;
             out.shadow = std::move(e);
         }
         set.lights.push_back(std::move(out));

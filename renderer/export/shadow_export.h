@@ -14,6 +14,7 @@
 #include "light/depth_bias.h"
 #include "light/light_space.h"
 #include "settings/settings.h"
+#include "views/view_camera.h"
 
 #include <cstddef>
 #include <optional>
@@ -29,10 +30,16 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
 // "d3d12|d3d11|vulkan|gl|json", for messages.
 const char* exportFormatChoices();
 
-// One shadow view of a light: a directional or spot light has one, a point light six (cube faces, GL order).
+// One shadow view of a light: a directional or spot light has one, a point light six (cube faces, GL order), a
+// cascaded directional light one per cascade (nearest the camera first).
 struct ExportView {
-    std::string label;           // "light 1 (spot)", "light 2 (point) face +X"
+    std::string label;           // "light 1 (spot)", "light 2 (point) face +X", "light 0 (directional) cascade:1"
     int cubeFace = -1;           // 0..5 for a point light's face, -1 otherwise
+    int cascade = -1;            // a cascade's index (0 = nearest the camera), -1 otherwise
+    double farDepth = 0.0;       // a cascade: it holds points up to this depth in front of the camera...
+    double blendStart = 0.0;     // ...and from this depth on fades into the next (= farDepth: no band)
+    double normalOffsetWorld = 0.0;  // the normal offset in this view's texels (a cascade's own), world units
+    BiasReport bias;             // a cascade: the bias at the receivers in its volume (valid when there are some)
     glm::dmat4 viewProjection{1.0};  // render-origin-relative world -> ShadowLab's light clip space (column-major)
     double nearPlane = 0.0, farPlane = 1.0;
     double texelWorldSize = 0.0; // directional: constant; perspective: at the scene centre's distance
@@ -44,7 +51,10 @@ struct ShadowExport {
     std::size_t lightIndex = 0;
     LightType lightType = LightType::Directional;
     std::string label;       // "light 1 (spot)"
-    std::vector<ExportView> views;  // the light's views: 1, or 6 for a point light
+    std::vector<ExportView> views;  // the light's views: 1, 6 for a point light, one per cascade (or the --view one)
+    bool cascaded = false;          // views are cascades, selected per pixel by its depth in front of `camera`
+    ViewCamera camera;              // cascaded: the camera they were fitted to (render-origin-relative)
+    std::size_t cascadeCount = 0;   // cascaded: the light's cascades (views may hold only the one asked for)
     glm::dvec3 renderOrigin{0.0};   // the matrices take world positions minus this
     glm::dvec3 lightPosition{0.0};  // spot / point: render-origin-relative
     glm::dvec3 lightDirection{0.0, -1.0, 0.0};  // directional / spot: unit, the direction light travels
@@ -113,7 +123,10 @@ struct Scene;
 // useSceneLights, the auto-fit volumes), each with every view. `onlyLight`: that light alone; a light that does not
 // exist is an error naming lights.N and the valid range. nullopt with `error` set when the settings or a light cannot
 // be used. A set with no light is not an error: the snippet says that nothing casts.
+// `camera`: the view's camera, render-origin-relative (cascades follow it; without one a cascaded light is an error
+// saying so). `onlyView`: with onlyLight, that view of it alone ("+X", "cascade:2"; views/shadow_view.h's findView).
 std::optional<ShadowExportSet> exportForScene(const Settings& settings, const Scene& scene, const std::string& sceneLabel,
-                                              std::optional<std::size_t> onlyLight, std::string& error);
+                                              std::optional<std::size_t> onlyLight, std::string& error,
+                                              const ViewCamera* camera = nullptr, const std::string& onlyView = "");
 
 }  // namespace shadowlab

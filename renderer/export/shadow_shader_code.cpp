@@ -1,5 +1,6 @@
 #include "export/shadow_shader_code.h"
 
+#include "gl/shader_sources.h"
 #include "shading/filter_taps.h"
 
 #include <cctype>
@@ -102,6 +103,51 @@ std::string clampToFar(const ShadowExport& e, const std::string& x) {
     return e.reversedZ ? "max(" + x + ", 0.0)" : "min(" + x + ", 1.0)";
 }
 
+// A cascaded light: which cascade holds a receiver and how the next one blends in, by ShadowLab's own selection
+// (shaders/shadow/view_select.glsl, printed as it is; GLSL, so a comment for HLSL), with this light's split depths
+// and the camera the cascades were fitted to.
+std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::string& p, const std::string& P) {
+    std::ostringstream o;
+    if (e.views.size() < e.cascadeCount) {
+        o << "\n// One cascade of " << e.cascadeCount << " exported (--view): no selection; look it up with "
+          << P << "CASCADE_TEXEL_WORLD[0].\n";
+        return o.str();
+    }
+    std::vector<double> far(4, 0.0), blend(4, 0.0);
+    for (const ExportView& v : e.views) {
+        far[std::size_t(v.cascade)] = v.farDepth;
+        blend[std::size_t(v.cascade)] = v.blendStart;
+    }
+    const auto v4 = [&](const std::vector<double>& x) {
+        return w.v4 + "(" + lit(x[0]) + ", " + lit(x[1]) + ", " + lit(x[2]) + ", " + lit(x[3]) + ")";
+    };
+    std::ostringstream g;  // GLSL
+    g << "\n// ---- The cascade selection: ShadowLab's shaders/shadow/view_select.glsl as it is ----\n"
+      << "#ifndef SHADOWLAB_VIEW_SELECT\n#define SHADOWLAB_VIEW_SELECT\n"
+      << embeddedShaderSources().at("shadow/view_select.glsl") << "#endif\n\n"
+      << "const int " << P << "CASCADES = " << e.cascadeCount << ";\n"
+      << "// Where each cascade ends, and where it starts fading into the next: depths in front of the camera.\n"
+      << "const vec4 " << P << "CASCADE_FAR = " << v4(far) << ";\n"
+      << "const vec4 " << P << "CASCADE_BLEND_START = " << v4(blend) << ";\n"
+      << "// The camera the cascades (and their matrices above) were fitted to, minus the render origin: a moving camera\n"
+      << "// needs the cascades refitted (ShadowLab does it every frame the camera moves).\n"
+      << "const vec3 " << P << "CAMERA_EYE = " << w.vec("vec3", e.camera.eye) << ";\n"
+      << "const vec3 " << P << "CAMERA_FORWARD = " << w.vec("vec3", e.camera.forward) << ";\n"
+      << "// Which cascade holds worldPos (view -1: beyond the shadow distance, lit) and, in its blend band, the next one's\n"
+      << "// share. S = choice.view < 0 ? 1.0 : mix(S(view), S(next), choice.weight) with\n"
+      << "// S(c) = " << p << "Shadow(map of cascade c, its matrix, " << P << "CASCADE_TEXEL_WORLD[c], worldPos, n"
+      << (e.receiverPlane ? ", positionDx, positionDy" : "") << ").\n"
+      << "CascadeChoice " << p << "Cascade(vec3 worldPos) {\n"
+      << "    return selectCascade(dot(worldPos - " << P << "CAMERA_EYE, " << P << "CAMERA_FORWARD), " << P
+      << "CASCADE_FAR, " << P << "CASCADE_BLEND_START, " << P << "CASCADES);\n}\n";
+    if (!w.hlsl) return g.str();
+    // HLSL: the same GLSL, commented, to translate (vecN -> floatN, the struct's constructor).
+    o << "\n// The cascade selection in GLSL (ShadowLab's shaders/shadow/view_select.glsl; translate vecN to floatN):\n";
+    std::istringstream lines(g.str());
+    for (std::string line; std::getline(lines, line);) o << "// " << line << "\n";
+    return o.str();
+}
+
 // Directional and spot lights: shadow2D and receiverPlaneSlope of shaders/shadow/lookup_2d.glsl.
 std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     const Words w(t.language);
@@ -120,8 +166,16 @@ std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
           << ", taken where control\n// flow is uniform (before any light's branch).\n";
     o << w.constant << " float " << P << "TEXEL = " << lit(1.0 / double(e.shadow.resolution)) << ";  // 1 / resolution\n"
       << w.constant << " float " << P << "NORMAL_OFFSET = " << lit(e.shadow.normalOffset) << ";  // texels\n"
-      << w.constant << " float " << P << "TEXEL_WORLD = " << lit(spot ? e.texelWorldPerDepth : e.texelWorldSize)
-      << (spot ? ";  // a texel's world size per unit of distance along the spot's axis\n" : ";  // a texel's world size\n");
+      ;
+    if (e.cascaded) {  // each cascade's own texel: the caller passes texelWorld of the cascade it looks up in
+        std::vector<std::string> sizes;
+        for (const ExportView& v : e.views) sizes.push_back(lit(v.texelWorldSize));
+        o << "// Each exported cascade's texel, world units (the normal offset and receiver plane scale with it).\n"
+          << w.array("float", P + "CASCADE_TEXEL_WORLD", sizes.size(), sizes);
+    } else {
+        o << w.constant << " float " << P << "TEXEL_WORLD = " << lit(spot ? e.texelWorldPerDepth : e.texelWorldSize)
+          << (spot ? ";  // a texel's world size per unit of distance along the spot's axis\n" : ";  // a texel's world size\n");
+    }
     if (spot)
         o << w.constant << " " << w.v3 << " " << P << "POSITION = " << w.vec(w.v3, e.lightPosition) << ";  // minus the render origin\n"
           << w.constant << " " << w.v3 << " " << P << "AXIS = " << w.vec(w.v3, e.lightDirection) << ";\n";
@@ -153,12 +207,13 @@ std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
           << "    float length2 = dot(slope, slope);\n"
           << "    return length2 > limit * limit ? slope * (limit * " << w.rsqrt << "(length2)) : slope;\n}\n";
     }
-    o << "\nfloat " << p << "Shadow(" << w.mapParameters(false) << ", " << w.m4 << " viewProjection, " << w.v3 << " worldPos, "
+    o << "\nfloat " << p << "Shadow(" << w.mapParameters(false) << ", " << w.m4 << " viewProjection, "
+      << (e.cascaded ? "float texelWorld, " : "") << w.v3 << " worldPos, "
       << w.v3 << " n" << (plane ? ",\n        " + w.v3 + " positionDx, " + w.v3 + " positionDy" : "") << ") {\n";
     if (spot)
         o << "    " << w.v3 << " fromLight = worldPos - " << P << "POSITION;\n"
           << "    float texelWorld = " << P << "TEXEL_WORLD * dot(fromLight, " << P << "AXIS);\n";
-    else
+    else if (!e.cascaded)
         o << "    float texelWorld = " << P << "TEXEL_WORLD;\n";
     o << "    " << w.v3 << " lookup = worldPos + n * (" << P << "NORMAL_OFFSET * texelWorld);  // normal offset\n"
       << "    " << w.v3 << " lightTex = " << p << "ToTexture(viewProjection, lookup);\n";
@@ -193,6 +248,7 @@ std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     o << "        sum += " << w.compare2D("tapTex", "tapRef") << ";\n"
       << "    }\n"
       << "    return sum / " << w.toFloat(P + "TAPS") << ";\n}\n";
+    if (e.cascaded) o << cascadeSelection(e, w, p, P);
     return o.str();
 }
 

@@ -66,6 +66,13 @@ struct FrameStats {
     LightSpace light;         // the first view's light space (light 0's in one-light scenes)
     std::string lightSource;  // which lights were used, in words
     BiasReport bias;  // what the first view's bias amounts to at this scene's receivers
+    // A cascaded first light: the bias in every cascade (its own receivers, texel and depth range), nearest first;
+    // viewBias[0].bias == bias. Otherwise the first view's alone.
+    struct ViewBias {
+        std::string name;  // "light 0 cascade:1"
+        BiasReport bias;
+    };
+    std::vector<ViewBias> viewBias;
     glm::dvec3 renderOrigin{0.0};
     glm::dmat4 cameraViewProjection{1.0};  // render-origin-relative
 };

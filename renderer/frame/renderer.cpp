@@ -266,13 +266,25 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         stats.light = first.space;
         stats.shadowMapResolution = map.resolution();
         stats.shadowMapFormat = map.format();
-        // The receivers' depths in the map change only with the scene and the light: not recomputed for a bias edit.
-        if (!receivers_ || receivers_->fingerprint != fingerprint ||
-            receivers_->lightViewProjection != first.space.viewProjection() ||
-            receivers_->resolution != first.space.resolution)
-            receivers_ = Receivers{fingerprint, first.space.viewProjection(), first.space.resolution,
-                                   receiverDepths(scene, first.space, stats.renderOrigin)};
-        stats.bias = biasReport(settings.lights[first.light].shadow, map.format(), first.space, receivers_->depths);
+        // The bias report's views: every cascade of a cascaded first light (the texel-relative terms and the
+        // receivers differ per cascade), else the first view.
+        std::vector<const ShadowView*> reported{&first};
+        if (first.kind == ShadowViewKind::Cascade)
+            for (const PlannedView& planned : plan.views)
+                if (planned.view.light == first.light && planned.view.id() != first.id()) reported.push_back(&planned.view);
+        receivers_.resize(reported.size());
+        for (std::size_t r = 0; r < reported.size(); ++r) {
+            const ShadowView& v = *reported[r];
+            // The receivers' depths in the map change only with the scene and the view: not recomputed for a bias edit.
+            if (receivers_[r].fingerprint != fingerprint || receivers_[r].lightViewProjection != v.space.viewProjection() ||
+                receivers_[r].resolution != v.space.resolution)
+                receivers_[r] = Receivers{fingerprint, v.space.viewProjection(), v.space.resolution,
+                                          receiverDepths(scene, v.space, stats.renderOrigin)};
+            stats.viewBias.push_back({viewName(v), biasReport(settings.lights[v.light].shadow,
+                                                              views_.at(v.id()).map.format(), v.space,
+                                                              receivers_[r].depths)});
+        }
+        stats.bias = stats.viewBias.front().bias;
         const bool clamps = std::any_of(settings.lights.begin(), settings.lights.end(), [](const LightSettings& l) {
             return l.castsShadows && l.shadow.depthBiasClamp != 0.0f;
         });

@@ -87,7 +87,8 @@ private:
         int resolution = 0;
         ReceiverDepths depths;
     };
-    std::optional<Receivers> receivers_;  // the scene's depths in the first view's map, for the bias report
+    // The scene's depths in the first view's map (a cascaded light's: in each cascade's), for the bias report.
+    std::vector<Receivers> receivers_;
 };
 
 // Changes whenever geometry, instances or alpha-relevant material values of the scene change.

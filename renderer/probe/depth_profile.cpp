@@ -58,7 +58,7 @@ void classify(const PixelProbeReport& r, ProfileSample& s) {
 
 }  // namespace
 
-DepthProfile depthProfile(const PixelProbe& probe, glm::ivec2 from, glm::ivec2 to) {
+DepthProfile depthProfile(const PixelProbe& probe, glm::ivec2 from, glm::ivec2 to, std::optional<std::size_t> lightView) {
     DepthProfile p;
     p.from = from;
     p.to = to;
@@ -81,7 +81,7 @@ DepthProfile depthProfile(const PixelProbe& probe, glm::ivec2 from, glm::ivec2 t
         s.x = pixels[i].x;
         s.y = pixels[i].y;
         s.t = pixels.size() > 1 ? length * double(i) / double(pixels.size() - 1) : 0.0;
-        const PixelProbeReport r = probe.at(s.x, s.y);
+        const PixelProbeReport r = probe.at(s.x, s.y, nullptr, lightView);
         if (r.ok) {
             classify(r, s);
             ++p.surfaces;

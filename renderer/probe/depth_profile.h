@@ -38,6 +38,8 @@ struct DepthProfile {
 std::vector<glm::ivec2> profilePixels(glm::ivec2 from, glm::ivec2 to);
 
 // The profile of the frame `probe` captured; `from`/`to` outside the view give !ok with a message.
-DepthProfile depthProfile(const PixelProbe& probe, glm::ivec2 from, glm::ivec2 to);
+// `lightView`: look every sample up in that one of probe.views() (default: the view holding each point).
+DepthProfile depthProfile(const PixelProbe& probe, glm::ivec2 from, glm::ivec2 to,
+                          std::optional<std::size_t> lightView = std::nullopt);
 
 }  // namespace shadowlab

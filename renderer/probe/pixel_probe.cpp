@@ -1,6 +1,7 @@
 #include "probe/pixel_probe.h"
 
 #include "accuracy/light_isolation.h"
+#include "settings/settings_fields.h"
 
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
@@ -64,32 +65,6 @@ std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w
     return map.readDepthRect(x0, y0, w, h);
 }
 
-namespace {
-
-// The frame's views of the light holding `first` (their stats, in planning order) and, beside them, as ShadowViews
-// for the view selection (views/view_select.h).
-struct FrameLightViews {
-    std::vector<const ShadowViewStats*> stats;
-    std::vector<ShadowView> views;
-    // The stats of the view that holds render-origin-relative point p (the first view when none does).
-    const ShadowViewStats& holding(const glm::dvec3& p) const {
-        const int v = selectView(views, p).view;
-        return *stats[std::size_t(std::max(v, 0))];
-    }
-};
-
-FrameLightViews frameLightViews(const std::vector<ShadowViewStats>& all, const ShadowViewStats& first) {
-    FrameLightViews out;
-    for (const ShadowViewStats& v : all)
-        if (v.hasView && v.light == first.light) {
-            out.stats.push_back(&v);
-            out.views.push_back({v.light, v.kind, v.index, v.space, v.slice});
-        }
-    return out;
-}
-
-}  // namespace
-
 std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Settings& settings,
                                 const Camera& camera, int width, int height, std::size_t lightIndex) {
     renderer_ = nullptr;
@@ -121,10 +96,24 @@ std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Se
     lightIndex_ = lightIndex;
     camera_ = camera;
     stats_ = std::move(stats);
+    // The probed light's views (capture holds one light: the first that has a view), their stats beside them.
+    views_.clear();
+    viewStats_.clear();
+    for (std::size_t v = 0; v < stats_.views.size(); ++v)
+        if (stats_.views[v].hasView && (viewStats_.empty() || stats_.views[v].light == stats_.views[viewStats_[0]].light))
+            viewStats_.push_back(v);
+    if (!viewStats_.empty()) views_ = frameViewsOf(stats_, stats_.views[viewStats_[0]].light);
+    for (ShadowView& v : views_) v.light = lightIndex;  // named as the caller's light (the frame holds it alone)
     return {};
 }
 
-PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) const {
+struct PixelProbe::Surface {
+    glm::dvec3 p{0.0};              // render-origin-relative
+    glm::dvec3 v[3];                // its triangle, render-origin-relative
+    glm::dvec3 shadingNormal{0.0};  // flipped on back faces
+};
+
+PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured, std::optional<std::size_t> view) const {
     PixelProbeReport r;
     r.x = x;
     r.y = y;
@@ -148,45 +137,21 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         r.error = "pixel " + std::to_string(x) + "," + std::to_string(y) + ": the surface point is not finite";
         return r;
     }
+    if (views_.empty()) {
+        r.error = "the light casts no shadow: nothing to probe";
+        return r;
+    }
+    if (view && *view >= views_.size()) {
+        r.error = "view " + std::to_string(*view) + " of a light with " + std::to_string(views_.size()) + " view(s)";
+        return r;
+    }
     const Scene& scene = *scene_;
     r.light = lightIndex_;
     r.lightType = settings_.lights.front().type;
     const glm::dvec3 origin = stats_.renderOrigin;
-    const glm::dvec3 p = samples_.point[i];
-    // The view that holds the point: the light's one view, or a point light's cube face (chosen below, as the GPU's
-    // cube lookup chooses it). The probe compares with that light's own S (capture renders it alone).
-    const ShadowViewStats* view = nullptr;
-    for (const ShadowViewStats& v : stats_.views)
-        if (v.hasView) {
-            view = &v;
-            break;
-        }
-    if (!view) {
-        r.error = "the light casts no shadow: nothing to probe";
-        return r;
-    }
-    const bool cube = view->face >= 0;
-    const FrameLightViews lightViews = frameLightViews(stats_.views, *view);
-    view = &lightViews.holding(p);
-    const ShadowMap* faceMap = renderer_->viewMap({view->light, view->kind, view->index});
-    r.face = view->face;
-    r.viewName = view->name;
-    if (view->kind == ShadowViewKind::Cascade) {
-        r.cascade = viewSuffix(view->kind, view->index);
-        const ViewChoice choice = selectView(lightViews.views, p);
-        if (choice.view < 0)
-            r.blendNote = "beyond the shadow distance: the GPU's S is 1 (lit); the taps below are the last cascade's";
-        else if (choice.next >= 0 && choice.weight > 0.0)
-            r.blendNote = "in the blend band: the GPU mixes this cascade with cascade:" + std::to_string(choice.next) +
-                          " at weight " + std::to_string(choice.weight) +
-                          ", so its S is compared here with this cascade's alone";
-    }
-    const LightSpace* space = &view->space;
-    const int res = view->resolution;
-    r.resolution = res;
-    r.format = view->format;
-    r.filter = settings_.filter;
-    r.addressMode = settings_.sampler.addressMode;
+    Surface s;
+    s.p = samples_.point[i];
+    const glm::dvec3& p = s.p;
 
     // The surface: the G-buffer's exact point, its triangle, and the main pass's interpolated normal.
     r.world = p + origin;
@@ -197,18 +162,18 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
     r.meshName = mesh.name;
     const glm::dmat4 model = glm::dmat4(instance.transform);
-    glm::dvec3 v[3], n[3];
+    glm::dvec3 n[3];
     for (int k = 0; k < 3; ++k) {
         const std::uint32_t index = mesh.indices[std::size_t(r.triangle) * 3 + std::size_t(k)];
-        v[k] = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0)) - origin;
+        s.v[k] = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0)) - origin;
         n[k] = index < mesh.normals.size() ? glm::dvec3(mesh.normals[index]) : glm::dvec3(0.0);
     }
-    const glm::dvec3 cross = glm::cross(v[1] - v[0], v[2] - v[0]);
+    const glm::dvec3 cross = glm::cross(s.v[1] - s.v[0], s.v[2] - s.v[0]);
     const double area2 = glm::dot(cross, cross);
     glm::dvec3 bary(1.0 / 3.0);
     if (area2 > 0.0) {
-        bary.x = glm::dot(glm::cross(v[1] - p, v[2] - p), cross) / area2;
-        bary.y = glm::dot(glm::cross(v[2] - p, v[0] - p), cross) / area2;
+        bary.x = glm::dot(glm::cross(s.v[1] - p, s.v[2] - p), cross) / area2;
+        bary.y = glm::dot(glm::cross(s.v[2] - p, s.v[0] - p), cross) / area2;
         bary.z = 1.0 - bary.x - bary.y;
     }
     const GpuDraw& draw = renderer_->gpuScene()->draws()[std::size_t(samples_.draw[i])];
@@ -218,9 +183,92 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     glm::dvec3 shading = glm::dmat3(draw.normalMatrix) * (bary.x * n[0] + bary.y * n[1] + bary.z * n[2]);
     shading = glm::length(shading) > 0.0 ? glm::normalize(shading) : r.geometricNormal;
     r.shadingNormal = r.frontFacing ? shading : -shading;
+    s.shadingNormal = r.shadingNormal;
+
+    // The view the GPU reads (views/view_select.h: a point light's face follows the lookup, chosen in lookupIn; a
+    // cascade by the point's depth, with its blend partner), or the one asked for.
+    const ViewChoice choice = selectView(views_, p);
+    const bool cascaded = views_.front().kind == ShadowViewKind::Cascade;
+    const bool beyond = cascaded && choice.view < 0;  // beyond the shadow distance: the GPU's S is 1
+    const std::size_t own = view ? *view : beyond ? views_.size() - 1 : std::size_t(std::max(choice.view, 0));
+    r.viewCount = int(views_.size());
+    r.viewChosen = view.has_value();
+    lookupIn(r, own, view.has_value(), s);
+    if (!r.error.empty()) return r;
+    r.shadowView = r.shadowCpu;
+    r.shadowGpu = double(shadow_[i]);
+    const bool blends = cascaded && !beyond && choice.next >= 0 && choice.weight > 0.0;
+    if (view && cascaded && (int(*view) != choice.view || blends)) {
+        // Another cascade than the GPU's (alone) here: its lookup, not compared.
+        r.compared = false;
+        r.blendNote = beyond ? "beyond the shadow distance: the GPU's S is 1 (lit); " + r.cascade +
+                                   "'s lookup is shown, not compared"
+                    : "the GPU reads cascade:" + std::to_string(choice.view) +
+                          (blends ? " and cascade:" + std::to_string(choice.next) : std::string()) +
+                          " here; " + r.cascade + "'s lookup is shown, not compared";
+    } else if (beyond) {
+        r.blendNote = "beyond the shadow distance: the GPU's S is 1 (lit); the taps below are the last cascade's";
+        r.shadowCpu = r.shadowLow = r.shadowHigh = 1.0;
+    } else if (blends && !view) {
+        // The blend band: the GPU mixes the two cascades' S at the selection's weight, and so does the probe.
+        PixelProbeReport next;
+        next.x = r.x, next.y = r.y, next.width = r.width, next.height = r.height;
+        lookupIn(next, std::size_t(choice.next), false, s);
+        if (!next.error.empty()) {
+            r.error = next.error;
+            return r;
+        }
+        const double w = choice.weight;
+        r.blendWeight = w;
+        r.blendNote = "in the blend band: the GPU mixes " + r.cascade + " and " + next.cascade + ": S = (1 - " +
+                      std::to_string(w) + ") x S(" + r.cascade + ") + " + std::to_string(w) + " x S(" + next.cascade +
+                      ")";
+        r.shadowCpu = (1.0 - w) * r.shadowView + w * next.shadowCpu;
+        r.shadowLow = (1.0 - w) * r.shadowLow + w * next.shadowLow;
+        r.shadowHigh = (1.0 - w) * r.shadowHigh + w * next.shadowHigh;
+        r.tolerance = std::max(r.tolerance, next.tolerance);
+        r.uncertainComparisons += next.uncertainComparisons;
+        r.blend.push_back(std::move(next));
+    } else if (view && views_.front().kind == ShadowViewKind::CubeFace && r.face != cubeFaceOf(
+                   r.lookupWorld - origin - views_.front().space.position)) {
+        r.compared = false;
+        r.blendNote = std::string("the GPU reads cube face ") +
+                      cubeFaces()[std::size_t(cubeFaceOf(r.lookupWorld - origin - views_.front().space.position))].name +
+                      " here; " + cubeFaces()[std::size_t(r.face)].name + "'s lookup is shown, not compared";
+    }
+    r.agrees = !r.compared ||
+               (r.shadowGpu >= r.shadowLow - r.tolerance && r.shadowGpu <= r.shadowHigh + r.tolerance);
+
+    if (measured && measured->ok && measured->width == r.width && measured->height == r.height &&
+        measured->pixelClass.size() > i) {
+        r.measured = true;
+        r.exact = measured->pixelClass[i];
+        r.cause = measured->pixelCause[i];
+        r.measuredShadow = measured->pixelShadow[i];
+    }
+    r.ok = true;
+    return r;
+}
+
+void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool forced, const Surface& s) const {
+    const glm::dvec3& p = s.p;
+    const glm::dvec3 origin = stats_.renderOrigin;
+    const ShadowViewStats* view = &stats_.views[viewStats_[viewIndex]];
+    const bool cube = view->face >= 0;
+    const ShadowMap* faceMap = renderer_->viewMap({view->light, view->kind, view->index});
+    r.face = view->face;
+    r.viewName = view->name;
+    r.cascade = view->kind == ShadowViewKind::Cascade ? viewSuffix(view->kind, view->index) : std::string();
+    const LightSpace* space = &view->space;
+    const int res = view->resolution;
+    r.resolution = res;
+    r.format = view->format;
+    r.filter = settings_.filter;
+    r.addressMode = settings_.sampler.addressMode;
 
     // The lookup: moved along the normal by normalOffset texels' world size, as main.frag.glsl does (a point light:
-    // the texel's size at the point's distance along its own face's axis, the shader's max(|x|, |y|, |z|)).
+    // the texel's size at the point's distance along its own face's axis, the shader's max(|x|, |y|, |z|); a cascade:
+    // its own texel).
     const LightSettings& probed = settings_.lights.front();  // capture() holds exactly the probed light
     const glm::dvec3 fromLight = p - space->position;
     const double texelWorld =
@@ -229,15 +277,17 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
         : space->perspective ? 2.0 * space->tanHalfFov / space->resolution * glm::dot(fromLight, space->direction)
                              : space->texelWorldSize;
     const double offsetWorld = probed.shadow.normalOffset > 0.0f ? probed.shadow.normalOffset * texelWorld : 0.0;
-    const glm::dvec3 lookup = p + r.shadingNormal * offsetWorld;
+    const glm::dvec3 lookup = p + s.shadingNormal * offsetWorld;
     // The GPU picks the cube face of the lookup (after the normal offset), not of the point.
-    if (cube) {
-        view = &lightViews.holding(lookup);
+    if (cube && !forced) {
+        const int v = selectView(views_, lookup).view;
+        view = &stats_.views[viewStats_[std::size_t(std::max(v, 0))]];
         faceMap = renderer_->viewMap({view->light, view->kind, view->index});
         space = &view->space;
         r.face = view->face;
         r.viewName = view->name;
     }
+    const glm::dvec3* v = s.v;
     const LightSpace& light = *space;
     r.lookupWorld = lookup + origin;
     r.lightView = glm::dvec3(light.view * glm::dvec4(lookup, 1.0));
@@ -326,7 +376,7 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     const int rectW = maxX >= minX ? maxX - minX + 1 : 0, rectH = maxY >= minY ? maxY - minY + 1 : 0;
     if (!faceMap) {
         r.error = "no shadow map for " + view->name;
-        return r;
+        return;
     }
     const std::vector<float> stored = readShadowMapRect(*faceMap, minX, minY, rectW, rectH);
     auto compare = [&](int tx, int ty, double weight, double receiver, double eps) {
@@ -387,8 +437,6 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     r.shadowHigh = high / taps * cone;
     // Bilinear comparisons weigh texels with the GPU's sub-texel precision (8 bits in D3D's rules and llvmpipe).
     r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;
-    r.shadowGpu = double(shadow_[i]);
-    r.agrees = r.shadowGpu >= r.shadowLow - r.tolerance && r.shadowGpu <= r.shadowHigh + r.tolerance;
 
     // The bias this surface gets as a caster: its own triangle's slope in the map, r at its largest depth.
     const double slope = windowDepthSlope(window[0], window[1], window[2]);
@@ -402,16 +450,6 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured) co
     r.bias.total = biasTerm(light, polygonOffsetDepth(shadow, r.format, maxDepth, r.bias.depthSlope), atDepth);
     r.bias.normalOffsetWorld = offsetWorld;
     r.bias.normalOffsetTexels = double(shadow.normalOffset);
-
-    if (measured && measured->ok && measured->width == r.width && measured->height == r.height &&
-        measured->pixelClass.size() > i) {
-        r.measured = true;
-        r.exact = measured->pixelClass[i];
-        r.cause = measured->pixelCause[i];
-        r.measuredShadow = measured->pixelShadow[i];
-    }
-    r.ok = true;
-    return r;
 }
 
 }  // namespace shadowlab

@@ -73,7 +73,10 @@ struct PixelProbeReport {
     int face = -1;                   // a point light: the cube face the lookup falls in (GL order +X,-X,+Y,-Y,+Z,-Z)
     std::string viewName;            // the shadow view probed, e.g. "light 0", "light 0 +X" (the light as captured)
     std::string cascade;             // a cascaded light: the cascade probed ("cascade:1"); "" otherwise
-    std::string blendNote;           // in a cascade's blend band: what the GPU mixes (its S is not this view's alone)
+    int viewCount = 1;               // the light's views (6 cube faces, its cascades)
+    bool viewChosen = false;         // the view was asked for (at()'s `view`), not the one holding the point
+    std::string blendNote;           // a cascade's blend band, beyond the shadow distance or a --view the GPU does not
+                                     // read here: how the GPU's S relates to the taps below
     bool reversedZ = false;          // the map's depth convention: near 1, far 0 (depths below are as stored)
     double receiverDepth = 0.0;      // what each tap compares: z clamped to the far plane (fixed point: to [0, 1])
     double depthUncertainty = 0.0;   // float rounding of the GPU's receiver depth, in depth
@@ -90,8 +93,16 @@ struct PixelProbeReport {
     double shadowLow = 0.0, shadowHigh = 0.0;  // range the GPU may give (uncertain comparisons, filter weights)
     double shadowGpu = 0.0;   // S as the main pass wrote it at this pixel
     double tolerance = 0.0;   // filter precision: the bilinear weights' sub-texel steps (0 for nearest taps)
-    bool agrees = false;      // shadowGpu within [shadowLow - tolerance, shadowHigh + tolerance]
+    bool agrees = false;      // shadowGpu within [shadowLow - tolerance, shadowHigh + tolerance] (true when !compared)
+    bool compared = true;     // false: a view chosen with at()'s `view` that the GPU does not read (alone) here
     int uncertainComparisons = 0;
+
+    // A cascade's blend band: the GPU's S = mix(S of this view, S of the next, blendWeight). `blend` holds the next
+    // cascade's own lookup of the same surface (its taps, bias and S in its texels; its own `blend` empty), and
+    // shadowCpu / shadowLow / shadowHigh above are the mix; shadowView is this view's S alone.
+    std::vector<PixelProbeReport> blend;  // 0 or 1
+    double blendWeight = 0.0;
+    double shadowView = 0.0;
 
     // From an accuracy measurement of the same view, when one was given.
     bool measured = false;
@@ -114,13 +125,24 @@ public:
     bool captured() const { return renderer_ != nullptr; }
 
     // One pixel of the captured frame (y down from the top). `measured`: an accuracy report of the same view (its
-    // exact visibility and cause are copied), or null.
-    PixelProbeReport at(int x, int y, const AccuracyReport* measured = nullptr) const;
+    // exact visibility and cause are copied), or null. `view`: an index into views() to look up in instead of the
+    // view holding the point (the selection's; in a blend band both cascades it mixes); the GPU's S is then compared
+    // only when it is the view the GPU reads there alone.
+    PixelProbeReport at(int x, int y, const AccuracyReport* measured = nullptr,
+                        std::optional<std::size_t> view = std::nullopt) const;
+
+    // The captured light's views (what `--view` chooses among: views/shadow_view.h's findView).
+    const std::vector<ShadowView>& views() const { return views_; }
 
     const FrameStats& stats() const { return stats_; }
     const SurfaceSamples& samples() const { return samples_; }
 
 private:
+    struct Surface;
+    // View `view`'s lookup of the surface: r's view, lookup, taps, bias and S fields. A point light's face follows the
+    // lookup (after the normal offset) unless `forced`.
+    void lookupIn(PixelProbeReport& r, std::size_t view, bool forced, const Surface& s) const;
+
     GBufferPass gbuffer_;
     RenderTarget target_;
     const Renderer* renderer_ = nullptr;
@@ -129,6 +151,8 @@ private:
     std::size_t lightIndex_ = 0;
     Camera camera_;
     FrameStats stats_;
+    std::vector<ShadowView> views_;          // the light's views in the frame (frameViewsOf)
+    std::vector<std::size_t> viewStats_;     // each one's index into stats_.views
     SurfaceSamples samples_;
     std::vector<float> shadow_;  // row 0 = top
 };

@@ -53,12 +53,42 @@ int litTaps(const PixelProbeReport& r) {
 nlohmann::json toJson(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json toJson(const BiasTerm& t) { return {{"depth", t.depth}, {"world", t.world}, {"texels", t.texels}}; }
 
+// The lookup of one view: where it reads the map, the receiver's depth, the bias in this view's texels, its taps.
+void lookupLines(const PixelProbeReport& r, std::vector<std::string>& lines, const std::string& indent) {
+    lines.push_back(indent + "lookup (normal offset applied): world " + vec(r.lookupWorld));
+    lines.push_back(indent + "  light view " + vec(r.lightView) +
+                    format(", map coord (%.6f, %.6f) = texel coord (%.3f, %.3f) in texel [%d,%d] of %d²%s%s",
+                           r.lightTexture.x, r.lightTexture.y, r.texelCoord.x, r.texelCoord.y, r.texel.x, r.texel.y,
+                           r.resolution, r.insideMap ? "" : " (outside the map: the address mode decides)",
+                           r.inCone ? "" : " (outside the spot cone: S = 0)"));
+    lines.push_back(indent + format("receiver depth %.9g (window depth %.9g, %s; float rounding +-%.2g)", r.receiverDepth,
+                           r.lightTexture.z, depthFormatName(r.format), r.depthUncertainty));
+    lines.push_back(indent + format("bias at this surface (depth slope m = %.3g per texel, r = %.3g)%s:",
+                                    r.bias.depthSlope, r.bias.step,
+                                    r.cascade.empty() ? "" : (" in " + r.cascade + "'s texels").c_str()));
+    lines.push_back(indent + "  constant DepthBias x r: " + units(r.bias.constant));
+    lines.push_back(indent + "  slope-scaled SlopeScaledDepthBias x m: " + units(r.bias.slope));
+    lines.push_back(indent + (r.bias.clamp.depth > 0.0 ? "  clamp DepthBiasClamp: " + units(r.bias.clamp)
+                                                       : std::string("  clamp: none")));
+    lines.push_back(indent + "  total (as a caster, in the map): " + units(r.bias.total));
+    lines.push_back(indent + format("  normal offset %.3g texels = %.3g world units along the shading normal",
+                           r.bias.normalOffsetTexels, r.bias.normalOffsetWorld));
+    lines.push_back(indent + format("filter %s%s: %zu taps (stored depth, lit if receiver <= stored; ? = within float "
+                           "rounding; (+x) = stored - receiver)",
+                           filterName(r.filter),
+                           r.filter.kind == FilterKind::Pcf ? format(" %dx%d", r.filter.kernel, r.filter.kernel).c_str()
+                           : r.filter.kind == FilterKind::Poisson ? format(" radius %g", double(r.filter.poissonRadius)).c_str()
+                                                                  : "",
+                           r.taps.size()));
+    for (const ProbeTap& t : r.taps) lines.push_back(indent + "  " + describeTap(r, t));
+}
+
 }  // namespace
 
 std::string probeSummary(const PixelProbeReport& r) {
     if (!r.ok) return r.error;
     return format("S = %.4f (GPU %.4f, %s): %d of %zu taps lit%s", r.shadowCpu, r.shadowGpu,
-                  r.agrees ? "agree" : "DISAGREE", litTaps(r), r.taps.size(),
+                  !r.compared ? "not compared" : r.agrees ? "agree" : "DISAGREE", litTaps(r), r.taps.size(),
                   r.uncertainComparisons ? format(", %d comparison(s) within float rounding",
                                                   r.uncertainComparisons).c_str()
                                          : "");
@@ -87,39 +117,28 @@ std::vector<std::string> describeProbe(const PixelProbeReport& r) {
     lines.push_back("light " + std::to_string(r.light) + " (" + lightTypeName(r.lightType) + ")" +
                     (r.face >= 0 ? std::string(", cube face ") + cubeFaces()[std::size_t(r.face)].name : std::string()) +
                     (r.cascade.empty() ? std::string() : ", " + r.cascade) +
+                    (r.viewCount < 2 ? std::string()
+                     : r.viewChosen ? format(" (of %d views: asked for with --view)", r.viewCount)
+                                    : format(" (of %d views: the one holding this point; --view chooses another)",
+                                             r.viewCount)) +
                     ", alone: S is this light's shadow factor");
     if (!r.blendNote.empty()) lines.push_back("  " + r.blendNote);
     lines.push_back("surface: world " + vec(r.world) + format(" on '%s' (instance %d, triangle %d), %s face",
                                                               r.meshName.c_str(), r.instance, r.triangle,
                                                               r.frontFacing ? "front" : "back"));
     lines.push_back("  geometric normal " + vec(r.geometricNormal) + ", shading normal " + vec(r.shadingNormal));
-    lines.push_back("lookup (normal offset applied): world " + vec(r.lookupWorld));
-    lines.push_back("  light view " + vec(r.lightView) +
-                    format(", map coord (%.6f, %.6f) = texel coord (%.3f, %.3f) in texel [%d,%d] of %d²%s%s",
-                           r.lightTexture.x, r.lightTexture.y, r.texelCoord.x, r.texelCoord.y, r.texel.x, r.texel.y,
-                           r.resolution, r.insideMap ? "" : " (outside the map: the address mode decides)",
-                           r.inCone ? "" : " (outside the spot cone: S = 0)"));
-    lines.push_back(format("receiver depth %.9g (window depth %.9g, %s; float rounding +-%.2g)", r.receiverDepth,
-                           r.lightTexture.z, depthFormatName(r.format), r.depthUncertainty));
-    lines.push_back(format("bias at this surface (depth slope m = %.3g per texel, r = %.3g):", r.bias.depthSlope,
-                           r.bias.step));
-    lines.push_back("  constant DepthBias x r: " + units(r.bias.constant));
-    lines.push_back("  slope-scaled SlopeScaledDepthBias x m: " + units(r.bias.slope));
-    lines.push_back(r.bias.clamp.depth > 0.0 ? "  clamp DepthBiasClamp: " + units(r.bias.clamp)
-                                              : std::string("  clamp: none"));
-    lines.push_back("  total (as a caster, in the map): " + units(r.bias.total));
-    lines.push_back(format("  normal offset %.3g texels = %.3g world units along the shading normal",
-                           r.bias.normalOffsetTexels, r.bias.normalOffsetWorld));
-    lines.push_back(format("filter %s%s: %zu taps (stored depth, lit if receiver <= stored; ? = within float "
-                           "rounding; (+x) = stored - receiver)",
-                           filterName(r.filter),
-                           r.filter.kind == FilterKind::Pcf ? format(" %dx%d", r.filter.kernel, r.filter.kernel).c_str()
-                           : r.filter.kind == FilterKind::Poisson ? format(" radius %g", double(r.filter.poissonRadius)).c_str()
-                                                                  : "",
-                           r.taps.size()));
-    for (const ProbeTap& t : r.taps) lines.push_back("  " + describeTap(r, t));
+    lookupLines(r, lines, "");
+    for (const PixelProbeReport& next : r.blend) {
+        lines.push_back(format("blend partner %s (weight %.4f), the same surface in its own map:", next.cascade.c_str(),
+                               r.blendWeight));
+        lookupLines(next, lines, "  ");
+        lines.push_back(format("  %s's S: CPU %.6f (possible %.6f..%.6f); %s's alone %.6f; mixed: %.6f",
+                               next.cascade.c_str(), next.shadowCpu, next.shadowLow, next.shadowHigh,
+                               r.cascade.c_str(), r.shadowView, r.shadowCpu));
+    }
     lines.push_back(format("shadow factor: CPU %.6f (possible %.6f..%.6f), GPU %.6f, tolerance %.2g: %s", r.shadowCpu,
-                           r.shadowLow, r.shadowHigh, r.shadowGpu, r.tolerance, r.agrees ? "agree" : "DISAGREE"));
+                           r.shadowLow, r.shadowHigh, r.shadowGpu, r.tolerance,
+                           !r.compared ? "not compared (see above)" : r.agrees ? "agree" : "DISAGREE"));
     if (r.measured) {
         lines.push_back(std::string("exact visibility: ") + className(r.exact) +
                         format("; measured S %.4f", double(r.measuredShadow)) +
@@ -144,7 +163,11 @@ nlohmann::json probeToJson(const PixelProbeReport& r) {
     j["lightType"] = lightTypeName(r.lightType);
     if (r.face >= 0) j["cubeFace"] = cubeFaces()[std::size_t(r.face)].name;
     if (!r.cascade.empty()) j["cascade"] = r.cascade;
-    if (!r.blendNote.empty()) j["blend"] = r.blendNote;
+    j["viewCount"] = r.viewCount;
+    j["viewChosen"] = r.viewChosen;
+    if (!r.blendNote.empty()) j["note"] = r.blendNote;
+    if (!r.blend.empty())  // the blend band: the next cascade's own lookup, and the weight the GPU mixes it at
+        j["blend"] = {{"weight", r.blendWeight}, {"shadowView", r.shadowView}, {"next", probeToJson(r.blend.front())}};
     j["surface"] = {{"world", toJson(r.world)},
                     {"geometricNormal", toJson(r.geometricNormal)},
                     {"shadingNormal", toJson(r.shadingNormal)},
@@ -182,7 +205,7 @@ nlohmann::json probeToJson(const PixelProbeReport& r) {
     j["filter"] = {{"kind", filterName(r.filter)}, {"kernel", r.filter.kernel},
                    {"poissonRadius", r.filter.poissonRadius}, {"taps", taps}};
     j["shadow"] = {{"cpu", r.shadowCpu}, {"low", r.shadowLow},  {"high", r.shadowHigh},
-                   {"gpu", r.shadowGpu}, {"tolerance", r.tolerance}, {"agree", r.agrees},
+                   {"gpu", r.shadowGpu}, {"tolerance", r.tolerance}, {"agree", r.agrees}, {"compared", r.compared},
                    {"uncertainComparisons", r.uncertainComparisons}};
     if (r.measured)
         j["accuracy"] = {{"exact", className(r.exact)}, {"measuredShadow", r.measuredShadow},

@@ -30,7 +30,8 @@ std::optional<std::size_t> findView(const std::vector<ShadowView>& lightViews, c
     error = choices.empty() || lightViews.size() < 2
                 ? "--view " + text + ": " + light + " has one view (--view chooses among a point light's cube faces or a " +
                       "cascaded light's cascades)"
-                : "--view " + text + ": " + light + " has no such view (its views: " + choices + ")";
+                : "--view " + text + ": " + light + " has no such view: it has " + std::to_string(lightViews.size()) +
+                      " views (allowed: " + choices + ")";
     return std::nullopt;
 }
 

@@ -260,6 +260,45 @@ TEST_F(BiasTunerTest, SaysWhenNoSettingReachesTheLimit) {
     EXPECT_DOUBLE_EQ(closest.acnePercent, result.report.acnePercent);
 }
 
+// Issue 20: a cascaded light's bias is one setting for every cascade. Each candidate is judged per cascade (the
+// cascades that hold enough pixels), and a suggestion holds in each of them.
+TEST_F(BiasTunerTest, ACascadedLightsSuggestionHoldsInEveryCascade) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings start = zeroBias(loadShippedPreset("default"));
+    LightSettings& sun = start.lights[0];
+    sun.projection.fit = ProjectionFit::Cascades;
+    sun.projection.cascadeCount = 3;
+    sun.projection.shadowDistance = 30.0f;
+    sun.projection.splitLambda = 0.6f;
+    sun.shadow.resolution = 512;
+    start.camera.autoFrame = false;
+    start.camera.position = {-4.0, 1.2, 9.0};
+    start.camera.target = {1.0, 0.3, -3.0};
+    const int w = 240, h = 135;
+    const Camera camera = cameraFor(start.camera, scene, double(w) / h);
+    AccuracyMeter meter;
+    const double limit = 0.1;
+    const TuneResult result = tuneBias(meter, scene, start, camera, w, h, limit);
+    ASSERT_TRUE(result.ok) << result.error;
+    ASSERT_FALSE(result.path.empty());
+    int cascadeStopped = 0;  // candidates within the limit overall but not in some cascade
+    for (const TuneStep& step : result.path) {
+        ASSERT_EQ(step.cascadeAcnePercent.size(), 3u) << "candidate " << step.index;
+        // Within the limit: overall and in the worst judged cascade.
+        bool everyCascade = step.acnePercent <= limit;
+        if (step.worstCascade >= 0) {
+            everyCascade = everyCascade && step.cascadeAcnePercent[std::size_t(step.worstCascade)] <= limit;
+        }
+        EXPECT_EQ(step.withinLimit, everyCascade) << "candidate " << step.index << " (" << step.phase << ")";
+        cascadeStopped += step.acnePercent <= limit && !step.withinLimit;
+    }
+    ASSERT_TRUE(result.reachedLimit) << "the textbook's cascades can all be clean";
+    for (const CascadeNumbers& c : result.report.cascades.cascades)
+        if (c.measured >= kTuneCascadeMinPixels)
+            EXPECT_LE(c.acnePercent, limit) << "cascade " << c.cascade << " (texel " << c.texelWorldSize << ")";
+    RecordProperty("candidatesStoppedByACascade", cascadeStopped);
+}
+
 TEST_F(BiasTunerTest, CancelStopsTheSearch) {
     const Scene scene = loadBuiltin("textbook");
     AccuracyMeter meter;

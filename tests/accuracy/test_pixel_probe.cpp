@@ -5,6 +5,7 @@
 #include "probe/pixel_probe.h"
 #include "probe/probe_description.h"
 #include "shading/filter_taps.h"
+#include "views/shadow_view.h"
 
 #include <cmath>
 #include <cstdio>
@@ -208,6 +209,100 @@ TEST_F(PixelProbeTest, CopiesTheMeasurementsVerdictAndCause) {
             }
         }
     EXPECT_GT(acne, 50) << "zero bias on grazing: self-shadowing pixels named by the probe";
+}
+
+// Issue 20: a cascaded light. In a blend band the GPU mixes two cascades; the probe looks the surface up in both, at
+// the selection's weight, and its mixed S equals the GPU's (compared with the holding cascade's S alone, pixels
+// whose two cascades differ disagree). --view: another cascade's lookup, in that cascade's texels, not compared.
+Settings cascadedTextbook() {
+    Settings s = loadShippedPreset("default");
+    LightSettings& sun = s.lights[0];
+    sun.projection.fit = ProjectionFit::Cascades;
+    sun.projection.cascadeCount = 3;
+    sun.projection.shadowDistance = 30.0f;
+    sun.projection.splitLambda = 0.6f;
+    sun.projection.blendBand = 0.4f;
+    sun.shadow.resolution = 256;  // coarse: the cascades' S differ along the shadow edges inside the bands
+    s.camera.autoFrame = false;
+    s.camera.position = {-4.0, 1.2, 9.0};
+    s.camera.target = {1.0, 0.3, -3.0};
+    return s;
+}
+
+TEST_F(PixelProbeTest, InACascadesBlendBandItMixesBothCascadesAsTheGpuDoes) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings s = cascadedTextbook();
+    const int w = 240, h = 135;
+    const Camera camera = cameraFor(s.camera, scene, double(w) / h);
+    Renderer renderer;
+    PixelProbe probe;
+    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    ASSERT_EQ(probe.views().size(), 3u);
+    int blended = 0, differing = 0, disagree = 0;
+    std::string first;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const PixelProbeReport r = probe.at(x, y);
+            if (!r.ok) continue;
+            if (!r.agrees && ++disagree == 1)
+                for (const std::string& line : describeProbe(r)) first += line + "\n";
+            if (r.blend.empty()) continue;
+            ++blended;
+            const PixelProbeReport& next = r.blend.front();
+            EXPECT_EQ(next.cascade, "cascade:" + std::to_string(std::stoi(r.cascade.substr(8)) + 1));
+            EXPECT_GT(r.blendWeight, 0.0);
+            EXPECT_LE(r.blendWeight, 1.0);
+            EXPECT_NEAR(r.shadowCpu, (1.0 - r.blendWeight) * r.shadowView + r.blendWeight * next.shadowCpu, 1e-12);
+            // The partner's bias is in its own (coarser) texels: the same normal offset setting, more world units.
+            EXPECT_GT(next.bias.normalOffsetWorld, r.bias.normalOffsetWorld);
+            // Where the mix matters: the two cascades' S differ by more than the GPU's tolerance, weighed by both.
+            if (std::abs(next.shadowCpu - r.shadowView) * std::min(r.blendWeight, 1.0 - r.blendWeight) > 0.01)
+                ++differing;
+        }
+    EXPECT_GT(blended, 500) << "the view holds blend bands";
+    EXPECT_GT(differing, 5) << "pixels where the mix matters (the two cascades' S differ)";
+    RecordProperty("blended", blended);
+    RecordProperty("differing", differing);
+    EXPECT_EQ(disagree, 0) << first;
+}
+
+TEST_F(PixelProbeTest, ViewChoosesACascadeAndSaysTheGpuDoesNotReadItThere) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings s = cascadedTextbook();
+    s.lights[0].projection.blendBand = 0.0f;
+    const int w = 160, h = 90;
+    const Camera camera = cameraFor(s.camera, scene, double(w) / h);
+    Renderer renderer;
+    PixelProbe probe;
+    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    std::string error;
+    const std::optional<std::size_t> two = findView(probe.views(), "cascade:2", error);
+    ASSERT_TRUE(two) << error;
+    EXPECT_FALSE(findView(probe.views(), "cascade:3", error));
+    EXPECT_NE(error.find("light 0 has no such view: it has 3 views (allowed: cascade:0, cascade:1, cascade:2)"),
+              std::string::npos) << error;
+    int checked = 0;
+    for (int y = h - 1; y >= 0 && checked < 20; y -= 2)
+        for (int x = 0; x < w && checked < 20; x += 7) {
+            const PixelProbeReport own = probe.at(x, y);
+            if (!own.ok || own.cascade != "cascade:0") continue;
+            const PixelProbeReport r = probe.at(x, y, nullptr, two);
+            ASSERT_TRUE(r.ok) << r.error;
+            EXPECT_EQ(r.cascade, "cascade:2");
+            EXPECT_TRUE(r.viewChosen);
+            EXPECT_FALSE(r.compared);
+            EXPECT_NE(r.blendNote.find("the GPU reads cascade:0 here"), std::string::npos) << r.blendNote;
+            // The same setting in cascade 2's texels: its world size scales with the texel.
+            const double ratio = probe.views()[2].space.texelWorldSize / probe.views()[0].space.texelWorldSize;
+            EXPECT_GT(ratio, 1.5);
+            EXPECT_NEAR(r.bias.normalOffsetWorld / own.bias.normalOffsetWorld, ratio, 1e-6 * ratio);
+            // The cascade the GPU reads, asked for by name, is compared as without --view.
+            const PixelProbeReport zero = probe.at(x, y, nullptr, std::size_t(0));
+            EXPECT_TRUE(zero.compared && zero.agrees);
+            EXPECT_EQ(zero.shadowCpu, own.shadowCpu);
+            ++checked;
+        }
+    EXPECT_EQ(checked, 20);
 }
 
 }  // namespace

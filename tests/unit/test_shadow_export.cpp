@@ -6,6 +6,9 @@
 #include "light/depth_format_change.h"
 #include "scene/builtin_scenes.h"
 #include "shading/filter_taps.h"
+#include "views/shadow_view.h"
+
+#include <glm/geometric.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -187,6 +190,77 @@ std::size_t count(const std::string& text, const std::string& part) {
     std::size_t n = 0;
     for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
     return n;
+}
+
+// Issue 20: a cascaded light exports every cascade (matrix, split, bias in its own texels) and the selection as
+// ShadowLab's own GLSL (shaders/shadow/view_select.glsl as it is); --view exports one cascade; without a camera it
+// says why it cannot.
+TEST(ShadowExportLights, ACascadedLightExportsEveryCascadeAndTheSelection) {
+    const std::optional<Scene> scene = makeBuiltinScene("textbook");
+    Settings s;
+    s.lights[0].projection.fit = ProjectionFit::Cascades;
+    s.lights[0].projection.cascadeCount = 3;
+    s.lights[0].projection.shadowDistance = 30.0f;
+    s.lights[0].projection.blendBand = 0.2f;
+    s.lights[0].shadow.normalOffset = 0.5f;
+    s.camera.autoFrame = false;
+    ViewCamera camera;  // near the floor looking across it, render-origin-relative
+    camera.eye = glm::dvec3(-4.0, 1.2, 9.0) - renderOriginOf(scene->bounds);
+    camera.forward = glm::normalize(glm::dvec3(5.0, -0.9, -12.0));
+    camera.right = glm::normalize(glm::cross(camera.forward, glm::dvec3(0.0, 1.0, 0.0)));
+    camera.up = glm::cross(camera.right, camera.forward);
+    camera.aspect = 16.0 / 9.0;
+    camera.farPlane = 100.0;
+    std::string error;
+    EXPECT_FALSE(exportForScene(s, *scene, "builtin:textbook", std::nullopt, error));
+    EXPECT_NE(error.find("lights.0"), std::string::npos) << error;
+
+    std::optional<ShadowExportSet> set = exportForScene(s, *scene, "builtin:textbook", std::nullopt, error, &camera);
+    ASSERT_TRUE(set) << error;
+    const ShadowExport& e = *set->lights.at(0).shadow;
+    ASSERT_TRUE(e.cascaded);
+    ASSERT_EQ(e.views.size(), 3u);
+    for (std::size_t c = 0; c < 3; ++c) {
+        const ExportView& v = e.views[c];
+        EXPECT_EQ(v.cascade, int(c));
+        EXPECT_EQ(v.label, "light 0 (directional) cascade:" + std::to_string(c));
+        EXPECT_DOUBLE_EQ(v.normalOffsetWorld, 0.5 * v.texelWorldSize);
+        EXPECT_LT(v.blendStart, v.farDepth);
+        if (v.bias.valid) EXPECT_DOUBLE_EQ(v.bias.texelWorldSize, v.texelWorldSize);
+        if (c > 0) {
+            EXPECT_GT(v.farDepth, e.views[c - 1].farDepth);
+            EXPECT_GT(v.texelWorldSize, e.views[c - 1].texelWorldSize);
+        }
+    }
+    const std::string gl = exportSnippet(*set, ExportFormat::GL);
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(contains(gl, "light0Cascade" + std::to_string(c) + "ViewProjection[16]")) << gl;
+    EXPECT_TRUE(contains(gl, "fading into cascade:1 from ")) << gl;
+    EXPECT_TRUE(contains(gl, "casts (3 cascades)")) << gl;
+    std::ifstream in(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders/shadow/view_select.glsl");
+    std::stringstream selection;
+    selection << in.rdbuf();
+    ASSERT_FALSE(selection.str().empty());
+    EXPECT_TRUE(contains(gl, selection.str())) << "the selection is the main pass's file, as it is";
+    EXPECT_TRUE(contains(gl, "CascadeChoice light0Cascade(vec3 worldPos)")) << gl;
+    const std::string d3d = exportSnippet(*set, ExportFormat::D3D12);
+    EXPECT_TRUE(contains(d3d, "// CascadeChoice selectCascade(")) << "HLSL: the GLSL selection as a comment";
+    const nlohmann::json j = nlohmann::json::parse(exportSnippet(*set, ExportFormat::Json));
+    const nlohmann::json& views = j["lights"][0]["views"];
+    ASSERT_EQ(views.size(), 3u);
+    EXPECT_EQ(views[2]["cascade"], 2);
+    EXPECT_DOUBLE_EQ(views[1]["farDepth"].get<double>(), e.views[1].farDepth);
+    EXPECT_EQ(j["lights"][0]["cascades"]["count"], 3);
+
+    // --view: one cascade; a view the light does not have names the light, its view count and the allowed values.
+    set = exportForScene(s, *scene, "builtin:textbook", 0, error, &camera, "cascade:1");
+    ASSERT_TRUE(set) << error;
+    ASSERT_EQ(set->lights[0].shadow->views.size(), 1u);
+    EXPECT_EQ(set->lights[0].shadow->views[0].cascade, 1);
+    EXPECT_TRUE(contains(exportSnippet(*set, ExportFormat::GL), "One cascade of 3 exported (--view)"));
+    EXPECT_FALSE(exportForScene(s, *scene, "builtin:textbook", 0, error, &camera, "cascade:3"));
+    EXPECT_EQ(error, "--view cascade:3: light 0 has no such view: it has 3 views (allowed: cascade:0, cascade:1, cascade:2)");
+    EXPECT_FALSE(exportForScene(s, *scene, "builtin:textbook", std::nullopt, error, &camera, "cascade:1"));
+    EXPECT_NE(error.find("--light N"), std::string::npos) << error;
 }
 
 TEST(ShadowExportLights, EveryLightIsExportedUnderItsOwnLabel) {

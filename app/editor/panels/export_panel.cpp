@@ -68,7 +68,12 @@ void drawExportPanel(PanelContext& ctx) {
     if (ui.light >= 0) only = std::size_t(ui.light);
     const FormatChoice& format = kFormats[std::size_t(ui.format)];
     std::string error;
-    const std::optional<ShadowExportSet> set = exportForScene(state.settings, *state.scene, state.sceneSpec, only, error);
+    // A cascaded light's cascades follow the viewport's camera: the one the newest frame fitted them to.
+    const ViewCamera* camera = nullptr;
+    for (const ShadowViewStats& v : state.stats.views)
+        if (v.hasView && v.kind == ShadowViewKind::Cascade) camera = &v.slice.camera;
+    const std::optional<ShadowExportSet> set =
+        exportForScene(state.settings, *state.scene, state.sceneSpec, only, error, camera);
     std::string text = set ? exportSnippet(*set, *parseExportFormat(format.name)) : "export failed: " + error;
 
     const float buttons = ImGui::GetFrameHeightWithSpacing() * 2.5f;
