@@ -3,6 +3,7 @@
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/light_isolation.h"
 #include "light/light_space.h"
+#include "scene/scene_animation.h"
 #include "views/view_select.h"
 
 #include <glm/geometric.hpp>
@@ -124,6 +125,16 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
         return fail("--motion light: lights." + std::to_string(motion.light) +
                     " is a point light at the scene's centre; turning it about the centre does not move it");
     if (motion.kind == MotionKind::Light) report.stepTexels = lightStepTexels(start, motion, scene.bounds);
+    // The animation motion poses a copy of the scene at each frame's time (the camera and light stay).
+    Scene animated;
+    if (motion.kind == MotionKind::Animation) {
+        const std::optional<std::vector<int>> chosen = chosenAnimations(scene, isolated->animation.play, error);
+        if (!chosen) return fail(error);
+        if (chosen->empty())
+            return fail("--motion animation: the scene " + scene.name + " has no animation to play (animation.play " +
+                        isolated->animation.play + ")");
+        animated = scene;
+    }
 
     const float outerBase = progress ? progress->base : 0.0f, outerSpan = progress ? progress->span : 1.0f;
     const std::size_t count = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
@@ -139,8 +150,10 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
         }
         Settings frameSettings = *isolated;
         frameSettings.lights[0] = lightAtFrame(start, motion, scene.bounds, f);
-        AccuracyReport current =
-            meter.measure(scene, frameSettings, cameraAtFrame(camera, motion, f), width, height, progress);
+        frameSettings.animation.time = float(animationTimeAtFrame(isolated->animation.time, motion, f));
+        if (motion.kind == MotionKind::Animation) poseScene(animated, frameSettings.animation);
+        AccuracyReport current = meter.measure(motion.kind == MotionKind::Animation ? animated : scene, frameSettings,
+                                               cameraAtFrame(camera, motion, f), width, height, progress);
         if (progress) {
             progress->base = outerBase;
             progress->span = outerSpan;
