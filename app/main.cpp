@@ -1,4 +1,5 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
+#include "cli/animation_options.h"
 #include "cli/bench_command.h"
 #include "cli/bench_lights.h"
 #include "cli/bench_planner.h"
@@ -106,11 +107,12 @@ int main(int argc, char** argv) {
                            "then time N live re-measures after a bias change (GPU count) against the CPU path")
         ->check(CLI::Range(1, 10000));
     measureCmd->add_option("--motion", measure.motion,
-                           "measure flicker instead: camera (translate), camera-turn or light (rotate) every frame");
+                           "measure flicker instead: camera (translate), camera-turn or light (rotate) every frame, or "
+                           "animation (the scene's animations advance)");
     measureCmd->add_option("--frames", measure.frames, "with --motion: frames rendered (pairs = frames - 1; default 10)");
     measureCmd->add_option("--step", measure.step,
-                           "with --motion: per frame, world units (camera, along its right vector) or degrees "
-                           "(camera-turn, light)");
+                           "with --motion: per frame, world units (camera, along its right vector), degrees "
+                           "(camera-turn, light) or seconds (animation, from animation.time)");
     measureCmd->add_option("--direction", measure.direction,
                            "with --motion: x,y,z = the camera's direction of travel or the rotation axis");
     measureCmd->add_option("--frames-out", measure.framesOut,
@@ -173,6 +175,13 @@ int main(int argc, char** argv) {
     profileCmd->add_option("--json", profile.json, "also write every sample's numbers as JSON");
     profileCmd->add_option("--plot-width", profile.plotWidth, "chart width")->capture_default_str();
     profileCmd->add_option("--plot-height", profile.plotHeight, "chart height")->capture_default_str();
+
+    // The commands that render a scene at a time of its animations.
+    const std::pair<CLI::App*, std::vector<std::string>*> posed[] = {
+        {renderCmd, &render.overrides}, {measureCmd, &measure.overrides}, {probeCmd, &probe.overrides},
+        {profileCmd, &profile.overrides}, {exportCmd, &exportOptions.overrides}, {tuneCmd, &tune.overrides}};
+    for (const auto& [command, overrides] : posed)
+        cli::addAnimationOptions(*command, *overrides);
 
     cli::SweepOptions sweep;
     CLI::App* sweepCmd = app.add_subcommand("sweep", "What accuracy costs: time and measure every point of preset-key axes, with the raster limit and the Pareto front");

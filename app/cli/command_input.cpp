@@ -2,6 +2,7 @@
 
 #include "accuracy/light_isolation.h"
 #include "frame/camera.h"
+#include "scene/scene_animation.h"
 #include "scene/scene_casters.h"
 #include "settings/atomic_file.h"
 #include "settings/regular_file.h"
@@ -37,6 +38,17 @@ SceneLoadResult loadSceneForCommand(const std::string& spec, std::initializer_li
     if (!loaded.scene) return loaded;
     for (const std::string& w : loaded.scene->warnings)
         std::cerr << "warning: " << loaded.scene->name << ": " << w << "\n";
+    // The scene at the first settings' animation time (a --compare side shares the pose: one scene is drawn).
+    for (const Settings* s : settings) {
+        if (!s) continue;
+        if (std::string error = poseScene(*loaded.scene, s->animation); !error.empty()) {
+            loaded.scene.reset();
+            loaded.error = std::move(error);
+            return loaded;
+        }
+        if (!loaded.scene->animations.empty()) std::cerr << "note: " << animationNote(*loaded.scene, s->animation) << "\n";
+        break;
+    }
     for (const Settings* s : settings) {
         if (!s) continue;
         if (std::string error = sceneCameraError(s->camera, *loaded.scene); !error.empty()) {

@@ -26,9 +26,12 @@ void printFlicker(std::ostream& out, const FlickerReport& r) {
     out << std::setprecision(4);
     out << "flicker, metrics version " << kMetricsVersion << " (" << r.width << "x" << r.height << ", "
         << lightLabel(r.lightIndex, r.lightType) << "): " << motionName(m.kind) << " moved " << m.step << " "
-        << motionInfo(m.kind).unit << " per frame = " << r.stepTexels << " texels of the light's map ("
-        << (r.stepTexels < 1.0 ? "sub-texel" : "a texel or more") << "; texel = " << r.texelWorldSize
-        << " world units), " << m.frames << " frames, " << r.pairs.size() << " pairs\n";
+        << motionInfo(m.kind).unit << " per frame";
+    if (m.kind != MotionKind::Animation)  // an animation moves casters, not the map: no step in texels
+        out << " = " << r.stepTexels << " texels of the light's map ("
+            << (r.stepTexels < 1.0 ? "sub-texel" : "a texel or more") << "; texel = " << r.texelWorldSize
+            << " world units)";
+    out << ", " << m.frames << " frames, " << r.pairs.size() << " pairs\n";
     if (!r.cascadeStepTexels.empty()) {
         out << "  step per cascade (texels of each cascade's map, nearest first):";
         for (double step : r.cascadeStepTexels) out << " " << step;

@@ -2,6 +2,7 @@
 
 #include "editor/editor_keys.h"
 #include "editor/panels/panel_registry.h"
+#include "editor/timeline.h"
 #include "frame/screenshot.h"
 #include "image/image_io.h"
 #include "image/split_view.h"
@@ -176,6 +177,8 @@ void Editor::renderFrame() {
     const double dt = std::clamp(t - state_.time, 0.0, 0.25);
     state_.time = t;
     pollSceneLoad();
+    advanceTimeline(state_, dt);
+    poseShownScene(state_);
     if (state_.animateLight) {
         state_.animatedAzimuthDeg = std::fmod(state_.animatedAzimuthDeg + state_.animateDegreesPerSecond * dt, 360.0);
     }
@@ -220,6 +223,10 @@ void Editor::pollSceneLoad() {
 
 void Editor::adoptScene(std::shared_ptr<const Scene> scene, const std::string& spec) {
     state_.scene = std::move(scene);
+    state_.timeline.rest = state_.scene;  // shown posed at the settings' animation time
+    state_.timeline.posedAs.reset();
+    state_.timeline.playing = false;
+    poseShownScene(state_);
     state_.sceneSpec = spec;
     state_.scenePathInput = spec;
     renderer_->sceneChanged();
@@ -603,7 +610,8 @@ void Editor::dropFiles(const std::vector<std::string>& paths) {
 }
 
 bool Editor::busy() const {
-    if (state_.animateLight || screenshotRequested_ || windowScreenshotPath_ || state_.probe.request || flyMoving_)
+    if (state_.animateLight || state_.timeline.playing || screenshotRequested_ || windowScreenshotPath_ ||
+        state_.probe.request || flyMoving_)
         return true;
     // Nothing to draw into (no scene yet, or a minimized window): wait for events rather than spin.
     if (!state_.scene || !orbit_ || viewportRect_.z < 16.0f || viewportRect_.w < 16.0f) return false;

@@ -72,6 +72,17 @@ struct MapViewerState {
     std::string error;                      // why the newest picture could not be made
 };
 
+// The Timeline panel's player. The time and the animation played are settings (animation.time, animation.play);
+// playing, looping and speed are how the editor moves the time (never saved).
+struct TimelineState {
+    bool playing = false;
+    bool loop = true;
+    float speed = 1.0f;                       // seconds of animation per second of the clock
+    std::shared_ptr<const Scene> rest;        // the scene as loaded; EditorState::scene is it posed
+    std::optional<AnimationSettings> posedAs;  // what EditorState::scene was posed at (none: not yet)
+    std::string error;                        // why the scene could not be posed (an unknown animation.play)
+};
+
 struct EditorState {
     Settings settings;                              // what the next frame renders
     // The light the Light, Shadow map and Projection panels edit (an index into settings.lights; kept in range by
@@ -83,6 +94,7 @@ struct EditorState {
     std::string sceneSpec;                // "builtin:textbook" or a path
     std::shared_ptr<const Scene> scene;   // never null once the editor runs
     PresetSession preset;
+    TimelineState timeline;
 
     // View options that are not settings (they never mark the preset as changed).
     bool showLightFrustum = true;

@@ -3,6 +3,7 @@
 #include "accuracy/accuracy_overlay.h"
 #include "accuracy/light_isolation.h"
 #include "light/light_space.h"
+#include "scene/scene_animation.h"
 #include "views/view_select.h"
 
 #include <glm/geometric.hpp>
@@ -145,6 +146,16 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
         for (double step : steps) report.stepTexels = std::max(report.stepTexels, step);
         if (follows) report.cascadeStepTexels = steps;
     }
+    // The animation motion poses a copy of the scene at each frame's time (the camera and light stay).
+    Scene animated;
+    if (motion.kind == MotionKind::Animation) {
+        const std::optional<std::vector<int>> chosen = chosenAnimations(scene, isolated->animation.play, error);
+        if (!chosen) return fail(error);
+        if (chosen->empty())
+            return fail("--motion animation: the scene " + scene.name + " has no animation to play (animation.play " +
+                        isolated->animation.play + ")");
+        animated = scene;
+    }
 
     const float outerBase = progress ? progress->base : 0.0f, outerSpan = progress ? progress->span : 1.0f;
     const std::size_t count = std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0));
@@ -159,6 +170,9 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
     for (int f = 0; f < motion.frames; ++f) {
         Settings frameSettings = *isolated;
         frameSettings.lights[0] = lightAtFrame(start, motion, scene.bounds, f);
+        frameSettings.animation.time = float(animationTimeAtFrame(isolated->animation.time, motion, f));
+        if (motion.kind == MotionKind::Animation) poseScene(animated, frameSettings.animation);
+        const Scene& frameScene = motion.kind == MotionKind::Animation ? animated : scene;
         const Camera frameCamera = cameraAtFrame(camera, motion, f);
         const Camera previousCamera = cameraAtFrame(camera, motion, std::max(f - 1, 0));
         // Measure `half` of this frame (0: with frame f-1's views; 1: the frame itself); its progress share.
@@ -168,7 +182,7 @@ FlickerReport measureFlicker(AccuracyMeter& meter, const Scene& scene, const Set
                                                  float(motion.frames);
                 progress->span = outerSpan / float(motion.frames * measuresPerFrame);
             }
-            AccuracyReport r = meter.measure(scene, frameSettings, frameCamera, width, height, progress,
+            AccuracyReport r = meter.measure(frameScene, frameSettings, frameCamera, width, height, progress,
                                              half == 0 ? &previousCamera : nullptr);
             if (progress) {
                 progress->base = outerBase;

@@ -46,6 +46,7 @@ const std::vector<MotionInfo>& motionKinds() {
         {MotionKind::Camera, "camera", "world units", 0.002},
         {MotionKind::CameraTurn, "camera-turn", "degrees", 0.1},
         {MotionKind::Light, "light", "degrees", 0.02},
+        {MotionKind::Animation, "animation", "seconds", 1.0 / 30.0},
     };
     return kinds;
 }
@@ -78,6 +79,12 @@ std::string motionError(const Motion& motion, const Bounds& sceneBounds) {
         return out.str();
     }
     if (!std::isfinite(motion.step)) return "--step: must be a finite number";
+    if (motion.kind == MotionKind::Animation) {
+        if (motion.step > 0.0 && motion.step <= kMaxAnimationStepSeconds) return "";
+        out << "--step " << motion.step << ": an animation step is in seconds per frame, in (0, "
+            << kMaxAnimationStepSeconds << "]";
+        return out.str();
+    }
     if (motion.kind != MotionKind::Camera && std::abs(motion.step) > kMaxTurnStepDeg) {
         out << "--step " << motion.step << ": a " << motionName(motion.kind)
             << " step is in degrees per frame, at most " << kMaxTurnStepDeg << " (flicker is about sub-texel steps)";
@@ -111,6 +118,10 @@ Camera cameraAtFrame(const Camera& start, const Motion& motion, int frame) {
     camera.position += offset;
     camera.target += offset;
     return camera;
+}
+
+double animationTimeAtFrame(double start, const Motion& motion, int frame) {
+    return motion.kind == MotionKind::Animation ? start + motion.step * double(frame) : start;
 }
 
 glm::dvec3 lightRotationAxis(const LightSettings& light, const Motion& motion, const Bounds& sceneBounds) {

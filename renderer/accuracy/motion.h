@@ -20,6 +20,7 @@ enum class MotionKind {
     CameraTurn,  // the camera turns its view `step` degrees per frame about its position (default axis: world up)
     Light,       // the light rotates `step` degrees per frame (directional / spot: its direction; point: its position
                  // about the scene's centre)
+    Animation,   // the scene's animations (animation.play) advance `step` seconds per frame from animation.time
 };
 
 // One source for every motion's name, step unit and a typical sub-texel step (CLI, JSON, editor).
@@ -33,8 +34,8 @@ const std::vector<MotionInfo>& motionKinds();
 const MotionInfo& motionInfo(MotionKind kind);
 inline const char* motionName(MotionKind kind) { return motionInfo(kind).name; }
 std::optional<MotionKind> parseMotion(const std::string& name);
-std::string motionNames();  // "camera, camera-turn or light"
-inline bool movesCamera(MotionKind kind) { return kind != MotionKind::Light; }
+std::string motionNames();  // "camera, camera-turn, light or animation"
+inline bool movesCamera(MotionKind kind) { return kind == MotionKind::Camera || kind == MotionKind::CameraTurn; }
 
 struct Motion {
     MotionKind kind = MotionKind::Camera;
@@ -53,6 +54,7 @@ inline constexpr int kMaxMotionFrames = 1000;
 // Frames played when none are asked for (`measure --motion`, a check case's flicker limit).
 inline constexpr int kDefaultMotionFrames = 10;
 inline constexpr double kMaxTurnStepDeg = 45.0;  // per frame: a light's or the camera's turn
+inline constexpr double kMaxAnimationStepSeconds = 60.0;  // per frame: beyond it nothing is compared frame to frame
 // Camera: at most this many scene diameters per frame.
 inline constexpr double kMaxCameraStepDiameters = 1.0;
 
@@ -66,6 +68,9 @@ Camera cameraAtFrame(const Camera& start, const Motion& motion, int frame);
 // The light of frame f (light motion; the light itself for a camera motion). `sceneBounds`: the point light's centre
 // of rotation.
 LightSettings lightAtFrame(const LightSettings& start, const Motion& motion, const Bounds& sceneBounds, int frame);
+
+// The animation time of frame f: `start` + f x step (animation motion; `start` for the others).
+double animationTimeAtFrame(double start, const Motion& motion, int frame);
 
 // The unit rotation axis a light motion uses for `light` (the given direction, or the default above).
 glm::dvec3 lightRotationAxis(const LightSettings& light, const Motion& motion, const Bounds& sceneBounds);

@@ -104,7 +104,18 @@ std::vector<glm::dvec3> worldVertices(const Scene& scene) {
 
 }  // namespace
 
-void frameScene(Camera& camera, const Scene& scene, double aspect) { framePoints(camera, worldVertices(scene), aspect); }
+void frameScene(Camera& camera, const Scene& scene, double aspect) {
+    // An animated scene is framed by its bounds' corners, which hold every pose: the view holds still while it plays.
+    if (!scene.animations.empty() && !scene.bounds.empty) {
+        std::vector<glm::dvec3> corners;
+        for (int c = 0; c < 8; ++c)
+            corners.emplace_back((c & 1) ? scene.bounds.max.x : scene.bounds.min.x,
+                                 (c & 2) ? scene.bounds.max.y : scene.bounds.min.y,
+                                 (c & 4) ? scene.bounds.max.z : scene.bounds.min.z);
+        return framePoints(camera, corners, aspect);
+    }
+    framePoints(camera, worldVertices(scene), aspect);
+}
 
 CameraSettings recordedCamera(const Camera& used, bool autoFrame) {
     CameraSettings out;

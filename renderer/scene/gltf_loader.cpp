@@ -4,6 +4,7 @@
 // graph from the scene's roots (cycles, depth and blow-up cut), record each visited node (Scene::nodes) and instance
 // its mesh primitives and place its camera under its world transform. The parts live in gltf_accessors, gltf_geometry, gltf_primitives, gltf_images, gltf_materials,
 // gltf_lights and gltf_extensions.
+#include "scene/gltf_animation.h"
 #include "scene/gltf_camera_precheck.h"
 #include "scene/gltf_cameras.h"
 #include "scene/gltf_common.h"
@@ -14,6 +15,7 @@
 #include "scene/gltf_materials.h"
 #include "scene/gltf_precheck.h"
 #include "scene/gltf_primitives.h"
+#include "scene/scene_animation.h"
 #include "settings/regular_file.h"
 
 #include <glm/geometric.hpp>
@@ -66,8 +68,8 @@ public:
 private:
     const std::vector<int>& meshPrimitives(int meshIndex);
     std::vector<int> rootNodes();
-    void visit(int index, const glm::dmat4& parent, int depth, int parentNode);
-    glm::dmat4 localMatrix(int index);
+    void visit(int index, const glm::dmat4& parent, int depth, int parentNode, bool animatedPath);
+    NodeTransform localTransform(int index);
 
     const tg::Model& model_;
     const EncodedImages& images_;
@@ -76,8 +78,10 @@ private:
     std::vector<std::optional<std::vector<int>>> meshCache_;  // glTF mesh -> Scene meshes (one per kept primitive)
     std::vector<char> onPath_;                                 // nodes on the current root-to-node path (cycles)
     PrimitiveTally tally_;
+    std::vector<char> animated_;  // glTF nodes some played channel drives
+    std::size_t skinnedNodes_ = 0;
     std::size_t visits_ = 0, suppressedWarnings_ = 0, degenerateInstances_ = 0;
-    bool cycleWarned_ = false, depthWarned_ = false, visitsWarned_ = false, skinWarned_ = false;
+    bool cycleWarned_ = false, depthWarned_ = false, visitsWarned_ = false;
     bool instanceCapHit_ = false;
     bool nodesCut_ = false;          // past kMaxRecordedNodes or kMaxNodePathBytes: no more nodes recorded
     std::size_t nodePathBytes_ = 0;
@@ -99,27 +103,31 @@ const std::vector<int>& Loader::meshPrimitives(int meshIndex) {
     return *cached;
 }
 
-glm::dmat4 Loader::localMatrix(int index) {
+NodeTransform Loader::localTransform(int index) {
     const tg::Node& node = model_.nodes[std::size_t(index)];
     const std::string where = "node " + str(index);
-    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, like glm
+    NodeTransform t;
+    if (node.matrix.size() == 16) {  // column-major, like glm
+        t.hasMatrix = true;
+        t.matrix = glm::make_mat4(node.matrix.data());
+        return t;
+    }
     if (!node.matrix.empty()) warn(where + ": matrix with " + str(node.matrix.size()) + " values ignored");
-    glm::dmat4 m(1.0);
-    if (node.translation.size() == 3) m = glm::translate(m, glm::make_vec3(node.translation.data()));
+    if (node.translation.size() == 3) t.translation = glm::make_vec3(node.translation.data());
     if (node.rotation.size() == 4) {
         const auto& r = node.rotation;  // glTF order x, y, z, w
         glm::dquat q(r[3], r[0], r[1], r[2]);
         const double len = glm::length(q);
         if (len > 1e-12 && std::isfinite(len))
-            m *= glm::mat4_cast(q / len);
+            t.rotation = q / len;
         else
             warn(where + ": degenerate rotation quaternion ignored");
     }
-    if (node.scale.size() == 3) m = glm::scale(m, glm::make_vec3(node.scale.data()));
-    return m;
+    if (node.scale.size() == 3) t.scale = glm::make_vec3(node.scale.data());
+    return t;
 }
 
-void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNode) {
+void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNode, bool animatedPath) {
     if (index < 0 || index >= int(model_.nodes.size())) {
         warn("node " + str(index) + " does not exist; ignored");
         return;
@@ -138,7 +146,9 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNod
         return;
     }
     const tg::Node& node = model_.nodes[std::size_t(index)];
-    const glm::dmat4 world = parent * localMatrix(index);
+    const NodeTransform local = localTransform(index);
+    const glm::dmat4 world = parent * localMatrix(local);
+    animatedPath = animatedPath || animated_[std::size_t(index)];
     if (!fitsFloat(world)) {
         warn("node " + str(index) + ": transform is not finite in float; the node and its children are ignored");
         return;
@@ -153,6 +163,8 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNod
         const std::string segment = nodePathSegment(node.name, index);
         recorded.path = parentNode < 0 ? segment : scene_.nodes[std::size_t(parentNode)].path + "/" + segment;
         recorded.parent = parentNode;
+        recorded.gltfIndex = index;
+        recorded.local = local;
         nodePathBytes_ += recorded.path.size();
         if (scene_.nodes.size() >= kMaxRecordedNodes || nodePathBytes_ > kMaxNodePathBytes) {
             nodesCut_ = true;
@@ -166,14 +178,12 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNod
     }
     if (node.mesh >= int(model_.meshes.size())) warn("node " + str(index) + ": mesh " + str(node.mesh) + " does not exist");
     if (node.mesh >= 0 && node.mesh < int(model_.meshes.size())) {
-        if (node.skin >= 0 && !skinWarned_) {
-            skinWarned_ = true;
-            warn("skinning is ignored: skinned meshes are drawn in their bind pose");
-        }
-        // A singular transform (scale 0) has no normal matrix: skip it. Negative determinants (mirrors) are kept.
+        if (node.skin >= 0) ++skinnedNodes_;
+        // A singular transform (scale 0) has no normal matrix: skip it, unless an animation may scale it up (the
+        // GPU scene keeps a zero-scale instance's normals finite). Negative determinants (mirrors) are kept.
         const double det = glm::determinant(glm::dmat3(world));
         for (int mesh : meshPrimitives(node.mesh)) {
-            if (!(std::abs(det) > 1e-30)) {
+            if (!(std::abs(det) > 1e-30) && !animatedPath) {
                 ++degenerateInstances_;
                 continue;
             }
@@ -188,7 +198,7 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNod
     if (std::optional<SceneLight> light = importLight(model_, index, world, sink_)) scene_.lights.push_back(*light);
     if (std::optional<SceneCamera> camera = importCamera(model_, index, world, sink_)) scene_.cameras.push_back(*camera);
     onPath_[std::size_t(index)] = 1;
-    for (int child : node.children) visit(child, world, depth + 1, sceneNode);
+    for (int child : node.children) visit(child, world, depth + 1, sceneNode, animatedPath);
     onPath_[std::size_t(index)] = 0;
 }
 
@@ -222,7 +232,12 @@ std::optional<Scene> Loader::run(std::string& error) {
                 " nodes is some node's child (the node graph is a cycle)";
         return std::nullopt;
     }
-    for (int root : roots) visit(root, glm::dmat4(1.0), 0, -1);
+    scene_.animations = importAnimations(model_, *tally_.budget, sink_);
+    animated_ = animatedNodes(model_, scene_.animations);
+    for (int root : roots) visit(root, glm::dmat4(1.0), 0, -1, false);
+    if (skinnedNodes_ > 0)
+        warn(str(skinnedNodes_) + " skinned mesh node" + (skinnedNodes_ == 1 ? " is" : "s are") +
+             " not played: skins are drawn in their bind pose (their joints' animations move nothing)");
     if (instanceCapHit_) {
         error = "more than " + str(kMaxInstances) + " mesh instances (the limit), reached at node " + str(capNode_) +
                 ": nodes listed as children many times over multiply into more copies than can be drawn";
@@ -250,6 +265,7 @@ std::optional<Scene> Loader::run(std::string& error) {
     }
     if (suppressedWarnings_ > 0) scene_.warnings.push_back("... and " + str(suppressedWarnings_) + " more warnings");
     scene_.computeBounds();
+    extendBoundsOverAnimations(scene_);
     if (scene_.bounds.empty) {
         error = "no finite geometry after applying the node transforms";
         return std::nullopt;

@@ -8,6 +8,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/ext/vector_double3.hpp>
 
+#include "scene/node_animation.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -90,6 +92,8 @@ struct SceneNode {
     std::string path;
     int parent = -1;            // index into Scene::nodes, -1 = a root
     std::vector<int> children;  // indices into Scene::nodes, in the file's order
+    int gltfIndex = -1;         // the file's node (what animation channels target)
+    NodeTransform local;        // its transform in the file (the rest pose animations start from)
 };
 
 // One segment of a node path: the name with '/', '\' and a leading '#' escaped, or "#<index>" for an unnamed node.
@@ -114,6 +118,9 @@ struct Scene {
     std::vector<SceneLight> lights;
     std::vector<SceneCamera> cameras;  // the file's cameras that passed the checks, in the order their nodes were met
     std::vector<SceneNode> nodes;      // the walked hierarchy, parents before children; empty for built-in scenes
+    // The file's node animations that passed the checks (scene_animation.h poses the scene at a time); bounds cover
+    // every pose they reach, so a light fitted to the bounds holds still while they play.
+    std::vector<Animation> animations;
     std::vector<std::string> warnings;  // what was repaired or ignored while loading
 
     // Unit direction from the scene's centre toward an auto-framed camera: of eight three-quarter views from above,

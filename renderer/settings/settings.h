@@ -128,6 +128,14 @@ struct CasterSettings {
     bool operator==(const CasterSettings&) const = default;
 };
 
+// Which of the scene file's animations play and at what time (scene/scene_animation.h poses the scene from these).
+struct AnimationSettings {
+    std::string play = "all";  // "all", "none", an animation's name or its index in the file
+    float time = 0.0f;         // seconds; outside an animation's keys its first or last pose holds
+
+    bool operator==(const AnimationSettings&) const = default;
+};
+
 struct Settings {
     std::vector<LightSettings> lights = std::vector<LightSettings>(1);  // one default light
     float ambient = 0.15f;        // ambient term, unaffected by shadows
@@ -136,6 +144,7 @@ struct Settings {
     FilterSettings filter;
     CameraSettings camera;
     CasterSettings casters;
+    AnimationSettings animation;
     ViewMode view = ViewMode::Lit;
 
     // Every problem as "key: what is wrong (allowed range)"; empty when the settings can be rendered.

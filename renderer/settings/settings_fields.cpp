@@ -220,6 +220,25 @@ SettingsField vec3Field(std::string fieldKey, std::string description, std::stri
     return f;
 }
 
+// A non-empty string of at most `maxLength` bytes (an animation's name or index).
+template <class Access>
+SettingsField stringField(std::string fieldKey, std::string description, std::size_t maxLength, Access access) {
+    SettingsField f = namedField(std::move(fieldKey), std::move(description), SettingsFieldKind::String);
+    f.max = double(maxLength);
+    f.allowed = "a non-empty string of at most " + std::to_string(maxLength) + " bytes";
+    f.get = [access](const Settings& s) { return json(access(s)); };
+    f.set = [key = f.key, allowed = f.allowed, maxLength, access](Settings& s, const json& j) -> std::string {
+        // A bare number (`--set animation.play=2`) is its text: an index.
+        const json text = j.is_number_integer() ? json(j.dump()) : j;
+        if (!text.is_string() || text.get_ref<const std::string&>().empty() ||
+            text.get_ref<const std::string&>().size() > maxLength)
+            return problem(key, "expected a non-empty string, got " + describeJsonValue(j), allowed);
+        access(s) = text.get<std::string>();
+        return {};
+    };
+    return f;
+}
+
 // A list of distinct non-empty strings (node paths). A lone string is a list of one (`--set key=City/SkyBox`);
 // repeats are dropped, the order kept.
 template <class Access>
@@ -543,6 +562,20 @@ std::vector<SettingsField> buildGlobalFields() {
                                        "editor's Outliner lists them): each excludes its whole subtree from the "
                                        "shadow maps and the accuracy reference. A path the scene lacks is a warning",
                                        10000, 4096, [](auto& s) -> auto& { return s.casters.excluded; }),
+                       kView));
+
+    // animation: which clips play and when (scene/scene_animation.h poses the scene from these)
+    f.push_back(tagged(stringField("animation.play",
+                                   "Which of the scene file's animations play: all, none, an animation's name or its "
+                                   "index in the file (the editor's Timeline lists them; a name is matched first). "
+                                   "Skins and morph targets are not played",
+                                   256, [](auto& s) -> auto& { return s.animation.play; }),
+                       kView));
+    f.push_back(tagged(inUnit(floatField("animation.time",
+                                         "The time the scene is posed at: before an animation's first key or after "
+                                         "its last, that key's pose holds (the editor's player loops)",
+                                         0, 1e6, [](auto& s) -> auto& { return s.animation.time; }),
+                              "seconds"),
                        kView));
 
     f.push_back(tagged(enumField<ViewMode>(

@@ -17,7 +17,7 @@
 
 namespace shadowlab {
 
-enum class SettingsFieldKind { Bool, Int, Float, Enum, Vec3, StringList };
+enum class SettingsFieldKind { Bool, Int, Float, Enum, Vec3, String, StringList };
 
 // What a change of a field makes stale (bit flags). Every change redraws the main pass; these say what else.
 enum Invalidates : unsigned {
@@ -59,7 +59,7 @@ struct SettingsField {
     std::string pattern() const;
 };
 
-// The global fields (ambient, useSceneLights, sampler, filter, camera, casters, view), in preset order.
+// The global fields (ambient, useSceneLights, sampler, filter, camera, casters, animation, view), in preset order.
 const std::vector<SettingsField>& globalSettingsFields();
 
 // Light `light`'s fields ("lights.<light>.*"), in preset order; light < kMaxLights. Setting a field of light

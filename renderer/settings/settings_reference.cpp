@@ -17,6 +17,7 @@ const char* typeName(SettingsFieldKind kind) {
     case SettingsFieldKind::Float: return "number";
     case SettingsFieldKind::Enum: return "name";
     case SettingsFieldKind::Vec3: return "vec3";
+    case SettingsFieldKind::String: return "string";
     case SettingsFieldKind::StringList: return "list of strings";
     }
     return "?";

@@ -75,7 +75,7 @@ TEST(FlickerMotion, CameraTurnsItsViewAboutItsPosition) {
     EXPECT_NEAR(std::abs(c.target.x), 10.0, 1e-9);
     EXPECT_NEAR(c.target.y, 2.0, 1e-12);
     EXPECT_EQ(parseMotion("camera-turn"), MotionKind::CameraTurn);
-    EXPECT_EQ(motionNames(), "camera, camera-turn or light");
+    EXPECT_EQ(motionNames(), "camera, camera-turn, light or animation");
 }
 
 TEST(FlickerMotion, LightTurnsByFrameTimesStepAboutTheDefaultAxis) {

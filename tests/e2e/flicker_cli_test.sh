@@ -68,7 +68,7 @@ expect_error frames-one "--frames 1" "$SHADOWLAB" measure "${coarse[@]}" --motio
 expect_error step-nan "--step 'nan'" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step nan
 expect_error step-absurd "--step 720" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step 720
 expect_error step-missing "needs --step" "$SHADOWLAB" measure "${coarse[@]}" --motion camera
-expect_error motion-unknown "--motion 'sideways': unknown motion (camera, camera-turn or light)" "$SHADOWLAB" measure "${coarse[@]}" --motion sideways --step 1
+expect_error motion-unknown "--motion 'sideways': unknown motion (camera, camera-turn, light or animation)" "$SHADOWLAB" measure "${coarse[@]}" --motion sideways --step 1
 expect_error motion-missing "need --motion" "$SHADOWLAB" measure "${coarse[@]}" --frames 3 --step 1
 expect_error direction-bad "--direction" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step 0.1 \
   --direction 0,0

@@ -184,6 +184,7 @@ nlohmann::json otherValue(const SettingsField& f, const Settings& s) {
         case SettingsFieldKind::Enum:
             return current == f.choices.back() ? nlohmann::json(f.choices.front()) : nlohmann::json(f.choices.back());
         case SettingsFieldKind::Vec3: return nlohmann::json::array({0.25, f.key.ends_with("color") ? 0.5 : -2.25, 0.125});
+        case SettingsFieldKind::String: return current == "none" ? "all" : "none";
         case SettingsFieldKind::StringList: return nlohmann::json::array({"a node the scene lacks"});
     }
     return {};

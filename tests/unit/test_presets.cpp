@@ -142,7 +142,7 @@ TEST(Presets, JsonHasTheDocumentedShape) {
         return leaves;
     };
     EXPECT_EQ(leavesOf(j) - 4 + leavesOf(light), settingsFieldsOf(Settings{}).size());
-    EXPECT_EQ(j.size(), 4u + 3u + 4u + 1u);
+    EXPECT_EQ(j.size(), 4u + 3u + 5u + 1u);  // groups: sampler, filter, camera, casters, animation
     EXPECT_EQ(j["camera"]["sceneCamera"], -1);
     EXPECT_EQ(j["casters"]["excluded"], json::array());
 

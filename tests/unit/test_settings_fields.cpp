@@ -36,6 +36,7 @@ json otherValue(const SettingsField& f, const Settings& s) {
         case SettingsFieldKind::Vec3:  // colours are non-negative, cascade splits increasing distances
             if (f.key.ends_with("splits")) return json::array({1.0 / 3.0, 2.25, 7.5});
             return json::array({1.0 / 3.0, f.key.ends_with("color") ? 2.25 : -2.25, 1e-3});
+        case SettingsFieldKind::String: return current == "Spin" ? json("all") : json("Spin");
         case SettingsFieldKind::StringList: return json::array({"Root/City/SkyBox", "B\\/C"});
     }
     return {};
@@ -58,7 +59,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 44u);  // every tunable of Settings: 14 global, 30 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 46u);  // every tunable of Settings: 16 global, 30 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -167,7 +168,10 @@ TEST(SettingsFields, WrongJsonTypesAreRefusedWithKeyValueAndRange) {
     for (const SettingsField& f : fieldsOfDefaults()) {
         SCOPED_TRACE(f.key);
         // One wrong type per kind: strings for numbers/bools/vectors, numbers for names and lists of names.
-        json bad = f.kind == SettingsFieldKind::Enum || f.kind == SettingsFieldKind::StringList ? json(5) : json("abc");
+        // A string key takes a bare integer as its text (an animation's index): true is its wrong type.
+        json bad = f.kind == SettingsFieldKind::Enum || f.kind == SettingsFieldKind::StringList ? json(5)
+                   : f.kind == SettingsFieldKind::String                                     ? json(true)
+                                                                                             : json("abc");
         Settings s;
         std::string e = f.set(s, bad);
         EXPECT_TRUE(contains(e, f.key + ": ")) << e;

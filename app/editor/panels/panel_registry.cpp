@@ -9,6 +9,7 @@ const std::vector<Panel>& panels() {
     // accuracy numbers, the probe, the times), so the Shadow map tab and any right tab show together.
     static const std::vector<Panel> all = {
         {"Scene", Sidebar::Left, "Scene", drawScenePanel},
+        {"Timeline", Sidebar::Left, "Scene", drawTimelinePanel},  // the file's animations: play, scrub
         {"Presets", Sidebar::Left, "Scene", drawPresetsPanel},  // last in its tab: its list takes the height left
         {"Outliner", Sidebar::Left, "Outliner", drawOutlinerPanel},  // the file's nodes: what casts
         {"Lights", Sidebar::Left, "Lights", drawLightsPanel},

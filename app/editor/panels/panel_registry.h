@@ -38,6 +38,7 @@ float sidebarWidth(Sidebar side, ImVec2 display);
 
 // One function per panel, each in its own file.
 void drawScenePanel(PanelContext&);
+void drawTimelinePanel(PanelContext&);
 void drawOutlinerPanel(PanelContext&);
 void drawPresetsPanel(PanelContext&);
 void drawLightsPanel(PanelContext&);

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Animated scenes on the command line (tests/data/scenes/animated_boxes.gltf): render --time at two times casts
+# different shadows while the same time twice, or --animation none, draws the same; --animation and --time reach
+# the keys; an unknown animation is refused naming the key and listing the file's; a hostile animation is skipped
+# with a warning naming the file, the animation and the channel; measure --motion animation plays it.
+set -u
+mkdir -p "$OUT_DIR" && cd "$OUT_DIR" || exit 1
+source "$SOURCE_DIR/tests/e2e/e2e_lib.sh"
+boxes="$SOURCE_DIR/tests/data/scenes/animated_boxes.gltf"
+small=(--scene "$boxes" --width 160 --height 90 --set shadow.resolution=256)
+
+# Bytes that differ between two PNGs (the writer is deterministic: the same picture is the same file).
+differing() { cmp -l "$1" "$2" 2>/dev/null | wc -l; }
+
+for t in 0 1.5; do
+  expect_ok "render-$t" "$SHADOWLAB" render "${small[@]}" --time "$t" --animation Move --out "t$t.png" \
+    --shadow-map-png "map$t.png"
+done
+expect_ok render-0-again "$SHADOWLAB" render "${small[@]}" --time 0 --animation Move --out t0-again.png \
+  --shadow-map-png map0-again.png
+n=$(differing map0.png map1.5.png)
+[ "$n" -gt 0 ] && pass "the shadow maps at 0 s and 1.5 s differ ($n bytes)" || fail "the shadow maps at 0 s and 1.5 s are the same"
+n=$(differing t0.png t1.5.png)
+[ "$n" -gt 0 ] && pass "the views at 0 s and 1.5 s differ ($n bytes)" || fail "the views at 0 s and 1.5 s are the same"
+n=$(differing map0.png map0-again.png)
+[ "$n" -eq 0 ] && pass "0 s twice: the same map" || fail "0 s twice: $n values differ"
+grep -q 'playing Move at 1.5 s' render-1.5.err && pass "the note names the animation and the time" \
+  || fail "no note: $(cat render-1.5.err)"
+for t in 0 1.5; do
+  expect_ok "none-$t" "$SHADOWLAB" render "${small[@]}" --time "$t" --animation none --shadow-map-png "none$t.png"
+done
+n=$(differing none0.png none1.5.png)
+[ "$n" -eq 0 ] && pass "--animation none: the file's pose at any time" || fail "--animation none: $n values differ"
+# The same time through --set.
+expect_ok render-set "$SHADOWLAB" render "${small[@]}" --set animation.time=1.5 --set animation.play=Move \
+  --shadow-map-png map-set.png
+n=$(differing map1.5.png map-set.png)
+[ "$n" -eq 0 ] && pass "--time is animation.time" || fail "--time and --set animation.time differ ($n values)"
+
+expect_error unknown-animation 'animation.play "Walk": the scene animated_boxes has no animation of that name or index (it has 0 "Move", 1 "Spin", 2 "Cubic"; or all, none)' \
+  "$SHADOWLAB" render "${small[@]}" --animation Walk
+expect_error negative-time "--time" "$SHADOWLAB" render "${small[@]}" --time -1
+expect_ok hostile "$SHADOWLAB" render --scene "$SOURCE_DIR/tests/fuzz/regressions/gltf/anim-missing-node.gltf" \
+  --width 64 --height 36 --set shadow.resolution=128
+grep -q 'warning: anim-missing-node: animation 0 "Move", channel 0 (node 99 translation): it targets node 99, which does not exist' hostile.err \
+  && pass "the hostile animation is named and skipped" || fail "hostile: $(cat hostile.err)"
+
+expect_ok motion "$SHADOWLAB" measure "${small[@]}" --animation Move --motion animation --frames 3 --step 0.5 \
+  --json motion.json
+grep -q "animation moved 0.5 seconds per frame, 3 frames, 2 pairs" motion.out && pass "measure --motion animation" \
+  || fail "motion: $(head -5 motion.out)"
+python3 -c "import json,sys; j=json.load(open('motion.json')); sys.exit(0 if j['vChangedPercent']['max']>0 else 1)" \
+  && pass "the moving box changes the true shadow" || fail "no V change along the animation: $(head -c 600 motion.json)"
+expect_error motion-static "has no animation to play" "$SHADOWLAB" measure --scene builtin:textbook --width 64 \
+  --height 36 --motion animation --step 0.1
+finish
