@@ -46,8 +46,9 @@ bool viewsFollowCamera(const LightSettings& light, const Bounds& bounds) {
 
 // A light motion's step in each view's texels: the largest shift between frames 0 and 1 of the points the view holds
 // at frame 0 (inside its map), among the scene's bounding-box centre and corners (a spot's cone sees few corners; a
-// point light: in the cube face the point lies in) and, for a cascade, the middle of its slice on the camera's axis
-// (the box's corners lie beyond the near cascades). 0 for a view that holds none of them.
+// point light: in the cube face the point lies in) and, for a cascade, its slice's near, middle and far points on the
+// camera's axis (the box's corners lie beyond the near cascades). A point moves by the turn times its distance from
+// the rotation's pivot along the light, so one point alone can read near 0. 0 for a view that holds none of them.
 std::vector<double> lightStepTexels(const LightSettings& start, const Motion& motion, const Bounds& bounds,
                                     const ViewCamera& camera) {
     if (bounds.empty) return {};
@@ -62,7 +63,9 @@ std::vector<double> lightStepTexels(const LightSettings& start, const Motion& mo
                                              c & 4 ? bounds.max.z : bounds.min.z) - centre);
     for (const ShadowView& v : before)
         if (v.kind == ShadowViewKind::Cascade)
-            points.push_back(v.slice.camera.eye + v.slice.camera.forward * (0.5 * (v.slice.nearDepth + v.slice.farDepth)));
+            for (double share : {0.0, 0.5, 1.0})
+                points.push_back(v.slice.camera.eye + v.slice.camera.forward * (v.slice.nearDepth + share *
+                                                                                 (v.slice.farDepth - v.slice.nearDepth)));
     std::vector<double> largest(before.size(), 0.0);
     for (const glm::dvec3& p : points) {
         const int held = selectView(before, p).view;

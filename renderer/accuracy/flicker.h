@@ -82,8 +82,9 @@ struct FlickerReport {
     double stepTexels = 0.0;
     double texelWorldSize = 0.0;
     // A cascaded light: the step in each cascade's texels, nearest first (camera: the step over the cascade's texel;
-    // camera turn: the looked-at point's sweep over it; light: the largest shift of the points it holds, the middle of
-    // its slice among them). stepTexels is cascade 0's for the camera, the largest for the light. Empty otherwise.
+    // camera turn: the looked-at point's sweep over it; light: the largest shift of the points it holds, its slice's
+    // near, middle and far points on the camera's axis among them). stepTexels is cascade 0's for the camera, the
+    // largest for the light. Empty otherwise.
     std::vector<double> cascadeStepTexels;
 
     std::vector<FlickerFrame> frames;  // motion.frames entries

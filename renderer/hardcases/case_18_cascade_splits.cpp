@@ -1,8 +1,8 @@
 // HARD_CASES 18: cascade splits at extreme near / far. The practical splits C_i = λ n (f/n)^(i/N) + (1-λ)(n + (f-n)
 // i/N), N = 4, against the document's figures; strictly increasing and finite for every λ in [0, 1] (a fine sweep)
 // at n = 0.1, 0.001, a near plane whose f/n overflows a double (the logarithmic term starts at f x float's epsilon)
-// and a range two ulps wide (whose slices round to zero width and are merged); n = f and f < n refused with a message naming the key; every cascade's matrix finite for
-// both fits. The splits and views are the renderer's own (views/cascade_views.h, buildLightViews): no GL.
+// and a range two ulps wide (whose slices round to zero width and are merged); n = f and f < n refused with a
+// message naming the key; every cascade's matrix finite (double and float) for both fits. The splits and views are the renderer's own (views/cascade_views.h, buildLightViews): no GL.
 #include "hardcases/cases.h"
 
 #include "views/cascade_views.h"
@@ -134,7 +134,8 @@ void runCascadeSplits(CaseContext& context, CaseResult& result) {
             }
             fewest = std::min(fewest, int(far.size()));
             if (!ok && bad++ == 0)
-                firstBad = "lambda " + figure(lambda) + ": " + (far.empty() ? why : listOf(far) + ", " + figure(far.back()));
+                firstBad = "lambda " + figure(lambda) + ": " +
+                           (far.empty() ? why : listOf(far) + ", " + figure(far.back()));
             for (CascadeFit fit : {CascadeFit::Stable, CascadeFit::Tight}) {
                 std::string error;
                 const auto views =

@@ -79,12 +79,14 @@ void runCascadeSeams(CaseContext& context, CaseResult& result) {
         const double texel = (*views)[c].space.texelWorldSize;
         ours << (c ? ", " : "") << figure(texel, "", 4);
         theirs << (c ? ", " : "") << documented[c];
-        match = match && texel >= documented[c] - printed[c] && texel <= (documented[c] + printed[c]) * (1.0 + 1.0 / 64.0);
+        match = match && texel >= documented[c] - printed[c] &&
+                texel <= (documented[c] + printed[c]) * (1.0 + 1.0 / 64.0);
     }
     result.check("stable fit, texel per cascade (world units)", ours.str(),
                  theirs.str() + " (+ at most 1/64: the size is rounded up so it never jitters)", match);
     if (views->size() == 4)
-        result.info("texel jump at the last split", figure((*views)[3].space.texelWorldSize / (*views)[2].space.texelWorldSize, "x"),
+        result.info("texel jump at the last split",
+                    figure((*views)[3].space.texelWorldSize / (*views)[2].space.texelWorldSize, "x"),
                     "the document: 6x (a texel-relative bias changes its world size by as much)");
 
     // The seam on the city from its street: the same keys, the camera's own planes and the view's aspect.
@@ -156,11 +158,8 @@ void runCascadeSeams(CaseContext& context, CaseResult& result) {
         const std::string what = split + "blend band " + figure(kBlendBand) + " vs " + coarser +
                                  " alone at the same pixels (its same map), mean |S - V|";
         const std::string numbers = describe(bandBlend[i]) + " vs " + describe(bandCoarser[i]);
-        if (bandBlend[i].measured < 40)
-            result.notRun(what, "band <= the coarser cascade's", "fewer than 40 pixels at this size: " + numbers);
-        else
-            result.check(what, numbers, "band <= the coarser cascade's",
-                         bandBlend[i].meanError() <= bandCoarser[i].meanError());
+        result.check(what, numbers, "band <= the coarser cascade's, band not empty",
+                     bandBlend[i].measured > 0 && bandBlend[i].meanError() <= bandCoarser[i].meanError());
     }
     result.info("the 3-pixel seam band (measure's figure) vs every interior, hard / blend",
                 percent(hard.cascades.seam.bandWrongPercent) + " vs " + percent(hard.cascades.seam.interiorWrongPercent) +
