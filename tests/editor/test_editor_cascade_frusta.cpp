@@ -112,10 +112,11 @@ TEST(EditorCascadeFrusta, TheLightFrustumDrawsEachCascadeInItsTintFromOutside) {
 }
 
 TEST(EditorCascadeFrusta, StatsListsEachCascadeWithItsMemoryReasonAndTime) {
-    EditorHarness h(testOptions(testFolder("cascade-frusta-stats")));
+    EditorHarness h(testOptions(testFolder("cascade-frusta-stats")), 1280, 720);
     h.settle();
     turnOnCascades(h);
     ASSERT_TRUE(h.reveal("stats.views"));
+    h.saveWindow("cascade_stats");  // the rows whole in the narrowest sidebar (look at it)
     for (int c = 0; c < 4; ++c)
         EXPECT_TRUE(h.hasControl("stats.view=light 0 cascade:" + std::to_string(c))) << "no row for cascade " << c;
     EXPECT_FALSE(h.hasControl("stats.view=light 0 cascade:4"));

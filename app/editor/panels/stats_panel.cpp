@@ -42,48 +42,61 @@ void plot(const char* label, const std::deque<float>& values, ImVec2 size) {
     ImGui::PlotLines("##plot", v.data(), int(v.size()), 0, overlay, 0.0f, top, size);
 }
 
-// One row per shadow view of the frame (each cube face, each cascade in its colour): whether it rendered, why (the
-// planner's reason), its map's memory, its time.
-void viewsTable(EditorState& state, const char* clock) {
+// One row per shadow view of the frame (each cube face, each cascade marked with its colour): whether it rendered, its
+// map's memory and its time, with the planner's reason on the line below, wrapped at the panel's edge. Columns are as
+// wide as their widest cell and the reason has the panel's whole width, so nothing is cut in a narrow sidebar (a table
+// gave the reason a sliver beside cascade names).
+void viewsTable(EditorState& state) {
     const std::vector<ViewRow> rows = viewRows(state.stats, state.viewMilliseconds);
     if (rows.empty()) {
         ImGui::TextDisabled("shadow views: none (no lights)");
         return;
     }
-    // Every row shown (no scrolling box that hides rows) and the reasons wrapped in their column: nothing is cut.
-    if (ImGui::BeginTable("views", 5,
-                          ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
-        ImGui::TableSetupColumn("view");
-        ImGui::TableSetupColumn("pass");
-        ImGui::TableSetupColumn("memory");
-        ImGui::TableSetupColumn(clock[0] == 'C' ? "ms (CPU)" : "ms (GPU)");
-        ImGui::TableSetupColumn("why", ImGuiTableColumnFlags_WidthStretch);
-        ImGui::TableHeadersRow();
-        for (const ViewRow& row : rows) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            if (row.cascade >= 0) cascadeSwatch(row.cascade);
-            ImGui::TextUnformatted(row.name.c_str());
-            state.controls.recordLastItem("stats.view=" + row.name);
-            ImGui::TableNextColumn();
-            if (row.ran)
-                ImGui::TextUnformatted("ran");
-            else
-                ImGui::TextDisabled("skipped");
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(row.memory.c_str());
-            ImGui::TableNextColumn();
-            if (row.timeFromEarlier || row.milliseconds == "-")
-                ImGui::TextDisabled("%s", row.milliseconds.c_str());
-            else
-                ImGui::TextUnformatted(row.milliseconds.c_str());
-            if (row.timeFromEarlier && ImGui::IsItemHovered())
-                ImGui::SetTooltip("its newest run's time (this frame kept its map)");
-            ImGui::TableNextColumn();
-            noteText(row.why);
-        }
-        ImGui::EndTable();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const char* msHeader = "ms";  // CPU or GPU: the timing line above says which (the column stays narrow)
+    const float swatch = ImGui::GetTextLineHeight() * 0.8f + style.ItemInnerSpacing.x;  // cascadeSwatch's width
+    float nameW = ImGui::CalcTextSize("view").x, passW = ImGui::CalcTextSize("skipped").x;
+    float memoryW = ImGui::CalcTextSize("memory").x, msW = ImGui::CalcTextSize(msHeader).x;
+    for (const ViewRow& row : rows) {
+        nameW = std::max(nameW, (row.cascade >= 0 ? swatch : 0.0f) + ImGui::CalcTextSize(row.name.c_str()).x);
+        memoryW = std::max(memoryW, ImGui::CalcTextSize(row.memory.c_str()).x);
+        msW = std::max(msW, ImGui::CalcTextSize(row.milliseconds.c_str()).x);
     }
+    const float gap = 2.0f * style.ItemSpacing.x;
+    const float x0 = ImGui::GetCursorPosX();
+    const float xPass = x0 + nameW + gap, xMemory = xPass + passW + gap, xMs = xMemory + memoryW + gap;
+    ImGui::BeginGroup();
+    ImGui::TextDisabled("view");
+    ImGui::SameLine(xPass);
+    ImGui::TextDisabled("pass");
+    ImGui::SameLine(xMemory);
+    ImGui::TextDisabled("memory");
+    ImGui::SameLine(xMs);
+    ImGui::TextDisabled("%s", msHeader);
+    ImGui::Separator();
+    for (const ViewRow& row : rows) {
+        if (row.cascade >= 0) cascadeSwatch(row.cascade);
+        ImGui::TextUnformatted(row.name.c_str());
+        state.controls.recordLastItem("stats.view=" + row.name);
+        ImGui::SameLine(xPass);
+        if (row.ran)
+            ImGui::TextUnformatted("ran");
+        else
+            ImGui::TextDisabled("skipped");
+        ImGui::SameLine(xMemory);
+        ImGui::TextUnformatted(row.memory.c_str());
+        ImGui::SameLine(xMs);
+        if (row.timeFromEarlier || row.milliseconds == "-")
+            ImGui::TextDisabled("%s", row.milliseconds.c_str());
+        else
+            ImGui::TextUnformatted(row.milliseconds.c_str());
+        if (row.timeFromEarlier && ImGui::IsItemHovered())
+            ImGui::SetTooltip("its newest run's time (this frame kept its map)");
+        ImGui::Indent();
+        noteText(row.why);
+        ImGui::Unindent();
+    }
+    ImGui::EndGroup();
     state.controls.recordLastItem("stats.views");
 }
 
@@ -113,7 +126,7 @@ void drawStatsPanel(PanelContext& ctx) {
     noteText("frames rendered " + std::to_string(state.renderedFrames) + ", idle frames (no pass) " +
              std::to_string(state.idleFrames));
     state.controls.recordLastItem("stats.frames");
-    viewsTable(state, clock);
+    viewsTable(state);
 
     const float w = ImGui::GetContentRegionAvail().x;
     const float h = std::clamp((ImGui::GetContentRegionAvail().y - ImGui::GetStyle().ItemSpacing.y) * 0.5f, 30.0f, 160.0f);
