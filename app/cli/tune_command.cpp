@@ -111,7 +111,7 @@ int runTune(const TuneOptions& options) {
                 allReached = false;
                 const CauseInfo& blocking = causeInfo(result.blockingCause);
                 std::cout << "\n" << label << ": NO setting reached acne <= " << options.maxAcnePercent << " %";
-                if (result.blockingCascade >= 0)  // the light's overall acne passes, one cascade's does not
+                if (result.blockingCascade >= 0)  // a cascade's acne stays above the limit
                     std::cout << " in every cascade: cascade:" << result.blockingCascade << " stops it (texel "
                               << result.blockingCascadeTexel << " world units, acne " << result.blockingCascadeAcne
                               << " % at the closest candidate; " << blocking.name << ", " << blocking.remedy

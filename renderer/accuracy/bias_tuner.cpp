@@ -324,9 +324,10 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     if (result.reachedLimit) {
         result.best = result.closest;
     } else {
-        // A cascaded light: the cascade that stops it, where the overall acne alone would pass.
+        // A cascaded light: the cascade that stops it (its worst judged cascade, when that one is above the limit).
         const TuneStep& closest = result.path[*bestIndex];
-        if (closest.worstCascade >= 0 && closest.acnePercent <= maxAcnePercent) {
+        if (closest.worstCascade >= 0 &&
+            closest.cascadeAcnePercent[std::size_t(closest.worstCascade)] > maxAcnePercent) {
             const CascadeNumbers& c = result.report.cascades.cascades[std::size_t(closest.worstCascade)];
             result.blockingCascade = c.cascade;
             result.blockingCascadeTexel = c.texelWorldSize;

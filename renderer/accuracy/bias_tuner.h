@@ -59,7 +59,7 @@ struct TuneResult {
     Settings closest;                // the candidate with the least acne (== best when reached)
     MismatchCause blockingCause = MismatchCause::None;  // not reached: the cause of most of closest's acne
     // Not reached on a cascaded light: the cascade whose acne stays above the limit at the closest candidate (the
-    // worst), its texel and its acne; -1 when the light's overall acne stops it or it has no cascades.
+    // worst judged one), its texel and its acne; -1 when no judged cascade is above it or the light has no cascades.
     int blockingCascade = -1;
     double blockingCascadeTexel = 0.0;
     double blockingCascadeAcne = 0.0;
