@@ -13,6 +13,7 @@
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "image/image_io.h"
+#include "scene/scene_animation.h"
 #include "settings/atomic_file.h"
 
 #include <algorithm>
@@ -255,12 +256,14 @@ int runCheck(const CheckOptions& options) {
                 progress.above([&] { loaded = loadSceneForCommand(cases[i].scene, {}); });
                 loadedSpec = cases[i].scene;
             }
-            // Each case's camera.sceneCamera against the scene (consecutive cases share one load).
-            const std::string cameraError = loaded.scene ? sceneCameraError(settings[i].camera, *loaded.scene) : "";
+            // Each case's camera.sceneCamera against the scene (consecutive cases share one load), and the scene at
+            // the case's animation time (posing sets every transform: one case's pose does not carry into the next).
+            std::string caseError = loaded.scene ? sceneCameraError(settings[i].camera, *loaded.scene) : "";
+            if (loaded.scene && caseError.empty()) caseError = poseScene(*loaded.scene, settings[i].animation);
             if (!loaded.scene)
                 o.error = loaded.error;
-            else if (!cameraError.empty())
-                o.error = cameraError;
+            else if (!caseError.empty())
+                o.error = caseError;
             else
                 measureCase(o, settings[i], *loaded.scene, meter, accuracyProgress, outDir);
             o.seconds = secondsSince(caseStart);

@@ -40,7 +40,7 @@ bool fitsFloat(const glm::dmat4& m) {
     return true;
 }
 
-// Instances indexed by the node that placed them never change; posing walks every node once.
+// One channel's value replaces that part of a node's local transform (the others keep the file's).
 void applyChannel(NodeTransform& t, const AnimationChannel& c, const glm::dvec4& v) {
     switch (c.path) {
         case AnimationPath::Translation: t.translation = glm::dvec3(v); break;

@@ -39,6 +39,11 @@ n=$(differing map1.5.png map-set.png)
 
 expect_error unknown-animation 'animation.play "Walk": the scene animated_boxes has no animation of that name or index (it has 0 "Move", 1 "Spin", 2 "Cubic"; or all, none)' \
   "$SHADOWLAB" render "${small[@]}" --animation Walk
+# check poses each case's scene too: an animation the file lacks cannot be judged (exit 2), naming the key.
+"$SHADOWLAB" check "${small[@]}" --set animation.play=Walk --max-wrong 100 >check-walk.out 2>check-walk.err
+rc=$?
+[ $rc -eq 2 ] && grep -q 'animation.play "Walk"' check-walk.out check-walk.err && pass "check: the case's animation is posed" \
+  || fail "check --set animation.play=Walk: exit $rc, $(cat check-walk.out check-walk.err | head -5)"
 expect_error negative-time "--time" "$SHADOWLAB" render "${small[@]}" --time -1
 expect_ok hostile "$SHADOWLAB" render --scene "$SOURCE_DIR/tests/fuzz/regressions/gltf/anim-missing-node.gltf" \
   --width 64 --height 36 --set shadow.resolution=128

@@ -63,8 +63,8 @@ void drawTimelinePanel(PanelContext& ctx) {
     ImGui::SliderFloat("speed", &t.speed, 0.1f, 4.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
     state.controls.recordLastItem("timeline.speed");
 
-    // Scrubbing pauses the player: the slider holds the time the user points at.
-    ImGui::SetNextItemWidth(-80.0f);
+    // Scrubbing pauses the player: the slider holds the time the user points at (the default width: the bound
+    // controls record their frame at it).
     if (sliderFloatField(state, "animation.time", "time", float(span.start), float(std::max(span.end, span.start + 1e-3)),
                          "%.3f s"))
         t.playing = false;
