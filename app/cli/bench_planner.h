@@ -1,6 +1,6 @@
 #pragma once
 // `shadowlab bench --planner`: what the shadow planner and a cascade's shadow pass cost.
-//  1. The planner alone (CPU, steady clock): the mean time of planShadowViews per frame with 8 lights (two cascaded
+//  1. The planner alone (this thread's CPU time): the mean time of planShadowViews per frame with 8 lights (two cascaded
 //     suns, three spots, three point lights around the scene, each with light 0's shadow-map settings), the camera
 //     moving every frame (the cascades re-planned) and still (nothing to render).
 //  2. Each cascade's shadow pass (every view forced each frame; the renderer's timing source) against a bare depth

@@ -93,8 +93,8 @@ bool anyCasterIn(const std::vector<CasterSphere>& casters, const LightSpace& spa
 
 // Decides one view: its action, its reason and what its map holds once the frame has carried them out.
 // `layersNow`: its array's layer count this frame.
-void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow, bool seen,
-            GlobalKeyChanges& globals) {
+void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow,
+            const std::shared_ptr<const Settings>& requested, GlobalKeyChanges& globals) {
     const PlannedView* before = in.previous ? in.previous->find(p.view.id()) : nullptr;
     // Its map still holds what it held: the same layer of an array that was not reallocated (the Renderer
     // reallocates an array when its layer count changes).
@@ -111,7 +111,8 @@ void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow
         p.action = ViewAction::Keep;
         p.reason = "unchanged: light, casters and shadow settings are the same";
         p.holds = before->holds;
-    } else if (!seen) {
+    } else if (in.cameraViewProjection &&
+               !volumesOverlap(p.view.space.volumeViewProjection(), *in.cameraViewProjection)) {
         // A map no visible pixel reads is rendered once the camera sees its volume.
         p.action = ViewAction::SkipUnseen;
         p.reason = "skipped: its volume misses the camera's view";
@@ -120,10 +121,12 @@ void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow
         p.action = ViewAction::Clear;
         p.reason = "skipped: no caster in its volume (map cleared)";
         p.holds = std::move(now);
+        p.holds->settings = requested;
     } else {
         p.action = ViewAction::Render;
         p.reason = std::move(reason);
         p.holds = std::move(now);
+        p.holds->settings = requested;
     }
 }
 
@@ -206,15 +209,15 @@ ShadowPlan planShadowViews(const PlanInputs& in) {
         }
     }
 
-    // Each view against what its map holds. The frame's settings are shared by the maps it renders.
-    const auto requested = std::make_shared<const Settings>(in.settings);
+    // Each view against what its map holds. The frame's settings are copied once, shared by the maps it renders,
+    // and only when one renders (a still frame copies nothing).
+    std::shared_ptr<const Settings> requested;
     GlobalKeyChanges globals(in.settings);
     for (PlannedView& p : plan.views) {
-        MapContents now{requested, plan.settings.lights[p.view.light], in.sceneFingerprint,
+        MapContents now{nullptr, plan.settings.lights[p.view.light], in.sceneFingerprint,
                         p.view.space.viewProjection()};
-        const bool seen = !in.cameraViewProjection ||
-                          volumesOverlap(p.view.space.volumeViewProjection(), *in.cameraViewProjection);
-        decide(p, in, std::move(now), plan.layers.at(p.group), seen, globals);
+        decide(p, in, std::move(now), plan.layers.at(p.group), requested, globals);
+        if (p.holds && !p.holds->settings) p.holds->settings = requested = std::make_shared<const Settings>(in.settings);
     }
     return plan;
 }

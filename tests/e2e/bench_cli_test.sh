@@ -110,7 +110,7 @@ PY
 expect_ok bench-planner "$SHADOWLAB" bench --planner --scene builtin:courtyard --preset courtyard --width 64 \
   --height 36 --frames 2 --set lights.0.projection.fit=cascades --set lights.0.projection.cascadeCount=3 \
   --set lights.0.shadow.resolution=64 --json planner.json
-grep -q "^planner CPU time per frame, scene courtyard, 8 lights (2 directional cascaded, 3 spot, 3 point; 28 views)" \
+grep -q "^planner CPU time per frame, scene courtyard, 8 lights (2 directional cascaded, 3 spot, 3 point; 28 views), this thread's CPU time" \
   bench-planner.out && grep -Eq "^  camera moving: [0-9.]+ ms \([1-7] of 7 cascades re-rendered per frame\)" bench-planner.out \
   && grep -Eq "^  camera still:  [0-9.]+ ms \(0 views re-rendered\)" bench-planner.out \
   && pass "bench --planner: the planner's labelled lines" || fail "bench --planner: $(cat bench-planner.out)"
