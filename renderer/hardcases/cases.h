@@ -21,5 +21,6 @@ void runDegenerateLight(CaseContext& context, CaseResult& result);      // 14
 void runDegenerateResolution(CaseContext& context, CaseResult& result); // 15
 void runDegenerateGeometry(CaseContext& context, CaseResult& result);   // 16
 void runScaleExtremes(CaseContext& context, CaseResult& result);        // 17
+void runStaleDepthBounds(CaseContext& context, CaseResult& result);     // 20
 
 }  // namespace shadowlab::hardcases

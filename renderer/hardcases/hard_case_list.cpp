@@ -21,6 +21,7 @@ const std::vector<HardCase>& hardCaseList() {
         {15, "degenerate and non-power-of-two resolutions", runDegenerateResolution},
         {16, "degenerate geometry", runDegenerateGeometry},
         {17, "scale extremes and texel-relative biases", runScaleExtremes},
+        {20, "stale depth bounds and fast camera motion", runStaleDepthBounds},
     };
     return list;
 }

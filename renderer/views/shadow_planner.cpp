@@ -30,7 +30,9 @@ std::string changeReason(const std::optional<ViewInputs>& last, const ViewInputs
     }
     if (!keys.empty()) reasons.push_back(keys + " changed");
     if (keys.empty() && now.viewProjection != last->viewProjection)
-        reasons.push_back(now.followsCamera ? "the camera moved (the cascade follows it)" : "light space changed");
+        reasons.push_back(now.depthBounds != last->depthBounds ? "the depth bounds moved"
+                          : now.followsCamera                  ? "the camera moved (the cascade follows it)"
+                                                               : "light space changed");
     if (now.empty != last->empty)
         reasons.push_back(now.empty ? "no caster in its volume any more" : "casters entered its volume");
     return joinReasons(reasons);

@@ -76,6 +76,7 @@ struct ViewInputs {
     std::uint64_t mapGeneration = 0;   // the array was reallocated: its contents are gone
     bool empty = false;                // no caster in its volume: the map is cleared, not drawn
     bool followsCamera = false;        // a cascade: its light space moves with the camera
+    std::optional<ViewDepths> depthBounds;  // the depths its cascades span (projection.depthBounds); nullopt: off
     bool operator==(const ViewInputs&) const = default;
 };
 
