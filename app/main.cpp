@@ -205,7 +205,7 @@ int main(int argc, char** argv) {
     cli::HardCasesOptions hard;
     CLI::App* hardCmd = app.add_subcommand("hardcases", "Run the numerically hard cases of ../shared/HARD_CASES.md: "
                                                         "each figure beside its threshold, pictures, exit 1 on a failure");
-    hardCmd->add_option("--case", hard.cases, "run only case N (1..17; repeatable)");
+    hardCmd->add_option("--case", hard.cases, "run only case N (1..20; repeatable)");
     hardCmd->add_flag("--quick", hard.quick, "small maps and views, fewer sweep steps (ctest)");
     hardCmd->add_option("--json", hard.json, "write every case's rows as JSON");
     hardCmd->add_option("--out-dir", hard.outDir, "write the pictures (overlays, frame pairs) into this folder");

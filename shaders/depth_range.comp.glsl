@@ -1,5 +1,6 @@
 #version 450 core
-// Min and max of the depths casters wrote (below 1) over the whole map, as float bits: non-negative floats order
+// Min and max of the depths written (below 1) over a whole depth texture (a shadow map: what casters wrote; the
+// camera's depth: what it sees), as float bits: non-negative floats order
 // like their bit patterns, so integer atomics find them. Each invocation reads a block of BLOCK x BLOCK texels
 // (BLOCK is defined by the renderer).
 layout(local_size_x = 16, local_size_y = 16) in;

@@ -35,6 +35,14 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
     out << "main pass: " << milliseconds(stats.mainPass) << "; variants:";
     for (const std::string& v : stats.mainVariants) out << " [" << v << "]";
     out << "\n";
+    if (stats.depthBoundsPass.ran) {
+        out << "depth bounds pass: " << milliseconds(stats.depthBoundsPass) << " — " << stats.depthBoundsPass.reason;
+        if (stats.seenDepths && stats.seenDepths->farthest >= stats.seenDepths->nearest)
+            out << "; seen depths " << stats.seenDepths->nearest << ".." << stats.seenDepths->farthest;
+        else
+            out << "; " << (stats.seenDepths ? "nothing seen" : "no depths yet");
+        out << "\n";
+    }
     // Every view with its own light, kind and map: no line describes "the" light when there are several.
     out << std::setprecision(4) << "lights: " << stats.lightSource << " (" << stats.lightCount << ")\n";
     const ShadowViewStats* first = nullptr;

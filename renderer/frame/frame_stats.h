@@ -48,6 +48,10 @@ struct FrameStats {
 
     PassStats shadowPass;  // all shadow views together: ran if any ran, the time of those that ran
     PassStats mainPass;
+    // projection.depthBounds: the depth prepass and its reduction (sameFrame) or the main depth's reduction for the
+    // next frame (previousFrame); not run when no cascaded light asks for it.
+    PassStats depthBoundsPass;
+    std::optional<ViewDepths> seenDepths;  // the seen depths the cascades were fitted to (raw, before quantizing)
     std::vector<ShadowViewStats> views;  // every view of every light (see ShadowViewStats)
     std::size_t lightCount = 0;          // the frame's lights (the effective ones)
     std::string timingSource;           // "GPU (timer queries)" or "CPU (software rasterizer, ...)"

@@ -13,11 +13,12 @@ std::string RenderTarget::resize(int width, int height, GLenum colorFormat) {
     glTextureStorage2D(color.id(), 1, colorFormat, width, height);
     glTextureParameteri(color.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(color.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl::Renderbuffer depth = gl::createRenderbuffer();
-    glNamedRenderbufferStorage(depth.id(), GL_DEPTH_COMPONENT32F, width, height);
+    // A texture, not a renderbuffer: the depth-bounds pass reduces it in a compute shader.
+    gl::Texture depth = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(depth.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
     gl::Framebuffer framebuffer = gl::createFramebuffer();
     glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, color.id(), 0);
-    glNamedFramebufferRenderbuffer(framebuffer.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+    glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
     if (glCheckNamedFramebufferStatus(framebuffer.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         return "view framebuffer incomplete";
     color_ = std::move(color);

@@ -19,6 +19,7 @@ public:
     int height() const { return height_; }
     GLuint framebuffer() const { return framebuffer_.id(); }
     GLuint colorTexture() const { return color_.id(); }
+    GLuint depthTexture() const { return depth_.id(); }  // GL_DEPTH_COMPONENT32F, window depth 0..1
 
     // RGBA8 pixels, row 0 = bottom (GL order).
     std::vector<std::uint8_t> readColor() const;
@@ -27,7 +28,7 @@ public:
 
 private:
     gl::Texture color_;
-    gl::Renderbuffer depth_;
+    gl::Texture depth_;
     gl::Framebuffer framebuffer_;
     int width_ = 0;
     int height_ = 0;

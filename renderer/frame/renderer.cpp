@@ -5,6 +5,7 @@
 #include "light/volume_overlap.h"
 #include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
+#include "views/depth_bounds.h"
 
 #include <glm/ext/matrix_transform.hpp>
 
@@ -135,11 +136,42 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     const glm::dmat4 view = camera.view(stats.renderOrigin);
     stats.cameraViewProjection = camera.projection(double(target.width()) / target.height()) * view;
 
+    // The depth-bounds fit (projection.depthBounds): the depths the camera sees, this frame's (a depth prepass, read
+    // back before planning) or the previous frame's (reduced after its main pass).
+    const double aspect = double(target.width()) / target.height();
+    const ViewCamera viewCamera = viewCameraOf(camera, aspect, stats.renderOrigin);
+    const DepthBounds boundsWanted = depthBoundsWanted(settings);
+    std::optional<ViewDepths> lastFrameDepths;
+    if (depthBoundsPass_) lastFrameDepths = depthBoundsPass_->collect();  // a pending one is always read, used or not
+    if (boundsWanted != DepthBounds::Off && !depthBoundsPass_) depthBoundsPass_ = std::make_unique<DepthBoundsPass>();
+    std::optional<ViewDepths> seenDepths;
+    if (boundsWanted == DepthBounds::SameFrame) {
+        timer_.begin(TimedPass::DepthBounds);
+        seenDepths = depthBoundsPass_->measureNow(*gpuScene_, stats.cameraViewProjection, camera.projection(aspect),
+                                                  target);
+        timer_.end(TimedPass::DepthBounds);
+        stats.depthBoundsPass = {true, "projection.depthBounds sameFrame: a depth prepass, reduced and read back",
+                                 timer_.latestMilliseconds(TimedPass::DepthBounds)};
+    } else if (boundsWanted == DepthBounds::PreviousFrame) {
+        seenDepths = lastFrameDepths;
+    } else {
+        stats.depthBoundsPass = {false, "projection.depthBounds is off for every cascaded light", std::nullopt};
+    }
+    // The cascades fit the fit camera when one is given (frozen cascades, the flicker measure's previous frame): the
+    // depths this camera sees do not bound that camera's view, so they span its whole range then.
+    ViewCamera cascadeCamera =
+        fitCamera ? viewCameraOf(fitCamera->camera, fitCamera->aspect, stats.renderOrigin) : viewCamera;
+    if (!fitCamera) cascadeCamera.seenDepths = seenDepths;
+    stats.seenDepths = cascadeCamera.seenDepths;
+    for (const LightSettings& light : settings.lights) {
+        std::string fallback;
+        cascadeDepthBounds(light, cascadeCamera, &fallback);
+        if (!fallback.empty() && std::find(stats.warnings.begin(), stats.warnings.end(), fallback) == stats.warnings.end())
+            stats.warnings.push_back(fallback);
+    }
+
     // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention),
     // each decided against what its map holds (the plan the previous frame carried out).
-    const ViewCamera viewCamera = viewCameraOf(camera, double(target.width()) / target.height(), stats.renderOrigin);
-    const ViewCamera cascadeCamera =
-        fitCamera ? viewCameraOf(fitCamera->camera, fitCamera->aspect, stats.renderOrigin) : viewCamera;
     const std::vector<CasterSphere> spheres = casterSpheres(*gpuScene_);
     // Cascades follow the fit camera; what the picture's camera cannot see is still judged from the picture's camera.
     ShadowPlan plan = planShadowViews({scene, requested, stats.renderOrigin, &cascadeCamera, stats.cameraViewProjection,
@@ -337,6 +369,13 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     const std::set<std::string> variants = mainPass_.run(in, target);
     timer_.end(TimedPass::Main);
     stats.mainPass = {true, "every frame", timer_.latestMilliseconds(TimedPass::Main)};
+    if (boundsWanted == DepthBounds::PreviousFrame) {
+        timer_.begin(TimedPass::DepthBounds);
+        depthBoundsPass_->reduceMainDepth(camera.projection(aspect), target);
+        timer_.end(TimedPass::DepthBounds);
+        stats.depthBoundsPass = {true, "projection.depthBounds previousFrame: this frame's depth, reduced for the next",
+                                 timer_.latestMilliseconds(TimedPass::DepthBounds)};
+    }
     stats.mainVariants.assign(variants.begin(), variants.end());
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     previousPlan_ = std::move(plan);  // what each view's map now holds: the next frame's planner compares with it
@@ -362,6 +401,8 @@ void Renderer::waitForTimings(FrameStats& stats) {
     }
     if (stats.shadowPass.ran && any) stats.shadowPass.milliseconds = total;
     if (stats.mainPass.ran) stats.mainPass.milliseconds = timer_.latestMilliseconds(TimedPass::Main, true);
+    if (stats.depthBoundsPass.ran)
+        stats.depthBoundsPass.milliseconds = timer_.latestMilliseconds(TimedPass::DepthBounds, true);
 }
 
 }  // namespace shadowlab

@@ -6,6 +6,7 @@
 // set and filter. FrameStats lists every view and why.
 #include "context/gl_info.h"
 #include "frame/camera.h"
+#include "frame/depth_bounds_pass.h"
 #include "frame/frame_stats.h"
 #include "frame/gpu_scene.h"
 #include "frame/render_target.h"
@@ -76,6 +77,7 @@ private:
     ShadowSampler sampler_{false};
     ShadowSampler reversedSampler_{true};
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<DepthBoundsPass> depthBoundsPass_;  // made when a light first asks for projection.depthBounds
     MainPass mainPass_;
     PassTimer timer_;
     std::unique_ptr<GpuScene> gpuScene_;

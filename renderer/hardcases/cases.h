@@ -23,5 +23,6 @@ void runDegenerateGeometry(CaseContext& context, CaseResult& result);   // 16
 void runScaleExtremes(CaseContext& context, CaseResult& result);        // 17
 void runCascadeSplits(CaseContext& context, CaseResult& result);        // 18
 void runCascadeSeams(CaseContext& context, CaseResult& result);         // 19
+void runStaleDepthBounds(CaseContext& context, CaseResult& result);     // 20
 
 }  // namespace shadowlab::hardcases

@@ -23,6 +23,7 @@ const std::vector<HardCase>& hardCaseList() {
         {17, "scale extremes and texel-relative biases", runScaleExtremes},
         {18, "cascade splits at extreme near / far", runCascadeSplits},
         {19, "cascade seams (texel jump per split, blend band)", runCascadeSeams},
+        {20, "stale depth bounds and fast camera motion", runStaleDepthBounds},
     };
     return list;
 }

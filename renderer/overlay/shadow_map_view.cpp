@@ -3,22 +3,12 @@
 #include "gl/program.h"
 
 #include <algorithm>
-#include <cstring>
 
 namespace shadowlab {
 
 namespace {
 
 constexpr GLuint kDepthUnit = 0;
-constexpr GLuint kNoCasterBits = 0xFFFFFFFFu;
-constexpr int kTexelsPerInvocation = 8;  // depth_range.comp.glsl reads BLOCK x BLOCK texels per invocation
-constexpr int kGroupSize = 16;
-
-float fromBits(GLuint bits) {
-    float value = 0.0f;
-    std::memcpy(&value, &bits, sizeof value);
-    return value;
-}
 
 }  // namespace
 
@@ -34,17 +24,13 @@ ShadowMapView::ShadowMapView()
     : displayProgram_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_map_view.vert.glsl"},
                                         {GL_FRAGMENT_SHADER, "shadow_map_view.frag.glsl"}},
                                        {})),
-      rangeProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "depth_range.comp.glsl"}},
-                                     {"BLOCK " + std::to_string(kTexelsPerInvocation)})),
       emptyVertexArray_(gl::createVertexArray()),
-      rawSampler_(gl::createSampler()),
-      rangeBuffer_(gl::createBuffer()) {
+      rawSampler_(gl::createSampler()) {
     glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
-    glNamedBufferStorage(rangeBuffer_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
     const GLuint program = displayProgram_.id();
     uniforms_.uvMin = glGetUniformLocation(program, "uUvMin");
     uniforms_.uvMax = glGetUniformLocation(program, "uUvMax");
@@ -57,28 +43,13 @@ ShadowMapView::ShadowMapView()
 }
 
 void ShadowMapView::measureWrittenRange(const ShadowMap& map, bool reversedZ) {
-    const GLuint start[2] = {kNoCasterBits, 0u};
-    glNamedBufferSubData(rangeBuffer_.id(), 0, sizeof start, start);
-    glUseProgram(rangeProgram_.id());
-    glUniform1i(glGetUniformLocation(rangeProgram_.id(), "uReversedZ"), reversedZ ? 1 : 0);
-    glBindTextureUnit(kDepthUnit, map.texture());
-    glBindSampler(kDepthUnit, rawSampler_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, rangeBuffer_.id());
-    const int perGroup = kGroupSize * kTexelsPerInvocation;
-    const GLuint groups = GLuint((map.resolution() + perGroup - 1) / perGroup);
-    glDispatchCompute(groups, groups, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    GLuint result[2] = {kNoCasterBits, 0u};
-    glGetNamedBufferSubData(rangeBuffer_.id(), 0, sizeof result, result);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-    glBindSampler(kDepthUnit, 0);
-    glUseProgram(0);
-    if (result[0] == kNoCasterBits) {
+    rangeReduction_.dispatch(map.texture(), map.resolution(), map.resolution(), reversedZ);
+    if (const std::optional<WrittenDepths> written = rangeReduction_.read()) {
+        writtenMin_ = written->min;
+        writtenMax_ = written->max;
+    } else {
         writtenMin_.reset();
         writtenMax_.reset();
-    } else {
-        writtenMin_ = fromBits(result[0]);
-        writtenMax_ = fromBits(result[1]);
     }
     measuredGeneration_ = map.generation();
     measuredReversedZ_ = reversedZ;

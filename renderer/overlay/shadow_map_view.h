@@ -7,6 +7,7 @@
 // reversed-Z map (near 1, far 0) is shown as 1 - stored depth, so near is dark in both conventions and the contrast
 // range is in that unit.
 #include "frame/render_target.h"
+#include "gl/depth_range_reduction.h"
 #include "gl/gl_objects.h"
 #include "light/light_space.h"
 #include "overlay/map_zoom_pan.h"
@@ -89,10 +90,9 @@ private:
 
     gl::Program displayProgram_;
     DisplayUniforms uniforms_;  // looked up once
-    gl::Program rangeProgram_;
     gl::VertexArray emptyVertexArray_;
     gl::Sampler rawSampler_;     // nearest, no comparison: reads stored depth
-    gl::Buffer rangeBuffer_;     // two uints: min and max of written depths (float bits)
+    DepthRangeReduction rangeReduction_;  // auto contrast: the depths casters wrote
     RenderTarget target_;
     std::optional<float> writtenMin_, writtenMax_;  // measured range; empty when no caster wrote
     bool rangeStale_ = true;                 // the map changed since the range was measured

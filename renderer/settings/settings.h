@@ -47,6 +47,10 @@ enum class ProjectionFit { Scene, Cascades };
 // origin snapped to whole texels: camera motion moves no texel edge) or tight (the slice's box in light space: more
 // texels on screen, edges that crawl as the camera moves).
 enum class CascadeFit { Stable, Tight };
+// Where the cascades' depth range comes from: off (the camera's near plane to the shadow distance), or the nearest
+// and farthest depth the camera sees, reduced on the GPU: this frame's (a depth prepass and a read-back before the
+// views are planned) or the previous frame's (no stall; a frame late after a fast camera move).
+enum class DepthBounds { Off, SameFrame, PreviousFrame };
 
 struct ProjectionSettings {
     bool autoFit = true;      // fit ortho size / near / far (spot: near / far) to the scene's bounding sphere
@@ -63,6 +67,7 @@ struct ProjectionSettings {
     float shadowDistance = 0.0f; // how far from the camera shadows reach; 0 = the camera's far plane
     float blendBand = 0.1f;      // share of each cascade (0..0.5) where it fades into the next
     CascadeFit cascadeFit = CascadeFit::Stable;
+    DepthBounds depthBounds = DepthBounds::Off;
 
     bool operator==(const ProjectionSettings&) const = default;
 };

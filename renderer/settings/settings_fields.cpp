@@ -483,6 +483,17 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                              {{CascadeFit::Stable, "stable"}, {CascadeFit::Tight, "tight"}},
                                              at([](auto& l) -> auto& { return l.projection.cascadeFit; })),
                        kView));
+    f.push_back(tagged(enumField<DepthBounds>(keyOf("projection.depthBounds"),
+                                              "Cascade splits over the depths the camera sees (SDSM): off (the "
+                                              "camera's near plane to the shadow distance), sameFrame (a depth "
+                                              "prepass reduced on the GPU and read back before the views are planned: "
+                                              "a stall) or previousFrame (the last frame's depths: no stall, a frame "
+                                              "late after a fast camera move)",
+                                              {{DepthBounds::Off, "off"},
+                                               {DepthBounds::SameFrame, "sameFrame"},
+                                               {DepthBounds::PreviousFrame, "previousFrame"}},
+                                              at([](auto& l) -> auto& { return l.projection.depthBounds; })),
+                       kView));
     return f;
 }
 

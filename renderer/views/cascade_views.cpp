@@ -5,6 +5,7 @@
 // slice still cast (with depth clamp, as the scene fit), and the depth bias means the same in every cascade.
 #include "views/cascade_views.h"
 
+#include "views/depth_bounds.h"
 #include "views/view_builders.h"
 
 #include <glm/geometric.hpp>
@@ -51,9 +52,9 @@ double cascadeShadowDistance(const ProjectionSettings& projection, const ViewCam
     return projection.shadowDistance > 0.0f ? double(projection.shadowDistance) : camera.farPlane;
 }
 
-DepthRange boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, const ViewCamera& camera) {
+ViewDepths boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, const ViewCamera& camera) {
     if (bounds.empty) return {};
-    DepthRange r{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()};
+    ViewDepths r{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()};
     for (int c = 0; c < 8; ++c) {
         const glm::dvec3 corner(c & 1 ? bounds.max.x : bounds.min.x, c & 2 ? bounds.max.y : bounds.min.y,
                                 c & 4 ? bounds.max.z : bounds.min.z);
@@ -66,7 +67,7 @@ DepthRange boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, cons
 }
 
 std::vector<double> cascadeFarDepths(const ProjectionSettings& projection, const ViewCamera& camera,
-                                     std::string& why, const DepthRange* scene) {
+                                     std::string& why, const ViewDepths* scene) {
     const int count = std::clamp(projection.cascadeCount, 1, 4);
     const bool manual = projection.splits.x > 0.0f;
     double n = camera.nearPlane, f = cascadeShadowDistance(projection, camera);
@@ -114,7 +115,7 @@ std::vector<double> cascadeFarDepths(const ProjectionSettings& projection, const
 }
 
 std::vector<CascadeSlice> cascadeSlices(const ProjectionSettings& projection, const ViewCamera& camera,
-                                        std::string& why, const DepthRange* scene) {
+                                        std::string& why, const ViewDepths* scene) {
     const std::vector<double> far = cascadeFarDepths(projection, camera, why, scene);
     std::vector<CascadeSlice> slices;
     const double band = std::clamp(double(projection.blendBand), 0.0, 0.5);
@@ -157,9 +158,12 @@ std::vector<ShadowView> buildCascadeViews(const ViewBuildInput& in, std::string&
     const bool stable = in.light.projection.cascadeFit == CascadeFit::Stable;
     // The tight fit also tightens the splits to the depths the scene covers from here; the stable fit keeps splits
     // that depend on nothing but the camera's planes and the keys, or its cascades' sizes would change as it moves.
-    const DepthRange sceneDepths = boundsDepthRange(in.bounds, in.origin, *in.camera);
-    const std::vector<CascadeSlice> slices = cascadeSlices(in.light.projection, *in.camera, why,
-                                                           stable || in.bounds.empty ? nullptr : &sceneDepths);
+    // The depth-bounds fit (either kind) spans the depths the camera sees, quantized so that the stable fit's sizes
+    // change only when what is seen moves by a grid step; manual splits are the user's and are kept.
+    const ViewDepths sceneDepths = boundsDepthRange(in.bounds, in.origin, *in.camera);
+    const std::optional<ViewDepths> seen = cascadeDepthBounds(in.light, *in.camera);
+    const ViewDepths* spanned = seen ? &*seen : stable || in.bounds.empty ? nullptr : &sceneDepths;
+    const std::vector<CascadeSlice> slices = cascadeSlices(in.light.projection, *in.camera, why, spanned);
     if (slices.empty()) return {};
 
     const glm::dmat3 basis = lightBasis(direction);  // right, up, back

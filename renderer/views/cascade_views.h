@@ -18,10 +18,7 @@ double cascadeShadowDistance(const ProjectionSettings& projection, const ViewCam
 
 // The depths in front of the camera that the scene's bounds cover (their corners' nearest and farthest, the nearest
 // no nearer than the camera's near plane); {0, 0} for empty bounds.
-struct DepthRange {
-    double nearest = 0.0, farthest = 0.0;
-};
-DepthRange boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, const ViewCamera& camera);
+ViewDepths boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, const ViewCamera& camera);
 
 // Each cascade's far depth from the camera, nearest first (projection.cascadeCount of them, the last at the shadow
 // distance): the manual splits when given, else the practical scheme (Zhang et al.: a blend by splitLambda of the
@@ -35,11 +32,11 @@ DepthRange boundsDepthRange(const Bounds& bounds, const glm::dvec3& origin, cons
 // than cascadeCount come back). Empty with `why` naming the key when the splits cannot be used (beyond the shadow
 // distance, or the shadow distance not beyond the camera's near plane).
 std::vector<double> cascadeFarDepths(const ProjectionSettings& projection, const ViewCamera& camera,
-                                     std::string& why, const DepthRange* scene = nullptr);
+                                     std::string& why, const ViewDepths* scene = nullptr);
 
 // The slices of cascadeFarDepths with each blend band: cascade i fades into i + 1 over the last blendBand share of
 // its own depth range, so cascade i + 1's volume reaches back to where that band starts.
 std::vector<CascadeSlice> cascadeSlices(const ProjectionSettings& projection, const ViewCamera& camera,
-                                        std::string& why, const DepthRange* scene = nullptr);
+                                        std::string& why, const ViewDepths* scene = nullptr);
 
 }  // namespace shadowlab

@@ -3,6 +3,7 @@
 #include "light/scene_lights.h"
 #include "light/volume_overlap.h"
 #include "settings/settings_fields.h"
+#include "views/depth_bounds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,8 +60,9 @@ std::string changeReason(const MapContents& held, const MapContents& now, Shadow
     if (!keys.empty()) reasons.push_back(joinKeys(keys) + " changed");
     if (now.sceneFingerprint != held.sceneFingerprint) reasons.push_back("scene changed");
     if (keys.empty() && now.viewProjection != held.viewProjection)
-        reasons.push_back(kind == ShadowViewKind::Cascade ? "the camera moved (the cascade follows it)"
-                                                          : "light space changed");
+        reasons.push_back(now.depthBounds != held.depthBounds      ? "the depth bounds moved"
+                          : kind == ShadowViewKind::Cascade ? "the camera moved (the cascade follows it)"
+                                                            : "light space changed");
     if (reasons.empty() && !kept) reasons.push_back("shadow map reallocated");
     return joinReasons(reasons);
 }
@@ -214,8 +216,10 @@ ShadowPlan planShadowViews(const PlanInputs& in) {
     std::shared_ptr<const Settings> requested;
     GlobalKeyChanges globals(in.settings);
     for (PlannedView& p : plan.views) {
-        MapContents now{nullptr, plan.settings.lights[p.view.light], in.sceneFingerprint,
-                        p.view.space.viewProjection()};
+        const LightSettings& light = plan.settings.lights[p.view.light];
+        MapContents now{nullptr, light, in.sceneFingerprint, p.view.space.viewProjection(),
+                        p.view.kind == ShadowViewKind::Cascade && in.camera ? cascadeDepthBounds(light, *in.camera)
+                                                                            : std::nullopt};
         decide(p, in, std::move(now), plan.layers.at(p.group), requested, globals);
         if (p.holds && !p.holds->settings) p.holds->settings = requested = std::make_shared<const Settings>(in.settings);
     }

@@ -39,6 +39,7 @@ struct MapContents {
     LightSettings light;                       // its light as the frame used it (a scene light with its settings)
     std::size_t sceneFingerprint = 0;
     glm::dmat4 viewProjection{0.0};
+    std::optional<ViewDepths> depthBounds;  // a cascade's seen depths (projection.depthBounds); nullopt: off
 };
 
 enum class ViewAction { Render, Clear, Keep, SkipUnseen };

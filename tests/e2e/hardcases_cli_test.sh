@@ -20,7 +20,7 @@ for p in case12-depth-clamp-on.png case12-depth-clamp-off.png; do
 done
 ! grep -q "case  1 " case12.out && pass "--case filters" || fail "other cases ran"
 
-expect_error case99 "--case 99: no such case (the suite has cases 1..19" "$SHADOWLAB" hardcases --case 99
+expect_error case99 "--case 99: no such case (the suite has cases 1..20" "$SHADOWLAB" hardcases --case 99
 "$SHADOWLAB" hardcases --case 99 >/dev/null 2>&1; [ $? -eq 2 ] && pass "bad --case exits 2" || fail "bad --case exit code"
 expect_error case-word "case" "$SHADOWLAB" hardcases --case twelve
 expect_error json-folder "folder 'nowhere' does not exist" "$SHADOWLAB" hardcases --case 12 --json nowhere/x.json

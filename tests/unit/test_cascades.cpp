@@ -238,7 +238,7 @@ TEST(Cascades, TightSplitsStartWhereTheSceneDoesStableOnesDoNotMove) {
     ViewCamera camera = eyeCamera({0, 8, 25}, {0, -0.3, -1});
     camera.nearPlane = 0.004;
     camera.farPlane = 40.0;
-    const DepthRange range = boundsDepthRange(bounds, glm::dvec3(0.0), camera);
+    const ViewDepths range = boundsDepthRange(bounds, glm::dvec3(0.0), camera);
     EXPECT_GT(range.nearest, 15.0);
     LightSettings light = sun(3);
     light.projection.cascadeFit = CascadeFit::Tight;

@@ -12,6 +12,7 @@ void drawCascadeControls(EditorState& state) {
     auto key = [&](const char* within) { return state.lightKey(within); };
     comboField(state, key("projection.cascadeCount").c_str(), "cascades");
     comboField(state, key("projection.cascadeFit").c_str(), "cascade fit");
+    comboField(state, key("projection.depthBounds").c_str(), "depth bounds");
     sliderFloatField(state, key("projection.splitLambda").c_str(), "split lambda", 0.0f, 1.0f, "%.2f");
     dragFloatField(state, key("projection.shadowDistance").c_str(), "shadow distance", 0.5f, "%.1f");
     sliderFloatField(state, key("projection.blendBand").c_str(), "blend band", 0.0f, 0.5f, "%.2f");

@@ -116,6 +116,11 @@ void drawStatsPanel(PanelContext& ctx) {
     const FrameStats& shadow = state.lastShadowPass;
     passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
     passLine("main pass", s.mainPass, s.mainPass, clock);
+    if (s.depthBoundsPass.ran) {
+        passLine("depth bounds", s.depthBoundsPass, s.depthBoundsPass, clock);
+        if (s.seenDepths && s.seenDepths->farthest >= s.seenDepths->nearest)
+            noteText("seen depths " + std::to_string(s.seenDepths->nearest) + ".." + std::to_string(s.seenDepths->farthest));
+    }
     ImGui::Text("frame        %7.2f ms wall", state.lastFrameMs);
     noteText("timing: " + s.timingSource);
     ImGui::TextWrapped("triangles: %zu scene, %zu in the shadow pass", s.sceneTriangles, shadow.shadowTriangles);
