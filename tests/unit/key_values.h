@@ -26,6 +26,7 @@ inline std::vector<nlohmann::json> otherValues(const SettingsField& f, const nlo
                       nlohmann::json::array({1.0, 2.0, 3.0})};
             break;
         case SettingsFieldKind::StringList: values = {nlohmann::json::array({"a node the scene lacks"})}; break;
+        case SettingsFieldKind::String: values = {"none", "0", "a name the scene lacks"}; break;
     }
     std::vector<nlohmann::json> other;
     for (const nlohmann::json& v : values)

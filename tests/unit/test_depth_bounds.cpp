@@ -133,17 +133,6 @@ TEST(DepthBounds, WindowDepthBackToViewDepth) {
         }
 }
 
-TEST(DepthBounds, ThePlannerSaysTheBoundsMoved) {
-    ViewInputs last;
-    last.followsCamera = true;
-    last.depthBounds = ViewDepths{4.0, 32.0};
-    ViewInputs now = last;
-    now.viewProjection[3][0] = 1.0;
-    EXPECT_EQ(decideView(last, now, true).reason, "the camera moved (the cascade follows it)");
-    now.depthBounds = ViewDepths{4.0, 38.0};
-    EXPECT_EQ(decideView(last, now, true).reason, "the depth bounds moved");
-}
-
 TEST(DepthBounds, TheFrameMeasuresWhatItsLightsAsk) {
     Settings s;
     s.lights[0] = sun(DepthBounds::Off);

@@ -106,6 +106,34 @@ TEST(ShadowPlanner, ACameraMoveRerendersTheCascadesButNotTheSpotOrPointLight) {
     EXPECT_EQ(viewsToRender(moved), 3);
 }
 
+// projection.depthBounds: when the seen depths move, the cascades re-render and the plan says that is why (a camera
+// move with the same bounds says the camera moved).
+TEST(ShadowPlanner, MovedDepthBoundsAreNamedAsTheCascadesReason) {
+    const World w;
+    Settings s = w.settings;
+    s.lights[0].projection.depthBounds = DepthBounds::PreviousFrame;
+    ViewCamera seen = w.camera();
+    seen.seenDepths = ViewDepths{4.0, 32.0};
+    const ShadowPlan first = w.plan(s, seen, nullptr);
+    ASSERT_TRUE(first.error.empty()) << first.error;
+    ViewCamera farther = seen;
+    farther.seenDepths = ViewDepths{4.0, 90.0};
+    const ShadowPlan bounds = w.plan(s, farther, &first);
+    ViewCamera moved = w.camera({4.0, 1.7, 25.0});
+    moved.seenDepths = seen.seenDepths;
+    const ShadowPlan camera = w.plan(s, moved, &first);
+    int cascades = 0;
+    for (const ShadowPlan* plan : {&bounds, &camera})
+        for (const PlannedView& p : plan->views) {
+            if (p.view.kind != ShadowViewKind::Cascade) continue;
+            ++cascades;
+            EXPECT_EQ(p.action, ViewAction::Render) << viewName(p.view);
+            EXPECT_EQ(p.reason, plan == &bounds ? "the depth bounds moved" : "the camera moved (the cascade follows it)")
+                << viewName(p.view);
+        }
+    EXPECT_EQ(cascades, 6);
+}
+
 TEST(ShadowPlanner, AKeyChangeNamesTheKeyAndRerendersOnlyItsLight) {
     const World w;
     const ShadowPlan first = w.plan(w.settings, nullptr);
