@@ -158,10 +158,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         stats.depthBoundsPass = {false, "projection.depthBounds is off for every cascaded light", std::nullopt};
     }
     // The cascades fit the fit camera when one is given (frozen cascades, the flicker measure's previous frame): the
-    // depths this camera sees do not bound that camera's view, so they span its whole range then.
+    // depths this camera sees do not bound that camera's view, so they keep the depths the last frame of their own
+    // camera fitted to (the cascades as they were, not cascades that change with the picture's camera).
     ViewCamera cascadeCamera =
         fitCamera ? viewCameraOf(fitCamera->camera, fitCamera->aspect, stats.renderOrigin) : viewCamera;
-    if (!fitCamera) cascadeCamera.seenDepths = seenDepths;
+    if (!fitCamera) ownCameraDepths_ = seenDepths;
+    cascadeCamera.seenDepths = boundsWanted == DepthBounds::Off ? std::nullopt : ownCameraDepths_;
     stats.seenDepths = cascadeCamera.seenDepths;
     for (const LightSettings& light : settings.lights) {
         std::string fallback;

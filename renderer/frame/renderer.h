@@ -78,6 +78,9 @@ private:
     ShadowSampler reversedSampler_{true};
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<DepthBoundsPass> depthBoundsPass_;  // made when a light first asks for projection.depthBounds
+    // The seen depths the last frame without a fit camera fitted its cascades to: a frame with a fit camera (frozen
+    // cascades, the flicker measure's previous-frame cascades) fits to them as that frame did.
+    std::optional<ViewDepths> ownCameraDepths_;
     MainPass mainPass_;
     PassTimer timer_;
     std::unique_ptr<GpuScene> gpuScene_;
