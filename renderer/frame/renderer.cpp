@@ -159,10 +159,11 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     }
     // The cascades fit the fit camera when one is given (frozen cascades, the flicker measure's previous frame): the
     // depths this camera sees do not bound that camera's view, so they keep the depths the last frame of their own
-    // camera fitted to (the cascades as they were, not cascades that change with the picture's camera).
+    // camera fitted to (the cascades as they were, not cascades that change with the picture's camera). The kept
+    // bounds change only when what is seen leaves them or they grow twice too loose (keptDepthBounds).
     ViewCamera cascadeCamera =
         fitCamera ? viewCameraOf(fitCamera->camera, fitCamera->aspect, stats.renderOrigin) : viewCamera;
-    if (!fitCamera) ownCameraDepths_ = seenDepths;
+    if (!fitCamera) ownCameraDepths_ = keptDepthBounds(ownCameraDepths_, seenDepths);
     cascadeCamera.seenDepths = boundsWanted == DepthBounds::Off ? std::nullopt : ownCameraDepths_;
     stats.seenDepths = cascadeCamera.seenDepths;
     for (const LightSettings& light : settings.lights) {

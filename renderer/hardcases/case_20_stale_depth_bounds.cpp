@@ -67,8 +67,16 @@ void runStaleDepthBounds(CaseContext& context, CaseResult& result) {
     walk.frames = context.pick(10, 4);
     const FlickerReport f = context.flicker(scene, walking, width, height, walk, "walk");
     if (!f.ok) throw std::runtime_error(f.error);
-    result.check("previousFrame bounds, camera +0.05 x " + std::to_string(walk.frames - 1) + ": flicker, worst pair",
-                 percent(f.maxFlickerPercent), "0", f.maxFlickerPercent == 0.0);
+    // The first frame has no measured depths yet (previousFrame): its cascades span the camera's range and the
+    // bounds arrive with frame 1, a change the first pair shows once. The walk is judged from then on.
+    double settled = 0.0, first = 0.0;
+    for (const FlickerPair& pair : f.pairs)
+        (pair.from == 0 ? first : settled) = std::max(pair.from == 0 ? first : settled, pair.counts.flickerPercent);
+    result.info("previousFrame bounds: flicker of the first pair (frame 0 had no depths yet)", percent(first),
+                "the bounds arrive once");
+    result.check("previousFrame bounds, camera +0.05 x " + std::to_string(walk.frames - 1) +
+                     ": flicker, worst pair after the first",
+                 percent(settled), "0", f.pairs.size() > 1 && settled == 0.0);
 }
 
 }  // namespace shadowlab::hardcases

@@ -30,6 +30,17 @@ DepthBounds depthBoundsWanted(const Settings& settings) {
 double depthGridDown(double depth) { return gridValue(std::floor(gridPosition(depth))); }
 double depthGridUp(double depth) { return gridValue(std::ceil(gridPosition(depth))); }
 
+std::optional<ViewDepths> keptDepthBounds(const std::optional<ViewDepths>& kept, const std::optional<ViewDepths>& seen) {
+    if (!seen) return std::nullopt;
+    if (!(seen->nearest > 0.0) || !(seen->farthest >= seen->nearest) || !std::isfinite(seen->farthest)) return seen;
+    // The far bound must hold what is seen (beyond the last cascade a receiver is lit); the near bound only places
+    // the splits (cascade 0 always reaches back to the camera's near plane), so it may lag within a factor of 2.
+    if (kept && seen->farthest <= kept->farthest && seen->farthest >= 0.5 * kept->farthest &&
+        seen->nearest >= 0.5 * kept->nearest && seen->nearest <= 2.0 * kept->nearest)
+        return kept;
+    return ViewDepths{depthGridDown(seen->nearest), depthGridUp(seen->farthest)};
+}
+
 double viewDepthOfWindowDepth(const glm::dmat4& p, double windowDepth) {
     // A point on the view axis at depth z is (0, 0, -z); its clip z and w are p[2][2] (-z) + p[3][2] and
     // p[2][3] (-z) + p[3][3]; solved for z at ndc = clip z / clip w.

@@ -25,6 +25,14 @@ DepthBounds depthBoundsWanted(const Settings& settings);
 double depthGridDown(double depth);
 double depthGridUp(double depth);
 
+// The bounds a frame keeps, given the bounds it kept before and what it sees now (hysteresis on the grid): the kept
+// bounds stay while the farthest seen depth lies within [half the kept far bound, the kept far bound] and the nearest
+// within a factor of 2 of the kept near bound (it only places the splits: cascade 0 reaches back to the camera's
+// near plane anyway); otherwise the seen depths snapped outward to the grid (nearest down, farthest up). Quantizing alone is not enough:
+// a seen depth that drifts across a grid line would change the splits (and a stable fit's texel size) every time it
+// crossed back and forth. Without seen depths: nullopt.
+std::optional<ViewDepths> keptDepthBounds(const std::optional<ViewDepths>& kept, const std::optional<ViewDepths>& seen);
+
 // The depth along the viewing direction of a window depth (0..1, GL's default depth range) under `projection`
 // (perspective or orthographic, as frame/camera builds it).
 double viewDepthOfWindowDepth(const glm::dmat4& projection, double windowDepth);

@@ -144,3 +144,33 @@ TEST(DepthBounds, TheFrameMeasuresWhatItsLightsAsk) {
     s.lights[2].projection.fit = ProjectionFit::Scene;  // only cascaded lights count
     EXPECT_EQ(depthBoundsWanted(s), DepthBounds::PreviousFrame);
 }
+
+// Hysteresis: what is seen drifting back and forth across a grid line keeps the same bounds; leaving them, or
+// bounds grown twice too loose, moves them (snapped outward to the grid).
+TEST(DepthBounds, KeptBoundsChangeOnlyWhenWhatIsSeenLeavesThemOrTheyGrowTooLoose) {
+    EXPECT_FALSE(keptDepthBounds(std::nullopt, std::nullopt));
+    const std::optional<ViewDepths> first = keptDepthBounds(std::nullopt, ViewDepths{3.0, 30.0});
+    ASSERT_TRUE(first);
+    EXPECT_LE(first->nearest, 3.0);
+    EXPECT_GE(first->farthest, 30.0);
+    EXPECT_DOUBLE_EQ(first->nearest, depthGridDown(3.0));
+    EXPECT_DOUBLE_EQ(first->farthest, depthGridUp(30.0));
+    // A slow walk: the seen depths wander by a few percent around a grid line (2^(19/4) = 26.9 lies in 25..31).
+    std::optional<ViewDepths> kept = first;
+    for (int i = 0; i < 100; ++i) {
+        const double wobble = 1.0 + 0.03 * std::sin(0.7 * i);
+        kept = keptDepthBounds(kept, ViewDepths{3.0 * wobble * 1.02, 26.9 * wobble});
+        EXPECT_EQ(*kept, *first) << "frame " << i;
+    }
+    // Something seen beyond the far bound: it follows at once (a stale far bound loses shadows).
+    const std::optional<ViewDepths> farther = keptDepthBounds(kept, ViewDepths{3.0, 40.0});
+    EXPECT_GE(farther->farthest, 40.0);
+    // The near bound only places the splits: a little nearer keeps it, twice as near moves it.
+    EXPECT_EQ(*keptDepthBounds(kept, ViewDepths{2.0, 30.0}), *first);
+    const std::optional<ViewDepths> nearer = keptDepthBounds(kept, ViewDepths{1.0, 30.0});
+    EXPECT_LE(nearer->nearest, 1.0);
+    // Twice too loose: they tighten.
+    const std::optional<ViewDepths> tighter = keptDepthBounds(kept, ViewDepths{3.0, 10.0});
+    EXPECT_LT(tighter->farthest, 15.0);
+    EXPECT_GE(tighter->farthest, 10.0);
+}
