@@ -50,19 +50,11 @@ int runBenchLights(const BenchOptions& options) {
                               {"lights", benchLightsJson(base)}};
 
         // 1. Every view forced each frame: the median time of each view.
-        std::map<std::string, std::vector<double>> perView;
-        std::vector<double> mainAll;
-        FrameStats last;
-        for (int f = 0; f < kWarmUpFrames + options.frames; ++f) {
-            renderer.invalidateShadowMap();
-            last = renderer.render(scene, base, camera, target);
-            if (!last.ok) return fail(last.error);
-            renderer.waitForTimings(last);
-            if (f < kWarmUpFrames) continue;
-            for (const ShadowViewStats& v : last.views)
-                if (v.ran && v.milliseconds) perView[v.name].push_back(*v.milliseconds);
-            if (last.mainPass.milliseconds) mainAll.push_back(*last.mainPass.milliseconds);
-        }
+        PerViewTimes times = timeEveryView(renderer, scene, base, camera, target, options.frames);
+        if (!times.error.empty()) return fail(times.error);
+        std::map<std::string, std::vector<double>>& perView = times.viewMs;
+        std::vector<double>& mainAll = times.mainMs;
+        const FrameStats& last = times.last;
         std::cout << "timing: " << last.timingSource << "\n\nevery view rendered (median ms):\n";
         nlohmann::json views = nlohmann::json::array();
         double allViews = 0.0;

@@ -182,17 +182,10 @@ int runBenchPlanner(const BenchOptions& options) {
         });
         const bool own = !cascaded.lights.empty();
         if (!own) cascaded.lights = {mix.lights.front()};
-        std::map<std::string, std::vector<double>> perView;
-        FrameStats last;
-        for (int f = 0; f < kWarmUpFrames + options.frames; ++f) {
-            renderer.invalidateShadowMap();
-            last = renderer.render(scene, cascaded, camera, target);
-            if (!last.ok) return fail(last.error);
-            renderer.waitForTimings(last);
-            if (f < kWarmUpFrames) continue;
-            for (const ShadowViewStats& v : last.views)
-                if (v.ran && v.milliseconds) perView[v.name].push_back(*v.milliseconds);
-        }
+        PerViewTimes times = timeEveryView(renderer, scene, cascaded, camera, target, options.frames);
+        if (!times.error.empty()) return fail(times.error);
+        std::map<std::string, std::vector<double>>& perView = times.viewMs;
+        const FrameStats& last = times.last;
         std::cout << "\ncascade shadow pass vs a bare depth draw of the casters it holds, scene " << scene.name
                   << ", " << (own ? "the settings' cascaded lights" : "no cascaded light in the settings: the mix's "
                                                                       "first sun alone")

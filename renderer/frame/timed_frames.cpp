@@ -26,4 +26,26 @@ TimedFrames timeFrames(Renderer& renderer, const Scene& scene, const Settings& s
     return result;
 }
 
+PerViewTimes timeEveryView(Renderer& renderer, const Scene& scene, const Settings& settings, const Camera& camera,
+                           RenderTarget& target, int frames) {
+    PerViewTimes result;
+    WarmUp warmUp(renderer.glInfo().softwareRasterizer ? 0.0 : kGpuWarmUpMs);
+    for (int f = 0; f < frames;) {
+        const bool thrownAway = warmUp.running();
+        renderer.invalidateShadowMap();
+        result.last = renderer.render(scene, settings, camera, target);
+        if (!result.last.ok) {
+            result.error = result.last.error;
+            return result;
+        }
+        renderer.waitForTimings(result.last);
+        if (thrownAway) continue;
+        ++f;
+        for (const ShadowViewStats& v : result.last.views)
+            if (v.ran && v.milliseconds) result.viewMs[v.name].push_back(*v.milliseconds);
+        if (result.last.mainPass.milliseconds) result.mainMs.push_back(*result.last.mainPass.milliseconds);
+    }
+    return result;
+}
+
 }  // namespace shadowlab

@@ -5,6 +5,7 @@
 #include "frame/renderer.h"
 #include "timing/repeated_timing.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,17 @@ struct TimedFrames {
 // warm-up: kGpuWarmUpMs on a GPU).
 TimedFrames timeFrames(Renderer& renderer, const Scene& scene, const Settings& settings, const Camera& camera,
                        RenderTarget& target, int frames);
+
+// Every view's own time, frame by frame: `frames` frames with every view forced (after the same warm-up), each
+// view's milliseconds by its name (ShadowViewStats::name) and the main pass's. `bench --lights` and
+// `bench --planner` read them.
+struct PerViewTimes {
+    std::string error;                                     // "" unless a frame failed
+    std::map<std::string, std::vector<double>> viewMs;     // by view name, one entry per timed frame it ran
+    std::vector<double> mainMs;
+    FrameStats last;
+};
+PerViewTimes timeEveryView(Renderer& renderer, const Scene& scene, const Settings& settings, const Camera& camera,
+                           RenderTarget& target, int frames);
 
 }  // namespace shadowlab
