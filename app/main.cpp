@@ -117,6 +117,9 @@ int main(int argc, char** argv) {
                            "with --motion: x,y,z = the camera's direction of travel or the rotation axis");
     measureCmd->add_option("--frames-out", measure.framesOut,
                            "with --motion: write the worst pair's two frames as PNG into this folder");
+    measureCmd->add_option("--stale-bounds", measure.staleBounds,
+                           "measure instead what depth bounds one frame late cost: the frame after the camera turns "
+                           "DEGREES, with this frame's bounds and the frame before's (light 0, cascaded)");
 
     cli::TuneOptions tune;
     CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");

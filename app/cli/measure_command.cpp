@@ -6,6 +6,7 @@
 #include "cli/accuracy_output.h"
 #include "cli/command_input.h"
 #include "cli/measure_motion.h"
+#include "cli/measure_stale_bounds.h"
 #include "cli/progress.h"
 #include "cli/remeasure_bench.h"
 #include "cli/settings_from_cli.h"
@@ -20,6 +21,7 @@
 namespace shadowlab::cli {
 
 int runMeasure(const MeasureOptions& options) {
+    if (!options.staleBounds.empty()) return runMeasureStaleBounds(options);
     if (wantsMotion(options)) return runMeasureMotion(options);
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
     if (!settings) return 2;

@@ -26,6 +26,7 @@ struct MeasureOptions {
     std::string step;          // as typed: parsed by measure_motion so "nan" or "1e999" get a clear message
     std::string direction;     // "x,y,z": camera's direction of travel / light's rotation axis
     std::string framesOut;     // folder: the worst pair's two frames as PNG
+    std::string staleBounds;   // degrees as typed: the frame after a camera turn with 0 and 1 frame of depth bounds
 };
 
 // Exit code 0 unless it failed (bad input, no GL, a file that cannot be written).

@@ -24,18 +24,6 @@ namespace shadowlab::cli {
 
 namespace {
 
-// A finite number that is the whole of `text`, or "" with `error` naming the option.
-std::optional<double> parseNumber(const std::string& text, const std::string& option, std::string& error) {
-    char* end = nullptr;
-    errno = 0;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) {
-        error = option + " '" + text + "': not a finite number";
-        return std::nullopt;
-    }
-    return value;
-}
-
 std::optional<glm::dvec3> parseDirection(const std::string& text, std::string& error) {
     std::vector<std::string> parts;
     std::stringstream in(text);
@@ -46,7 +34,7 @@ std::optional<glm::dvec3> parseDirection(const std::string& text, std::string& e
     }
     glm::dvec3 v;
     for (int i = 0; i < 3; ++i) {
-        const auto value = parseNumber(parts[std::size_t(i)], "--direction", error);
+        const auto value = parseFiniteOption(parts[std::size_t(i)], "--direction", error);
         if (!value) return std::nullopt;
         v[i] = *value;
     }
@@ -65,6 +53,17 @@ std::string prepareFolder(const std::string& path) {
 }
 
 }  // namespace
+
+std::optional<double> parseFiniteOption(const std::string& text, const std::string& option, std::string& error) {
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) {
+        error = option + " '" + text + "': not a finite number";
+        return std::nullopt;
+    }
+    return value;
+}
 
 bool wantsMotion(const MeasureOptions& o) {
     return !o.motion.empty() || o.frames != -1 || !o.step.empty() || !o.direction.empty() || !o.framesOut.empty();
@@ -85,7 +84,7 @@ int runMeasureMotion(const MeasureOptions& options) {
     motion.kind = *kind;
     motion.frames = options.frames == -1 ? kDefaultMotionFrames : options.frames;
     std::string error;
-    const std::optional<double> step = parseNumber(options.step, "--step", error);
+    const std::optional<double> step = parseFiniteOption(options.step, "--step", error);
     if (!step) return fail(error);
     motion.step = *step;
     if (!options.direction.empty()) {

@@ -5,7 +5,14 @@
 // frames (--frames-out DIR).
 #include "cli/measure_command.h"
 
+#include <optional>
+#include <string>
+
 namespace shadowlab::cli {
+
+// A finite number that is the whole of `text`, else nullopt with `error` naming the option ("--step 'x': not a
+// finite number"), so "nan" or "1e999" get a clear message.
+std::optional<double> parseFiniteOption(const std::string& text, const std::string& option, std::string& error);
 
 // Any of --motion, --frames, --step, --direction, --frames-out given.
 bool wantsMotion(const MeasureOptions& options);

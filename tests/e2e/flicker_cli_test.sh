@@ -73,4 +73,23 @@ expect_error motion-missing "need --motion" "$SHADOWLAB" measure "${coarse[@]}" 
 expect_error direction-bad "--direction" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step 0.1 \
   --direction 0,0
 expect_error light-missing "--light 3" "$SHADOWLAB" measure "${coarse[@]}" --motion light --step 0.1 --light 3
+
+# Issue 20: stale depth bounds (HARD_CASES 20) from the CLI: the frame after a 90 degree turn loses more shadows with
+# the frame before's bounds than with its own.
+expect_ok stale-bounds "$SHADOWLAB" measure --scene builtin:city --preset default --set useSceneLights=true \
+  --set lights.0.projection.fit=cascades --width 240 --height 135 --stale-bounds 90 --json stale.json
+python3 - stale.json <<'PY' && pass "stale bounds: one frame late loses more shadows" || fail "stale bounds JSON: $(cat stale.json)"
+import json, sys
+d = json.load(open(sys.argv[1]))
+same, prev = d["sameFrame"], d["previousFrame"]
+assert d["turnDegrees"] == 90 and same["shadowedPixels"] == prev["shadowedPixels"] > 0
+assert prev["missingShadows"] > same["missingShadows"], (same, prev)
+PY
+grep -q "bounds of the frame before (previousFrame, 1 late): *missing shadows" stale-bounds.out \
+  && pass "stale bounds: both latencies printed" || fail "stale bounds text: $(cat stale-bounds.out)"
+expect_error stale-bounds-light "needs a directional light with projection.fit cascades" "$SHADOWLAB" measure \
+  --scene builtin:textbook --width 64 --height 36 --stale-bounds 90
+expect_error stale-bounds-nan "--stale-bounds 'nan': not a finite number" "$SHADOWLAB" measure --stale-bounds nan
+expect_error stale-bounds-range "must lie in (0, 180]" "$SHADOWLAB" measure --stale-bounds 270
+expect_error stale-bounds-motion "not with --motion" "$SHADOWLAB" measure --stale-bounds 90 --motion camera --step 1
 finish
