@@ -128,7 +128,6 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
         gpuSceneFingerprint_ = fingerprint;
     }
-    // What casts (casters.excluded): the maps' contents change with it as with the scene.
     // What casts (casters.excluded): the planner names a change of the key; the maps' contents follow it.
     gpuScene_->setCasting(castingInstances(scene, settings.casters));
     stats.renderOrigin = gpuScene_->origin();
