@@ -1,4 +1,5 @@
 #include "cli/bench_lights.h"
+#include "cli/json_output.h"
 
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
@@ -6,7 +7,6 @@
 #include "frame/timed_frames.h"
 #include "light/scene_lights.h"
 #include "scene/scene_source.h"
-#include "settings/atomic_file.h"
 #include "settings/settings_fields.h"
 
 #include <nlohmann/json.hpp>
@@ -125,9 +125,8 @@ int runBenchLights(const BenchOptions& options) {
         }
         doc["mainPassByShadowedLights"] = scaling;
         if (!options.json.empty()) {
-            if (std::string error = writeFileAtomically(options.json, doc.dump(2) + "\n"); !error.empty())
+            if (std::string error = writeJsonOutput(options.json, doc); !error.empty())
                 return fail("--json " + options.json + ": " + error);
-            std::cout << "wrote " << options.json << "\n";
         }
     } catch (const std::exception& e) {
         return fail(e.what());

@@ -1,4 +1,5 @@
 #include "cli/measure_stale_bounds.h"
+#include "cli/json_output.h"
 
 #include "accuracy/stale_depth_bounds.h"
 #include "cli/accuracy_output.h"
@@ -8,7 +9,6 @@
 #include "context/headless_context.h"
 #include "light/scene_lights.h"
 #include "scene/scene_source.h"
-#include "settings/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -74,8 +74,7 @@ int runMeasureStaleBounds(const MeasureOptions& options) {
                                    {"turnDegrees", report.turnDegrees},
                                    {"sameFrame", frameJson(report.sameFrame)},
                                    {"previousFrame", frameJson(report.previousFrame)}};
-            if (error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty()) return fail(error);
-            std::cout << "wrote " << options.json << "\n";
+            if (error = writeJsonOutput(options.json, json); !error.empty()) return fail(error);
         }
     } catch (const std::exception& e) {
         return fail(e.what());

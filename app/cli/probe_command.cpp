@@ -1,4 +1,5 @@
 #include "cli/probe_command.h"
+#include "cli/json_output.h"
 
 #include "cli/command_input.h"
 #include "cli/settings_from_cli.h"
@@ -7,7 +8,6 @@
 #include "light/scene_lights.h"
 #include "probe/probe_description.h"
 #include "scene/scene_source.h"
-#include "settings/atomic_file.h"
 #include "settings/settings_fields.h"
 
 #include <charconv>
@@ -90,9 +90,7 @@ int runProbe(const ProbeOptions& options) {
             nlohmann::json json = perLight.size() == 1 ? perLight[0] : nlohmann::json{{"lights", perLight}};
             json["scene"] = options.scene;
             json["preset"] = options.preset;
-            if (std::string error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty())
-                return fail(error);
-            std::cout << "wrote " << options.json << "\n";
+            if (std::string error = writeJsonOutput(options.json, json); !error.empty()) return fail(error);
         }
         if (disagrees) return 1;
     } catch (const std::exception& e) {

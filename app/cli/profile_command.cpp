@@ -1,4 +1,5 @@
 #include "cli/profile_command.h"
+#include "cli/json_output.h"
 
 #include "accuracy/light_isolation.h"
 #include "cli/command_input.h"
@@ -8,7 +9,6 @@
 #include "image/image_io.h"
 #include "probe/depth_profile_output.h"
 #include "scene/scene_source.h"
-#include "settings/atomic_file.h"
 #include "settings/settings_fields.h"
 
 #include <iostream>
@@ -72,8 +72,7 @@ int runProfile(const ProfileOptions& options) {
             json["view"] = {options.width, options.height};
             json["light"] = *light;
             if (!options.view.empty()) json["lightView"] = options.view;
-            if (error = writeFileAtomically(options.json, json.dump(2) + "\n"); !error.empty()) return fail(error);
-            std::cout << "wrote " << options.json << "\n";
+            if (error = writeJsonOutput(options.json, json); !error.empty()) return fail(error);
         }
     } catch (const std::exception& e) {
         return fail(e.what());
