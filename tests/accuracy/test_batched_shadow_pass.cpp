@@ -1,8 +1,9 @@
 // Issue 20 (a view's casters in a few multi-draw calls) and issue 22 (a transform buffer update, not a re-upload):
 //  - the batched shadow pass equals, texel for texel, the map of an independently built copy of the scene whose
 //    instances are baked on the CPU into one mesh per material with an identity transform (mirrored instances'
-//    triangles reversed, as their flipped front face makes them): builtin:city's cascades, and AlphaBlendModeTest's
-//    alpha-tested casters with mirrored, rotated and scaled copies added;
+//    triangles reversed, as their flipped front face makes them): builtin:city's cascades (bit for bit), and
+//    AlphaBlendModeTest's alpha-tested casters with mirrored, rotated and scaled copies added (the same texels
+//    covered, depths within the float rounding of a transform);
 //  - a pass issues one multi-draw call per group of casters sharing their state, not one per caster;
 //  - an animation step that moves one instance uploads no geometry, only that instance's transform, and the shadow
 //    map equals a fresh GpuScene's.
@@ -68,19 +69,28 @@ Scene bakedCopy(const Scene& scene, const glm::dvec3& origin) {
 }
 
 struct MapDifference {
-    std::size_t texels = 0;     // differing texels
+    std::size_t written = 0;     // texels a caster wrote (not the clear value) in the oracle's map
+    std::size_t coverage = 0;    // texels written in one map and not the other
+    std::size_t differ = 0;      // texels both wrote, at different depths
+    std::size_t overTolerance = 0;
     double maxDifference = 0.0;
-    std::size_t written = 0;    // texels a caster wrote (not the clear value), in the oracle's map
 };
 
-MapDifference compare(const std::vector<float>& batched, const std::vector<float>& oracle, float clear) {
+MapDifference compare(const std::vector<float>& batched, const std::vector<float>& oracle, float clear,
+                      double tolerance) {
     MapDifference d;
     EXPECT_EQ(batched.size(), oracle.size());
     for (std::size_t i = 0; i < std::min(batched.size(), oracle.size()); ++i) {
         d.written += oracle[i] != clear;
         if (batched[i] == oracle[i]) continue;
-        ++d.texels;
-        d.maxDifference = std::max(d.maxDifference, double(std::abs(batched[i] - oracle[i])));
+        if ((batched[i] == clear) != (oracle[i] == clear)) {
+            ++d.coverage;
+            continue;
+        }
+        ++d.differ;
+        const double difference = std::abs(double(batched[i]) - double(oracle[i]));
+        d.maxDifference = std::max(d.maxDifference, difference);
+        d.overTolerance += difference > tolerance;
     }
     return d;
 }
@@ -99,10 +109,11 @@ std::size_t expectedGroups(const GpuScene& gpu, const CasterSelection& casters, 
 }
 
 // Renders each view of `views` from `scene` (batched) and from its baked copy into a map of `resolution`, and
-// checks they agree texel for texel and that the pass issued one multi-draw call per group.
+// checks that they cover the same texels, at depths within `depthTolerance` of each other (0: bit for bit), and that
+// the pass issued one multi-draw call per group.
 void expectBatchedEqualsBaked(const Scene& scene, const std::vector<LightSpace>& views, const glm::dvec3& origin,
                               const ShadowMapSettings& shadow, bool depthClamp, int resolution,
-                              const std::string& label) {
+                              const std::string& label, double depthTolerance) {
     const Scene baked = bakedCopy(scene, origin);
     GpuScene batchedScene(scene, origin);
     GpuScene bakedScene(baked, glm::dvec3(0.0));
@@ -119,12 +130,16 @@ void expectBatchedEqualsBaked(const Scene& scene, const std::vector<LightSpace>&
         const CasterSelection selection = castersInVolume(batchedScene, space);
         EXPECT_EQ(std::size_t(counts.drawCalls), expectedGroups(batchedScene, selection, shadow.cullMode))
             << where << ": one multi-draw call per group, " << counts.castersDrawn << " casters";
-        const MapDifference d = compare(batchedMap.readDepth(), bakedMap.readDepth(), space.reversedZ ? 0.0f : 1.0f);
-        std::printf("%s: %d casters in %d draw calls, %zu texels written, %zu differ (max %.3g)\n", where.c_str(),
-                    counts.castersDrawn, counts.drawCalls, d.written, d.texels, d.maxDifference);
+        const MapDifference d =
+            compare(batchedMap.readDepth(), bakedMap.readDepth(), space.reversedZ ? 0.0f : 1.0f, depthTolerance);
+        std::printf("%s: %d casters in %d draw calls; %zu texels written, %zu covered differently, %zu at another "
+                    "depth (max %.3g)\n",
+                    where.c_str(), counts.castersDrawn, counts.drawCalls, d.written, d.coverage, d.differ,
+                    d.maxDifference);
         EXPECT_GT(d.written, std::size_t(resolution)) << where << ": the view holds casters";
-        EXPECT_EQ(d.texels, 0u) << where << ": texels differing from the baked copy's map (max " << d.maxDifference
-                                << ")";
+        EXPECT_EQ(d.coverage, 0u) << where << ": texels one map covers and the other does not";
+        EXPECT_EQ(d.overTolerance, 0u) << where << ": texels deeper or shallower than the baked copy's by more than "
+                                       << depthTolerance << " (max " << d.maxDifference << ")";
     }
 }
 
@@ -145,8 +160,13 @@ TEST_F(BatchedShadowPass, CityCascadesEqualTheMapOfABakedSingleMeshCopy) {
     for (const ShadowView& v : frameViewsOf(view.stats, 0)) cascades.push_back(v.space);
     ASSERT_EQ(cascades.size(), 4u);
     expectBatchedEqualsBaked(scene, cascades, view.stats.renderOrigin, planned.lights[0].shadow,
-                             planned.lights[0].depthClampApplies(), 512, "city cascade");
+                             planned.lights[0].depthClampApplies(), 512, "city cascade", 0.0);
 }
+
+// The city's instances have identity transforms: its maps agree bit for bit. Here the GPU's float model * position
+// and the oracle's double-precision one rounded once differ in the last bits: the same texels are covered, at depths
+// within this (about 2e-6 on llvmpipe; a misplaced or misoriented caster moves them by orders of magnitude more).
+constexpr double kTransformRounding = 1e-5;
 
 TEST_F(BatchedShadowPass, AlphaTestedMirroredAndRotatedInstancesEqualTheMapOfABakedCopy) {
     const std::string path = std::string(SHADOWLAB_SHARED_SCENES) + "/AlphaBlendModeTest/AlphaBlendModeTest.gltf";
@@ -187,7 +207,7 @@ TEST_F(BatchedShadowPass, AlphaTestedMirroredAndRotatedInstancesEqualTheMapOfABa
         shadow.depthBias = shadow.slopeScaledDepthBias = shadow.depthBiasClamp = 0.0f;
         expectBatchedEqualsBaked(scene, {view.stats.light}, view.stats.renderOrigin, shadow,
                                  s.lights[0].depthClampApplies(), 512,
-                                 "AlphaBlendModeTest cull " + std::to_string(int(cull)));
+                                 "AlphaBlendModeTest cull " + std::to_string(int(cull)), kTransformRounding);
     }
 }
 
