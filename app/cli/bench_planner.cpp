@@ -220,9 +220,9 @@ int runBenchPlanner(const BenchOptions& options) {
             const double shadowMs = medianOf(perView[v.name]);
             const double ratio = timing.ms > 0.0 ? shadowMs / timing.ms : 0.0;
             std::cout << std::setw(6) << v.castersDrawn << " casters in " << v.drawCalls << " draw calls "
-                      << std::setw(9) << v.triangles << " triangles  shadow " << std::setprecision(3) << std::setw(8) << shadowMs << " ms  bare "
-                      << std::setw(8) << timing.ms << " ms  ratio " << std::setprecision(2) << ratio
-                      << (ratio <= kCascadeTargetRatio ? "" : "  (over the target)") << "\n";
+                      << std::setw(9) << v.triangles << " triangles  shadow " << std::setprecision(3) << std::setw(8)
+                      << shadowMs << " ms  bare " << std::setw(8) << timing.ms << " ms  ratio " << std::setprecision(2)
+                      << ratio << (ratio <= kCascadeTargetRatio ? "" : "  (over the target)") << "\n";
             cascades.push_back({{"view", v.name}, {"light", v.light}, {"cascade", v.index}, {"ran", true},
                                 {"direction", {light.direction.x, light.direction.y, light.direction.z}},
                                 {"resolution", v.resolution}, {"format", depthFormatName(v.format)},

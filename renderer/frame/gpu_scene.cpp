@@ -89,6 +89,7 @@ std::string SceneUpload::describe() const {
     if (geometry)
         return "geometry uploaded, " + std::to_string(geometryBytes + transformBytes) + " bytes (vertices, indices, "
                "textures and " + std::to_string(drawsMoved) + " transforms)";
+    if (drawsMoved == 0) return "nothing uploaded: the same geometry, no draw moved";
     return "transforms updated, " + std::to_string(transformBytes) + " bytes (" + std::to_string(drawsMoved) +
            (drawsMoved == 1 ? " draw" : " draws") + " moved; no geometry uploaded)";
 }

@@ -181,12 +181,12 @@ TEST_F(BatchedShadowPass, AlphaTestedMirroredAndRotatedInstancesEqualTheMapOfABa
     const std::size_t fileInstances = scene.instances.size();
     for (std::size_t i = 0; i < fileInstances; ++i) {
         const Instance original = scene.instances[i];
-        const glm::mat4 t(original.transform);
+        const glm::mat4 t(original.transform), one(1.0f);
         const glm::mat4 copies[3] = {
-            glm::translate(glm::mat4(1.0f), {0.2f, 0.0f, -2.5f}) * glm::scale(glm::mat4(1.0f), {-1.0f, 1.0f, 1.0f}) * t,
-            glm::translate(glm::mat4(1.0f), {0.0f, 0.3f, 2.5f}) * glm::rotate(glm::mat4(1.0f), 0.5f, {0.0f, 1.0f, 0.0f}) * t,
-            glm::translate(glm::mat4(1.0f), {0.0f, 2.0f, -5.0f}) * glm::rotate(glm::mat4(1.0f), 0.3f, {1.0f, 0.0f, 0.0f}) *
-                glm::scale(glm::mat4(1.0f), {1.0f, -0.7f, 1.3f}) * t};
+            glm::translate(one, {0.2f, 0.0f, -2.5f}) * glm::scale(one, {-1.0f, 1.0f, 1.0f}) * t,
+            glm::translate(one, {0.0f, 0.3f, 2.5f}) * glm::rotate(one, 0.5f, {0.0f, 1.0f, 0.0f}) * t,
+            glm::translate(one, {0.0f, 2.0f, -5.0f}) * glm::rotate(one, 0.3f, {1.0f, 0.0f, 0.0f}) *
+                glm::scale(one, {1.0f, -0.7f, 1.3f}) * t};
         for (const glm::mat4& c : copies) scene.instances.push_back({original.mesh, c, -1});
     }
     scene.computeBounds();
@@ -229,7 +229,8 @@ TEST_F(BatchedShadowPass, APassIssuesOneDrawCallPerStateGroupNotPerCaster) {
         if (!v.ran) continue;
         ++views;
         EXPECT_GT(v.castersDrawn, 100) << v.name;
-        EXPECT_EQ(v.drawCalls, 1) << v.name << ": " << v.castersDrawn << " casters, every one single-sided and unmirrored";
+        EXPECT_EQ(v.drawCalls, 1) << v.name << ": " << v.castersDrawn
+                                  << " casters, every one single-sided and unmirrored";
     }
     EXPECT_EQ(views, 4);
     EXPECT_EQ(view.stats.shadowDrawCalls, 4);
