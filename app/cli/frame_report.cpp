@@ -31,7 +31,8 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
     out << "shadow pass: " << milliseconds(stats.shadowPass) << " — " << stats.shadowPass.reason << "; "
         << stats.castersDrawn << " casters drawn (" << stats.alphaTestedCasters << " alpha-tested), "
         << stats.castersSkipped << " outside the light's volume skipped, " << stats.shadowTriangles
-        << " triangles\n";
+        << " triangles, " << stats.shadowDrawCalls << " draw calls\n";
+    out << "scene upload: " << (stats.sceneUpload.ran ? stats.sceneUpload.reason : "unchanged") << "\n";
     out << "main pass: " << milliseconds(stats.mainPass) << "; variants:";
     for (const std::string& v : stats.mainVariants) out << " [" << v << "]";
     out << "\n";

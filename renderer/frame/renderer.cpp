@@ -3,6 +3,7 @@
 
 #include "gl/gl_errors.h"
 #include "light/volume_overlap.h"
+#include "scene/hash_combine.h"
 #include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
 #include "views/depth_bounds.h"
@@ -17,19 +18,6 @@
 namespace shadowlab {
 
 namespace {
-
-void hashCombine(std::size_t& seed, std::size_t value) { seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2); }
-
-template <typename T>
-void hashBytes(std::size_t& seed, const T& value) {
-    std::size_t chunk = 0;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-    for (std::size_t i = 0; i < sizeof(T); ++i) {
-        chunk = chunk * 131 + bytes[i];
-        if (i % 8 == 7) hashCombine(seed, std::exchange(chunk, 0));
-    }
-    hashCombine(seed, chunk);
-}
 
 std::string joinLines(const std::vector<std::string>& lines) {
     std::string out;
@@ -124,9 +112,20 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     const std::size_t fingerprint = sceneFingerprint(scene);
     if (!gpuScene_ || &gpuScene_->scene() != &scene || gpuSceneFingerprint_ != fingerprint) {
-        // Every matrix is built relative to the render origin in double precision.
-        gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
+        // Every matrix is built relative to the render origin in double precision. Only transforms changed (an
+        // animation step, a posed copy of the scene): the transform buffer is updated, the geometry stays.
+        const glm::dvec3 origin = renderOriginOf(scene.bounds);
+        if (gpuScene_ && gpuScene_->sameGeometry(scene))
+            gpuScene_->updateTransforms(scene, origin);
+        else
+            gpuScene_ = std::make_unique<GpuScene>(scene, origin);
         gpuSceneFingerprint_ = fingerprint;
+        const SceneUpload& upload = gpuScene_->lastUpload();
+        stats.sceneUpload = {true, upload.describe(), std::nullopt};
+        stats.geometryBytesUploaded = upload.geometryBytes;
+        stats.transformBytesUploaded = upload.transformBytes;
+    } else {
+        stats.sceneUpload = {false, "unchanged", std::nullopt};
     }
     // What casts (casters.excluded): the planner names a change of the key; the maps' contents follow it.
     gpuScene_->setCasting(castingInstances(scene, settings.casters));
@@ -262,6 +261,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
             entry.castersSkipped = counts.castersSkipped;
+            entry.drawCalls = counts.drawCalls;
+            stats.shadowDrawCalls += counts.drawCalls;
             entry.triangles = counts.trianglesDrawn;
             stats.castersDrawn += counts.castersDrawn;
             stats.castersSkipped += counts.castersSkipped;

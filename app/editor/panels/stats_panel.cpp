@@ -124,8 +124,9 @@ void drawStatsPanel(PanelContext& ctx) {
     ImGui::Text("frame        %7.2f ms wall", state.lastFrameMs);
     noteText("timing: " + s.timingSource);
     ImGui::TextWrapped("triangles: %zu scene, %zu in the shadow pass", s.sceneTriangles, shadow.shadowTriangles);
-    ImGui::TextWrapped("casters: %d drawn, %d outside the light, %d alpha-tested", shadow.castersDrawn,
-                       shadow.castersSkipped, shadow.alphaTestedCasters);
+    ImGui::TextWrapped("casters: %d drawn in %d draw calls, %d outside the light, %d alpha-tested",
+                       shadow.castersDrawn, shadow.shadowDrawCalls, shadow.castersSkipped, shadow.alphaTestedCasters);
+    if (s.sceneUpload.ran) noteText("scene: " + s.sceneUpload.reason);
     ImGui::TextWrapped("shadow map: %d² %s, %.1f MiB", s.shadowMapResolution, depthFormatName(s.shadowMapFormat),
                        double(s.shadowMapBytes) / (1024.0 * 1024.0));
     noteText("frames rendered " + std::to_string(state.renderedFrames) + ", idle frames (no pass) " +
