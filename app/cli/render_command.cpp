@@ -135,7 +135,9 @@ int runRender(const RenderOptions& options) {
                         meter.measure(*sideScene, *side, camera, options.width, options.height);
                     if (!report.ok) return fail("--measure: " + report.error);
                     label->push_back(accuracyLine(report));
-                    std::cout << label->front() << ": " << label->back() << "\n";  // the numbers in text too
+                    // The numbers in text too, with the truly shadowed pixels (they follow each side's pose).
+                    std::cout << label->front() << ": " << label->back() << ", truly shadowed "
+                              << report.counts.shadowed << " of " << report.counts.measured << " measured pixels\n";
                 }
             }
             pixels = composeSplitView(topRowFirst(pixels, options.width, options.height),
