@@ -3,6 +3,7 @@
 // choice falls back to all views when the light's kind or cascade count changes.
 #include "editor_harness.h"
 
+#include <glm/geometric.hpp>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
@@ -10,8 +11,7 @@ namespace shadowlab::editor::test {
 
 namespace {
 
-// The selected light cascaded (count via the Projection panel's combo) with a blend band wide enough that the probed
-// pixel lies in one.
+// The selected light cascaded, its count set through the Projection panel's combo.
 void cascades(EditorHarness& h, int count) {
     if (h.state().selected()->projection.fit != ProjectionFit::Cascades) {
         h.click("projection.fit");
@@ -40,6 +40,11 @@ TEST(EditorViewChoice, TheProbePanelProbesTheChosenViewAndFallsBackToAllViewsWhe
     EditorHarness h(testOptions(testFolder("probe-view")), 1280, 800);
     h.settle();
     cascades(h, 2);
+    // Uniform splits over twice the distance to the orbit's target put the seam there, at the middle of the view,
+    // and a wide blend band before it, across the floor.
+    const Camera eye = h.editor().orbitCamera()->toCamera();
+    h.state().edit(h.state().lightKey("projection.splitLambda"), 0.0);
+    h.state().edit(h.state().lightKey("projection.shadowDistance"), 2.0 * glm::length(eye.target - eye.position));
     h.state().edit(h.state().lightKey("projection.blendBand"), 0.5);
     h.frame(2);
     // A pixel in the blend band: all views probes both cascades there.
