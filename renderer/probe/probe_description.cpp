@@ -118,7 +118,7 @@ std::vector<std::string> describeProbe(const PixelProbeReport& r) {
                     (r.face >= 0 ? std::string(", cube face ") + cubeFaces()[std::size_t(r.face)].name : std::string()) +
                     (r.cascade.empty() ? std::string() : ", " + r.cascade) +
                     (r.viewCount < 2 ? std::string()
-                     : r.viewChosen ? format(" (of %d views: asked for with --view)", r.viewCount)
+                     : r.viewChosen ? format(" (of %d views: the one asked for)", r.viewCount)
                                     : format(" (of %d views: the one holding this point; --view chooses another)",
                                              r.viewCount)) +
                     ", alone: S is this light's shadow factor");

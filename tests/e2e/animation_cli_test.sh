@@ -50,6 +50,25 @@ expect_ok hostile "$SHADOWLAB" render --scene "$SOURCE_DIR/tests/fuzz/regression
 grep -q 'warning: anim-missing-node: animation 0 "Move", channel 0 (node 99 translation): it targets node 99, which does not exist' hostile.err \
   && pass "the hostile animation is named and skipped" || fail "hostile: $(cat hostile.err)"
 
+# render --compare: each side at its own preset's animation time (B is not drawn at A's pose). A shot's PNG carries
+# its preset; B's numbers beside A equal B's beside itself, and differ from A's.
+expect_ok shot-a "$SHADOWLAB" render "${small[@]}" --time 0 --animation Move --out shot-a.png
+expect_ok shot-b "$SHADOWLAB" render "${small[@]}" --time 1.5 --animation Move --out shot-b.png
+expect_ok compare-ab "$SHADOWLAB" render --scene "$boxes" --width 160 --height 90 --preset shot-a.png --compare shot-b.png \
+  --measure --out ab.png
+expect_ok compare-bb "$SHADOWLAB" render --scene "$boxes" --width 160 --height 90 --preset shot-b.png --compare shot-b.png \
+  --measure --out bb.png
+expect_ok compare-aa "$SHADOWLAB" render --scene "$boxes" --width 160 --height 90 --preset shot-a.png --compare shot-a.png \
+  --measure --out aa.png
+b_ab=$(grep '^B: shot-b.png: acne' compare-ab.out); b_bb=$(grep '^B: shot-b.png: acne' compare-bb.out)
+a_aa=$(grep '^B: shot-a.png: acne' compare-aa.out)
+[ -n "$b_ab" ] && [ "$b_ab" = "$b_bb" ] && pass "compare: B at its own time ($b_ab)" \
+  || fail "compare: B beside A reads '$b_ab', B beside itself '$b_bb'"
+[ "${b_ab#B: shot-b.png: }" != "${a_aa#B: shot-a.png: }" ] && pass "compare: the two times read differently" \
+  || fail "compare: A's time and B's read the same ('$a_aa'): the check cannot tell them apart"
+grep -q 'note: B: .*playing Move at 1.5 s' compare-ab.err && pass "compare: B's pose is said" \
+  || fail "compare: no note of B's pose: $(cat compare-ab.err)"
+
 expect_ok motion "$SHADOWLAB" measure "${small[@]}" --animation Move --motion animation --frames 3 --step 0.5 \
   --json motion.json
 grep -q "animation moved 0.5 seconds per frame, 3 frames, 2 pairs" motion.out && pass "measure --motion animation" \
