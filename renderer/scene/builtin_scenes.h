@@ -1,6 +1,7 @@
 #pragma once
 // Procedural scenes: no files needed. Y up, CCW outward winding, flat normals on planar faces (spheres carry their
-// analytic, smooth normals), one Mesh per object, identity instance transforms (vertices are in world space).
+// analytic, smooth normals), one Mesh per object, identity instance transforms (vertices are in world space) except
+// the moving cars of "city-traffic", which their animation's nodes place.
 // The constants below are the exact dimensions, so tests can compute by hand where shadows fall.
 #include "scene/scene.h"
 
@@ -8,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <cmath>
+#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -193,6 +195,34 @@ inline constexpr float kCityBollardWidth = 0.2f;
 inline constexpr float kCityBollardHeight = 0.9f;
 // The sun (Scene::lights[0], directional): about 33 degrees above the horizon, behind the eye, shining down the street.
 inline constexpr glm::vec3 kCitySunDir{-0.25f, -0.55f, -0.8f};  // travels toward -z (not normalized)
+
+// "city-traffic": the same city (one generator) and kCityCars cars driving loops around blocks, played by one node
+// animation "traffic" (the data a glTF file's animation gives: nodes "car-N" with a LINEAR translation channel and a
+// STEP rotation channel each), every loop kCityTrafficSeconds long. Car N drives around the rectangle of street
+// centre lines kCityCarLoops[N] (x0 < x1, z0 < z1), kCityLaneInset inside it (its inner lane, so no two loops share
+// a lane), counter-clockwise seen from above when `ccw`, starting at `phase` (a share of the loop) at t = 0. The loops'
+// rectangles do not overlap, so no two cars meet. Cars A and B drive on the street x = 0 in front of the eye.
+struct CityCarLoop {
+    float x0, x1, z0, z1;
+    float phase;
+    bool ccw;
+};
+inline constexpr CityCarLoop kCityCarLoops[] = {
+    {0.0f, 100.0f, 200.0f, 400.0f, 0.69f, false},     // A: away from the eye down x = 3.5, 60 m ahead
+    {-100.0f, 0.0f, 0.0f, 300.0f, 0.45f, false},      // B: toward the eye up x = -3.5
+    {0.0f, 200.0f, -300.0f, 100.0f, 0.1f, true},      // C
+    {-300.0f, -100.0f, 100.0f, 400.0f, 0.6f, true},   // D
+    {100.0f, 300.0f, 100.0f, 400.0f, 0.35f, false},   // E
+    {-200.0f, 0.0f, -400.0f, -100.0f, 0.8f, true},    // F
+};
+inline constexpr int kCityCars = int(std::size(kCityCarLoops));
+inline constexpr float kCityLaneInset = 3.5f;
+inline constexpr float kCityTrafficSeconds = 60.0f;
+// A car in its node's space: length along +z (its heading), standing on y = 0: a body clear of the road by
+// kCityCarClearance (light passes under it) and a cabin on top.
+inline constexpr glm::vec3 kCityCarBody{1.8f, 1.0f, 4.2f};  // x, y, z size
+inline constexpr float kCityCarClearance = 0.25f;
+inline constexpr glm::vec3 kCityCarCabin{1.6f, 0.6f, 2.2f};
 
 }  // namespace builtin
 }  // namespace shadowlab
