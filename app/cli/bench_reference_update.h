@@ -5,7 +5,8 @@
 //    set, the top level re-committed, no mesh BVH built),
 //  - an update after the whole step (every instance the animation moves),
 //  - a full build at the new pose (what a reference without the update path does: every mesh BVH and the top level),
-// each alternating between the two poses so every update really moves something. Needs a scene with an animation
+// each alternating between the two poses so every update really moves something; the median and the fastest of
+// each (on a shared machine the fastest shows the cost without waits for a core). Needs a scene with an animation
 // (builtin:city-traffic).
 #include "cli/bench_command.h"
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 #include <utility>
 
@@ -426,7 +427,24 @@ Scene city() {
     return scene;
 }
 
-// One car's loop (builtin_scenes.h: kCityCarLoops) as node animation keys: a LINEAR translation through the phase
+// A car's loop: the rectangle of street centre lines x0 < x1, z0 < z1 it drives around on its inner lane,
+// counter-clockwise seen from above when `ccw`, starting at `phase` (a share of the loop) at t = 0.
+struct CityCarLoop {
+    float x0, x1, z0, z1;
+    float phase;
+    bool ccw;
+};
+constexpr CityCarLoop kCityCarLoops[] = {
+    {0.0f, 100.0f, 200.0f, 400.0f, 0.69f, false},    // away from the eye on x = 3.5, 60 m ahead
+    {-100.0f, 0.0f, 300.0f, 400.0f, 0.40f, false},   // toward the eye on x = -3.5, 80 m ahead
+    {0.0f, 200.0f, -300.0f, 100.0f, 0.1f, true},
+    {-300.0f, -100.0f, 100.0f, 400.0f, 0.6f, true},
+    {100.0f, 300.0f, 100.0f, 400.0f, 0.35f, false},
+    {-100.0f, 100.0f, 400.0f, 500.0f, 0.155f, false},  // across the street 36 m ahead, its shadow in the sun
+};
+static_assert(std::size(kCityCarLoops) == std::size_t(kCityCars));
+
+// One car's loop as node animation keys: a LINEAR translation through the phase
 // point and the four corners of its inner lane, back to the phase point at kCityTrafficSeconds, and a STEP rotation
 // to the heading of the side each key starts.
 void addCarChannels(Animation& traffic, int node, const CityCarLoop& loop) {
@@ -520,8 +538,8 @@ constexpr Entry kScenes[] = {
     {"courtyard", "buildings and thin posts lit by a sun, two spot lights and a point-light lantern", courtyard},
     {"city", "2 km of box buildings on a street grid seen from eye height in a street, a low sun; lamp posts, "
              "benches and bollards thinner than a scene-fitted map's texel", city},
-    {"city-traffic", "builtin:city with 6 cars driving loops around blocks (animation \"traffic\", 60 s), two of "
-                     "them in the street in front of the eye", cityTraffic},
+    {"city-traffic", "builtin:city with 6 cars driving loops around blocks (animation \"traffic\", 60 s), "
+                     "three of them in the street in front of the eye", cityTraffic},
 };
 
 const Entry* find(const std::string& name) {

@@ -9,7 +9,6 @@
 #include <glm/vec3.hpp>
 
 #include <cmath>
-#include <iterator>
 #include <optional>
 #include <string>
 #include <vector>
@@ -198,24 +197,10 @@ inline constexpr glm::vec3 kCitySunDir{-0.25f, -0.55f, -0.8f};  // travels towar
 
 // "city-traffic": the same city (one generator) and kCityCars cars driving loops around blocks, played by one node
 // animation "traffic" (the data a glTF file's animation gives: nodes "car-N" with a LINEAR translation channel and a
-// STEP rotation channel each), every loop kCityTrafficSeconds long. Car N drives around the rectangle of street
-// centre lines kCityCarLoops[N] (x0 < x1, z0 < z1), kCityLaneInset inside it (its inner lane, so no two loops share
-// a lane), counter-clockwise seen from above when `ccw`, starting at `phase` (a share of the loop) at t = 0. The loops'
-// rectangles do not overlap, so no two cars meet. Cars A and B drive on the street x = 0 in front of the eye.
-struct CityCarLoop {
-    float x0, x1, z0, z1;
-    float phase;
-    bool ccw;
-};
-inline constexpr CityCarLoop kCityCarLoops[] = {
-    {0.0f, 100.0f, 200.0f, 400.0f, 0.69f, false},     // A: away from the eye down x = 3.5, 60 m ahead
-    {-100.0f, 0.0f, 0.0f, 300.0f, 0.45f, false},      // B: toward the eye up x = -3.5
-    {0.0f, 200.0f, -300.0f, 100.0f, 0.1f, true},      // C
-    {-300.0f, -100.0f, 100.0f, 400.0f, 0.6f, true},   // D
-    {100.0f, 300.0f, 100.0f, 400.0f, 0.35f, false},   // E
-    {-200.0f, 0.0f, -400.0f, -100.0f, 0.8f, true},    // F
-};
-inline constexpr int kCityCars = int(std::size(kCityCarLoops));
+// STEP rotation channel each), every loop kCityTrafficSeconds long. Each car drives around a rectangle of street
+// centre lines (builtin_scenes.cpp: kCityCarLoops), kCityLaneInset inside it (its inner lane, so no two loops share
+// a lane); the rectangles do not overlap, so no two cars meet. Three cars are in the street x = 0 ahead of the eye.
+inline constexpr int kCityCars = 6;
 inline constexpr float kCityLaneInset = 3.5f;
 inline constexpr float kCityTrafficSeconds = 60.0f;
 // A car in its node's space: length along +z (its heading), standing on y = 0: a body clear of the road by

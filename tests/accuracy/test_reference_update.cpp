@@ -16,25 +16,31 @@
 namespace shadowlab::test {
 namespace {
 
-// A top-down grid of sample points on the plane y = `height` over [x0, x1] x [z0, z1] (world), normal +y, relative
-// to `origin`: the "pixels" traceVisibility classifies.
-SurfaceSamples grid(const glm::dvec3& origin, double x0, double x1, double z0, double z1, double height,
-                    double step) {
+// A grid of sample points `step` apart on a plane, relative to `origin`: the "pixels" traceVisibility classifies.
+// Columns run along `u` from `corner`, rows along `v`; every normal is `normal`.
+SurfaceSamples grid(const glm::dvec3& origin, const glm::dvec3& corner, const glm::dvec3& u, int columns,
+                    const glm::dvec3& v, int rows, const glm::dvec3& normal) {
     SurfaceSamples s;
-    s.width = int((x1 - x0) / step);
-    s.height = int((z1 - z0) / step);
+    s.width = columns;
+    s.height = rows;
     const std::size_t n = std::size_t(s.width) * std::size_t(s.height);
     s.draw.assign(n, 0);
     s.instance.assign(n, 0);
     s.triangle.assign(n, 0);
-    s.normal.assign(n, glm::dvec3(0.0, 1.0, 0.0));
+    s.normal.assign(n, normal);
     s.finite.assign(n, 1);
     s.point.resize(n);
     for (int y = 0; y < s.height; ++y)
         for (int x = 0; x < s.width; ++x)
             s.point[std::size_t(y) * std::size_t(s.width) + std::size_t(x)] =
-                glm::dvec3(x0 + (x + 0.5) * step, height, z0 + (y + 0.5) * step) - origin;
+                corner + (x + 0.5) * u + (y + 0.5) * v - origin;
     return s;
+}
+
+// The ground y = 0 over [x0, x1] x [z0, z1], a sample every `step`, seen from above.
+SurfaceSamples ground(const glm::dvec3& origin, double x0, double x1, double z0, double z1, double step) {
+    return grid(origin, {x0, 0.0, z0}, {step, 0.0, 0.0}, int((x1 - x0) / step), {0.0, 0.0, step},
+                int((z1 - z0) / step), {0.0, 1.0, 0.0});
 }
 
 std::size_t differing(const VisibilityResult& a, const VisibilityResult& b) {
@@ -68,8 +74,8 @@ TEST(ReferenceUpdate, OneCarMovedThroughTheUpdatePathEqualsAFreshBuildWithoutBui
     ReferenceLight sun;
     sun.direction = glm::normalize(glm::dvec3(builtin::kCitySunDir));
     const double radius = double(scene.bounds.radius());
-    // The road of the street x = 0 where car A drives (z 200..400) at a quarter metre a sample.
-    const SurfaceSamples road = grid(origin, -10.0, 10.0, 200.0, 400.0, 0.0, 0.25);
+    // The road where car 5 crosses the street x = 0 in the sun, 36 m ahead of the eye, a sample every quarter metre.
+    const SurfaceSamples road = ground(origin, -20.0, 20.0, 390.0, 420.0, 0.25);
 
     EmbreeScene bvh(scene, origin);
     const std::size_t meshBuilds = bvh.meshBuilds(), topCommits = bvh.topCommits();
@@ -77,10 +83,10 @@ TEST(ReferenceUpdate, OneCarMovedThroughTheUpdatePathEqualsAFreshBuildWithoutBui
     EXPECT_EQ(topCommits, 1u);
     const VisibilityResult before = traceVisibility(bvh, road, sun, radius, nullptr);
 
-    // One animation step of car A alone: its instance moves to its pose half a second later.
+    // One animation step of car 5 alone: its instance moves to its pose half a second later.
     Scene later = scene;
     poseScene(later, {0}, 0.5);
-    const std::size_t car = carInstance(scene, 0);
+    const std::size_t car = carInstance(scene, 5);
     scene.instances[car].transform = later.instances[car].transform;
     ASSERT_TRUE(bvh.sameGeometry(scene));
     EXPECT_EQ(bvh.updateTransforms(scene, origin), 1u);
@@ -94,7 +100,7 @@ TEST(ReferenceUpdate, OneCarMovedThroughTheUpdatePathEqualsAFreshBuildWithoutBui
     // The step matters: the car's shadow moved over hundreds of samples (a stale BVH would be wrong there).
     EXPECT_GT(differing(before, rebuilt), 200u);
     EXPECT_GT(shadowed(rebuilt), 1000u);
-    std::printf("car A moved 0.5 s: %zu of %zu road samples changed V; update %.3f ms, rebuild %.1f ms (%zu mesh BVHs)\n",
+    std::printf("car 5 moved 0.5 s: %zu of %zu road samples changed V; update %.3f ms, rebuild %.1f ms (%zu mesh BVHs)\n",
                 differing(before, rebuilt), road.size(), bvh.updateMilliseconds(), fresh.buildMilliseconds(),
                 fresh.meshBvhs());
 
@@ -134,13 +140,13 @@ TEST(ReferenceUpdate, MovedAlphaMaskCastersEqualAFreshBuild) {
     ASSERT_TRUE(loaded.ok()) << loaded.error;
     Scene& scene = *loaded.scene;
     const glm::dvec3 origin = scene.bounds.centreOrOrigin();
+    // The test quads stand in the plane z = 0 in front of the bed's back panel (z < -0.47): samples on the plane
+    // z = -0.3 between them, lit by a light travelling -z, look through the quads' alpha.
     ReferenceLight down;
-    down.direction = glm::dvec3(0.0, -1.0, 0.0);
-    const Bounds& b = scene.bounds;
-    const double radius = double(b.radius());
-    // Under everything, looking up at the casters through their alpha.
+    down.direction = glm::dvec3(0.0, 0.0, -1.0);
+    const double radius = double(scene.bounds.radius());
     const SurfaceSamples below =
-        grid(origin, b.min.x, b.max.x, b.min.z, b.max.z, double(b.min.y) - 0.05, double(b.max.x - b.min.x) / 400.0);
+        grid(origin, {-4.3, 0.15, -0.3}, {0.01, 0.0, 0.0}, 860, {0.0, 0.01, 0.0}, 180, {0.0, 0.0, 1.0});
 
     EmbreeScene bvh(scene, origin);
     ASSERT_TRUE(bvh.hasAlphaMask());
@@ -170,8 +176,8 @@ TEST(ReferenceUpdate, MovedAlphaMaskCastersEqualAFreshBuild) {
         rules.ignoreAlpha = ignoreAlpha;
         for (std::size_t i = 0; i < below.size(); ++i) {
             const glm::vec3 p(below.point[i]);
-            const RayHit u = bvh.firstHit(p, {0.0f, 1.0f, 0.0f}, 1e30f, rules);
-            const RayHit f = fresh.firstHit(p, {0.0f, 1.0f, 0.0f}, 1e30f, rules);
+            const RayHit u = bvh.firstHit(p, {0.0f, 0.0f, 1.0f}, 1e30f, rules);
+            const RayHit f = fresh.firstHit(p, {0.0f, 0.0f, 1.0f}, 1e30f, rules);
             mismatches += u.hit != f.hit || u.t != f.t || u.geometry != f.geometry || u.alphaMask != f.alphaMask;
             if (!u.hit) continue;
             const EmbreeScene::GeometryInfo& g = bvh.geometry(u.geometry);
@@ -180,7 +186,7 @@ TEST(ReferenceUpdate, MovedAlphaMaskCastersEqualAFreshBuild) {
             EXPECT_EQ(scene.instances[g.instance].mesh, int(g.mesh));
             if (ignoreAlpha && u.alphaMask) {
                 ++maskHits;
-                seenThrough += !bvh.occluded(p, {0.0f, 1.0f, 0.0f}, 1e30f);
+                seenThrough += !bvh.occluded(p, {0.0f, 0.0f, 1.0f}, 1e30f);
             }
         }
     }
@@ -209,7 +215,7 @@ TEST(ReferenceUpdate, AMeshFarFromItsOwnOriginKeepsFloatPrecision) {
     const glm::dvec3 origin = near.bounds.centreOrOrigin();
     ReferenceLight light;
     light.direction = glm::normalize(glm::dvec3(-0.4, -1.0, -0.3));
-    const SurfaceSamples floor = grid(origin, -6.0, 6.0, -6.0, 6.0, 0.0, 0.01);
+    const SurfaceSamples floor = ground(origin, -6.0, 6.0, -6.0, 6.0, 0.01);
     const VisibilityResult a = traceVisibility(EmbreeScene(near, origin), floor, light, 10.0, nullptr);
     const VisibilityResult b = traceVisibility(EmbreeScene(far, origin), floor, light, 10.0, nullptr);
     EXPECT_GT(shadowed(a), 10000u);
