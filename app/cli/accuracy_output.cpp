@@ -106,6 +106,9 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
     out << "reference cost:\n";
     if (c.bvhReused)
         out << "  BVH            reused (" << c.triangles << " triangles)\n";
+    else if (c.bvhUpdated)
+        out << "  BVH update     " << std::setprecision(3) << c.bvhUpdateMs << std::setprecision(1) << " ms ("
+            << c.instancesMoved << " instances moved; the mesh BVHs kept, the top level re-committed)\n";
     else
         out << "  BVH build      " << c.bvhBuildMs << " ms (" << c.triangles << " triangles, Embree)\n";
     if (c.referenceReused) {
@@ -160,6 +163,7 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"boundaryPixels", c.boundaryPixels}, {"coverageMismatch", c.coverageMismatch}}},
         {"reference",
          {{"bvhReused", k.bvhReused}, {"referenceReused", k.referenceReused}, {"bvhBuildMs", k.bvhBuildMs},
+          {"bvhUpdated", k.bvhUpdated}, {"bvhUpdateMs", k.bvhUpdateMs}, {"instancesMoved", k.instancesMoved},
           {"triangles", k.triangles}, {"gbufferMs", k.gbufferMs}, {"traceMs", k.traceMs}, {"rays", k.rays},
           {"raysPerSecond", k.raysPerSecond}, {"threads", k.threads}, {"boundaryMs", k.boundaryMs},
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},

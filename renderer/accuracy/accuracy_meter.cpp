@@ -199,10 +199,11 @@ struct AccuracyMeter::Impl {
     std::unique_ptr<GpuAccuracyCounter> counter;
     bool counterCurrent = false;
 
-    void dropScene() {
+    // Forgets everything traced from the scene; keeps the BVH when `keepBvh` (its instances are about to move).
+    void dropScene(bool keepBvh = false) {
         scene = nullptr;
         gpuScene.reset();
-        bvh.reset();
+        if (!keepBvh) bvh.reset();
         surfaceKey.reset();
         visibilityLight.reset();
         boundaryKey.reset();
@@ -299,11 +300,23 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.cost.toolFrameMs = msSince(t);
     if (cancelled(progress)) return stop();
 
-    // The BVH, once per scene geometry and set of casters.
+    // The BVH, once per scene geometry and set of casters; when only instance transforms changed (an animation
+    // step), its top level follows them and the mesh BVHs stay. Everything traced from it is traced again.
     const std::vector<char> casting = castingInstances(scene, settings.casters);
     const std::size_t fingerprint = referenceFingerprint(scene, casting);
     report.cost.bvhReused = m.scene == &scene && m.fingerprint == fingerprint && m.bvh;
-    if (!report.cost.bvhReused) {
+    report.cost.bvhUpdated =
+        !report.cost.bvhReused && m.scene == &scene && m.bvh && m.bvh->sameGeometry(scene, casting);
+    if (report.cost.bvhUpdated) {
+        setStage(progress, 0.1f, "moving the BVH's instances");
+        m.dropScene(true);
+        m.origin = stats.renderOrigin;
+        report.cost.instancesMoved = m.bvh->updateTransforms(scene, m.origin);
+        m.gpuScene = std::make_unique<GpuScene>(scene, m.origin);  // the G-buffer's draws carry the transforms
+        m.scene = &scene;
+        m.fingerprint = fingerprint;
+        report.cost.bvhUpdateMs = m.bvh->updateMilliseconds();
+    } else if (!report.cost.bvhReused) {
         setStage(progress, 0.1f, "building the BVH");
         m.dropScene();
         m.origin = stats.renderOrigin;

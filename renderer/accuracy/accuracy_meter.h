@@ -79,8 +79,11 @@ enum class PixelMark : std::uint8_t { None, Acne, AcneNearEdge, Leak, LeakNearEd
 // What the reference and the measurement cost (milliseconds unless named otherwise).
 struct AccuracyCost {
     bool bvhReused = false;        // the scene's BVH came from the cache
+    bool bvhUpdated = false;       // only instance transforms changed: the cached BVH's top level followed them
     bool referenceReused = false;  // G-buffer, visibility and boundary distances came from the cache
     double bvhBuildMs = 0.0;
+    double bvhUpdateMs = 0.0;      // bvhUpdated: moving the instances and re-committing the top level
+    std::size_t instancesMoved = 0;  // bvhUpdated: instances whose transform changed
     std::size_t triangles = 0;     // in the BVH
     double gbufferMs = 0.0;        // G-buffer pass + read-back + double-precision surface rebuild
     double traceMs = 0.0;          // shadow rays

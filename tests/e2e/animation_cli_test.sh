@@ -2,7 +2,8 @@
 # Animated scenes on the command line (tests/data/scenes/animated_boxes.gltf): render --time at two times casts
 # different shadows while the same time twice, or --animation none, draws the same; --animation and --time reach
 # the keys; an unknown animation is refused naming the key and listing the file's; a hostile animation is skipped
-# with a warning naming the file, the animation and the channel; measure --motion animation plays it.
+# with a warning naming the file, the animation and the channel; measure --motion animation plays it; on
+# builtin:city-traffic the reference follows each step by an update; bench --reference-update times it.
 set -u
 mkdir -p "$OUT_DIR" && cd "$OUT_DIR" || exit 1
 source "$SOURCE_DIR/tests/e2e/e2e_lib.sh"
@@ -77,4 +78,36 @@ python3 -c "import json,sys; j=json.load(open('motion.json')); sys.exit(0 if j['
   && pass "the moving box changes the true shadow" || fail "no V change along the animation: $(head -c 600 motion.json)"
 expect_error motion-static "has no animation to play" "$SHADOWLAB" measure --scene builtin:textbook --width 64 \
   --height 36 --motion animation --step 0.1
+
+# builtin:city-traffic: its cars' shadows move along the animation, and the reference follows each step with an
+# update of its top level (no rebuild) after the first frame.
+expect_ok traffic "$SHADOWLAB" measure --scene builtin:city-traffic --set useSceneLights=true --motion animation \
+  --frames 3 --step 0.2 --width 320 --height 180 --json traffic.json
+python3 - <<'PY' && pass "city-traffic: the cars change the true shadow; the reference is updated, not rebuilt" \
+  || fail "city-traffic motion (above)"
+import json, sys
+j = json.load(open("traffic.json"))
+frames = j["perFrame"]
+problems = []
+if not j["vChangedPercent"]["max"] > 0: problems.append("no V change: %s" % j["vChangedPercent"])
+if frames[0]["reference"]["bvhUpdated"]: problems.append("frame 0 updated a BVH it did not have")
+for f in frames[1:]:
+    c = f["reference"]
+    if not (c["bvhUpdated"] and c["bvhBuildMs"] == 0 and c["instancesMoved"] == 6):
+        problems.append("frame not updated: %s" % c)
+print("\n".join(problems))
+sys.exit(1 if problems else 0)
+PY
+expect_ok reference-update "$SHADOWLAB" bench --reference-update --scene builtin:city-traffic --frames 4 \
+  --json reference-update.json
+python3 - <<'PY' && pass "bench --reference-update: one move, a whole step and a rebuild timed" \
+  || fail "bench --reference-update JSON (above)"
+import json, sys
+j = json.load(open("reference-update.json"))
+ok = j["instancesMovedByStep"] == 6 and j["meshBvhs"] > 2000 and all(j[k] > 0 for k in ("updateOneMs", "updateStepMs", "rebuildMs"))
+print(j)
+sys.exit(0 if ok else 1)
+PY
+expect_error reference-update-static "builtin:city-traffic has one" "$SHADOWLAB" bench --reference-update \
+  --scene builtin:textbook
 finish

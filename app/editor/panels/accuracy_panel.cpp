@@ -164,7 +164,10 @@ void costTab(const AccuracyState& a, const AccuracyReport& r) {
     }
     if (!r.live && ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
         row("total", format("%.1f ms", k.totalMs) + format(" (job %.2f s)", a.reportSeconds));
-        row("BVH", k.bvhReused ? "reused" : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
+        row("BVH", k.bvhReused    ? "reused"
+                   : k.bvhUpdated ? format("updated in %.2f ms", k.bvhUpdateMs) + " (" +
+                                        grouped(k.instancesMoved) + " instances moved)"
+                                  : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
         row("rays", k.referenceReused ? "reused (" + grouped(k.rays) + ")"
                                       : grouped(k.rays) + format(" in %.1f ms", k.traceMs));
         row("rays/s", k.referenceReused ? "-" : format("%.2f M", k.raysPerSecond * 1e-6) +
