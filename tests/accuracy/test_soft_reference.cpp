@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
+#include <filesystem>
 #include <vector>
 
 namespace shadowlab {
@@ -78,9 +78,10 @@ std::vector<PixelClass> hardVerdicts(const EmbreeScene& bvh, const SurfaceSample
     return traceVisibility(bvh, samples, light, kSceneRadius, nullptr).classes;
 }
 
-// The 0.1..0.9 width of V along one row of floor samples across the edge, as the soft metrics measure it.
+// The 0.1..0.9 width of V along one row of floor samples `step` apart, centred on the edge (x = 0), as the soft
+// metrics measure it (a profile reaches kProfileSteps samples each side).
 double penumbraWidth(const EmbreeScene& bvh, const ReferenceLight& light, const SoftLight& disc, double step) {
-    const SurfaceSamples samples = floorSamples(801, 1, {-0.8, 0.0}, step);
+    const SurfaceSamples samples = floorSamples(2 * kProfileSteps + 1, 1, {-kProfileSteps * step, 0.0}, step);
     const std::vector<PixelClass> classes = hardVerdicts(bvh, samples, light);
     const SoftVisibilityResult v = traceSoftVisibility(bvh, samples, classes, light, disc, kSceneRadius, nullptr);
     SoftMetricsInput input;
@@ -102,7 +103,6 @@ TEST(SoftReference, PenumbraWidensLinearlyWithTheLightSizeAsTheAnalyticWidth) {
     const EmbreeScene bvh(scene, glm::dvec3(0.0));
     const double share = discTenNinetyShare();
     ASSERT_NEAR(share, 0.687, 0.01);
-    constexpr double step = 0.002;  // world units between samples
 
     // Directional, straight down: w = gap x 2 tan(diameter / 2).
     ReferenceLight sun;
@@ -115,8 +115,9 @@ TEST(SoftReference, PenumbraWidensLinearlyWithTheLightSizeAsTheAnalyticWidth) {
         const SoftLight disc = softLight(settings, 1024);
         const double w = analyticPenumbraWidth(sun, disc, kGap, 0.0);
         EXPECT_NEAR(w, kGap * 2.0 * std::tan(degrees * kPi / 360.0), 1e-12);
+        const double step = share * w / 40.0;  // the transition over 40 samples
         const double measured = penumbraWidth(bvh, sun, disc, step);
-        EXPECT_NEAR(measured, share * w, 0.04 * share * w + step) << "analytic full width " << w;
+        EXPECT_NEAR(measured, share * w, 0.01 * share * w) << "analytic full width " << w;
         widths.push_back(measured);
     }
     // Linear in the size: 8 degrees casts (about) 8 times the 1-degree penumbra.
@@ -134,8 +135,9 @@ TEST(SoftReference, PenumbraWidensLinearlyWithTheLightSizeAsTheAnalyticWidth) {
         const SoftLight disc = softLight(settings, 1024);
         const double w = analyticPenumbraWidth(lamp, disc, kGap, 6.0 - kGap);
         EXPECT_NEAR(w, kGap * 2.0 * radius / (6.0 - kGap), 1e-9);
+        const double step = share * w / 40.0;
         const double measured = penumbraWidth(bvh, lamp, disc, step);
-        EXPECT_NEAR(measured, share * w, 0.05 * share * w + step) << "analytic full width " << w;
+        EXPECT_NEAR(measured, share * w, 0.01 * share * w) << "analytic full width " << w;
     }
 }
 
@@ -172,7 +174,7 @@ TEST(SoftReference, SizeZeroIsTheHardReferenceExactly) {
 TEST(SoftReference, SameResultOnAnyThreadCountAndEveryRun) {
     const Scene scene = boxOverPlane();
     const EmbreeScene bvh(scene, glm::dvec3(0.0));
-    const SurfaceSamples samples = floorSamples(160, 120, {-2.0, -1.5}, 0.025);
+    const SurfaceSamples samples = floorSamples(160, 120, {-2.0, 2.5}, 0.025);  // around the box's corner (0, 4)
     ReferenceLight light;
     light.direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1));
     LightSettings settings;
@@ -191,12 +193,13 @@ TEST(SoftReference, SameResultOnAnyThreadCountAndEveryRun) {
     for (float v : one.visibility) penumbra += v > 0.0f && v < 1.0f;
     EXPECT_GT(penumbra, 500u) << "a 6-degree sun 2 above the floor casts a wide penumbra";
 
-    // To look at: SHADOWLAB_SOFT_PNG=path writes V as a grey image (white = lit), row 0 = the lowest z.
-    if (const char* path = std::getenv("SHADOWLAB_SOFT_PNG")) {
-        std::vector<std::uint8_t> grey;
-        for (float v : one.visibility) grey.push_back(std::uint8_t(std::lround(v * 255.0f)));
-        EXPECT_EQ(writePng(path, samples.width, samples.height, 1, grey.data(), false), "");
-    }
+    // To look at: V as a grey image (white = lit), row 0 = the lowest z; the box's corner casts a soft corner.
+    std::vector<std::uint8_t> grey;
+    for (float v : one.visibility) grey.push_back(std::uint8_t(std::lround(v * 255.0f)));
+    std::filesystem::create_directories(SHADOWLAB_TEST_OUTPUT);
+    EXPECT_EQ(writePng(std::string(SHADOWLAB_TEST_OUTPUT) + "/soft-visibility-box.png", samples.width, samples.height,
+                       1, grey.data(), false),
+              "");
 }
 
 // Every sample of N lies in the unit disc, and each stratum holds one: the sample mean is the disc's centre.
