@@ -82,6 +82,7 @@ double crossing(const Profile& p, const std::vector<double>& f, std::size_t a, s
 }
 
 // Step 4: F's 0.1..0.9 width on the profile, or nothing when F does not make the whole transition there.
+// A width is resolved down to the pixels' footprint only: a hard step between two samples reads 0.8 x their distance.
 std::optional<double> transitionWidth(const Profile& p, const std::vector<double>& f) {
     // The rising 0.5 crossing nearest the centre.
     std::optional<std::size_t> rise;

@@ -22,8 +22,6 @@
 //      the edge pixel's shadow-map texel size. A profile where either field has no such crossings is not counted.
 //   5. Reported: the medians over the counted profiles of the reference's width, the technique's, and of the
 //      per-profile difference technique - reference (the penumbra width error), in world units and texels.
-//   A width is resolved down to the pixels' footprint only: a hard step between two samples reads 0.8 x their
-//   distance.
 #include <glm/ext/vector_double3.hpp>
 
 #include <cstddef>
