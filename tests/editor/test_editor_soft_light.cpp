@@ -28,6 +28,8 @@ TEST(EditorSoftLight, TheLightsSizeAndTheRayCountGiveSoftNumbers) {
     h.frame(2);
     ASSERT_TRUE(a.report.has_value()) << a.error;
     ASSERT_TRUE(a.report->ok) << a.report->error;
+    ASSERT_TRUE(a.reportKey.has_value());
+    EXPECT_EQ(a.reportKey->settings.reference.softRays, 64) << "now " << s.reference.softRays;
     const SoftAccuracy& soft = a.report->soft;
     ASSERT_TRUE(soft.measured);
     EXPECT_EQ(soft.light, 0u);

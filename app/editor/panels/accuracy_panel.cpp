@@ -399,7 +399,7 @@ void drawAccuracyPanel(PanelContext& ctx) {
     // The soft reference's rays per pixel (reference.softRays): read only for a light of size > 0.
     int softRays = state.settings.reference.softRays;
     ImGui::SetNextItemWidth(110.0f);
-    if (ImGui::InputInt("soft rays", &softRays, 64, 256, ImGuiInputTextFlags_EnterReturnsTrue))
+    if (ImGui::InputInt("soft rays", &softRays, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue))
         state.edit("reference.softRays", softRays);
     state.controls.recordLastItem(controlName("reference.softRays"));
     fieldHelp(state, "reference.softRays");
