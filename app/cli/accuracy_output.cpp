@@ -1,6 +1,7 @@
 #include "cli/accuracy_output.h"
 
 #include "accuracy/cause_shares.h"
+#include "cli/soft_accuracy_output.h"
 #include "settings/settings_fields.h"
 
 #include <cstdio>
@@ -50,7 +51,8 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
     out << std::fixed << std::setprecision(3);
     out << "accuracy, metrics version " << r.metricsVersion << " (" << r.width << "x" << r.height << ", k = "
         << std::setprecision(1) << r.kTexels << " texels = filter radius + 1 = " << std::setprecision(3)
-        << r.kTexels * r.texelWorldSize << " world units; e = 1/255):\n";
+        << r.kTexels * r.texelWorldSize << " world units; e = 1/255"
+        << (r.soft.measured ? "; V = the hard reference, one ray to the light's centre" : "") << "):\n";
     out << "  acne         " << std::setw(8) << r.acnePercent << " %   (" << c.acne << " of " << c.lit
         << " truly lit pixels visibly darkened, S < 1-e, farther than k from a true edge; severity: mean 1-S = "
         << r.acneSeverity << ")\n";
@@ -85,6 +87,7 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
         << c.nonFinite << ", coverage mismatch " << c.coverageMismatch << ", true boundary " << c.boundaryPixels
         << "\n";
     out.unsetf(std::ios::floatfield);
+    printSoftAccuracy(out, r.soft);
 }
 
 std::string legendText(OverlayKind kind) { return legendText(kind == OverlayKind::Error ? errorLegend() : causeLegend()); }
@@ -172,6 +175,7 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
     json["texelDensity"] = {{"pixels", r.texelDensity.pixels}, {"p5", r.texelDensity.p5},
                             {"median", r.texelDensity.median}, {"p95", r.texelDensity.p95}};
     if (!r.cascades.cascades.empty()) json["cascaded"] = cascadesToJson(r.cascades);
+    if (r.soft.measured) json["soft"] = softAccuracyToJson(r.soft);
     return json;
 }
 

@@ -6,6 +6,7 @@
 // Knows no window, UI or CLI. Needs a current GL 4.5 context on the calling thread (one meter per context).
 #include "accuracy/cascade_accuracy.h"
 #include "accuracy/mismatch_cause.h"
+#include "accuracy/soft_metrics.h"
 #include "frame/camera.h"
 #include "scene/scene.h"
 #include "settings/settings.h"
@@ -157,6 +158,12 @@ struct AccuracyReport : AccuracyNumbers {
     TexelDensity texelDensity;
     // A cascaded light: its numbers per cascade and at the seams (cascade_accuracy.h); empty cascades otherwise.
     CascadeAccuracy cascades;
+
+    // A light of size > 0: its soft numbers (version 3, against the soft reference; soft_metrics.h) beside the hard
+    // ones above (version 2, against the ray through the light's centre). soft.measured is false for a hard light
+    // and for a live remeasure (the GPU counter counts the hard numbers only).
+    SoftAccuracy soft;
+    std::vector<float> pixelSoftVisibility;  // the soft V per pixel, row 0 = TOP (empty for a hard light)
 
     // Shadow views the tool frame's planner rendered (0: every map was reused; flicker.h checks it under camera motion).
     std::size_t shadowViewsRendered = 0;

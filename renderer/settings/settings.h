@@ -84,6 +84,9 @@ struct LightSettings {
     glm::vec3 color{1.0f, 1.0f, 1.0f};
     bool enabled = true;       // off: the light neither shines nor casts
     bool castsShadows = true;  // off: it shines everywhere, no shadow view is rendered for it
+    // Its size, for the soft reference (reference/soft_visibility.h): directional = angular diameter in degrees,
+    // spot / point = radius of a disc in world units. 0 = a hard light (glTF has no size, so only a preset sets it).
+    float size = 0.0f;
     ShadowMapSettings shadow;
     ProjectionSettings projection;
 
@@ -97,6 +100,9 @@ struct LightSettings {
 
 // Enough for every sample we compare with (bgfx: 16 maps); the shader's light loop is specialised to the count used.
 inline constexpr std::size_t kMaxLights = 32;
+
+// The widest angular diameter a directional light's size may have (its cone's half angle is then 45 degrees).
+inline constexpr float kMaxAngularDiameterDeg = 90.0f;
 
 struct SamplerSettings {
     AddressMode addressMode = AddressMode::ClampToBorder;
@@ -141,6 +147,13 @@ struct AnimationSettings {
     bool operator==(const AnimationSettings&) const = default;
 };
 
+// The accuracy reference: how many rays the soft reference traces per pixel toward a light of size > 0.
+struct ReferenceSettings {
+    int softRays = 256;
+
+    bool operator==(const ReferenceSettings&) const = default;
+};
+
 struct Settings {
     std::vector<LightSettings> lights = std::vector<LightSettings>(1);  // one default light
     float ambient = 0.15f;        // ambient term, unaffected by shadows
@@ -150,6 +163,7 @@ struct Settings {
     CameraSettings camera;
     CasterSettings casters;
     AnimationSettings animation;
+    ReferenceSettings reference;
     ViewMode view = ViewMode::Lit;
 
     // Every problem as "key: what is wrong (allowed range)"; empty when the settings can be rendered.

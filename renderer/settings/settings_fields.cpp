@@ -366,6 +366,13 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
     f.push_back(tagged(boolField(keyOf("castsShadows"), "The light has shadow views (off: it lights everything)",
                                  at([](auto& l) -> auto& { return l.castsShadows; })),
                        kView | kVariant));
+    // Its size: only the soft reference reads it (a hard technique ignores it), so no view or variant is stale.
+    f.push_back(inUnit(floatField(keyOf("size"),
+                                  "Light size for the soft reference: a directional light's angular diameter "
+                                  "(degrees, at most 90), a spot or point light's radius (world units); 0 = a hard "
+                                  "light. glTF has no size: a preset sets it",
+                                  0, 1e6, at([](auto& l) -> auto& { return l.size; })),
+                       "degrees (directional) or world units (spot, point)"));
 
     // its shadow map
     f.push_back(tagged(inUnit(intField(keyOf("shadow.resolution"),
@@ -588,6 +595,13 @@ std::vector<SettingsField> buildGlobalFields() {
                                          0, 1e6, [](auto& s) -> auto& { return s.animation.time; }),
                               "seconds"),
                        kView));
+
+    // the accuracy reference
+    f.push_back(inUnit(intField("reference.softRays",
+                                "Rays per pixel of the soft reference toward a light of size > 0 (stratified over the "
+                                "light's disc; more rays, smoother penumbrae, longer measures)",
+                                64, 1024, {}, [](auto& s) -> auto& { return s.reference.softRays; }),
+                       "rays per pixel"));
 
     f.push_back(tagged(enumField<ViewMode>(
                            "view",

@@ -59,7 +59,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 47u);  // every tunable of Settings: 16 global, 31 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 49u);  // every tunable of Settings: 17 global, 32 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -336,6 +336,18 @@ TEST(SettingsValidate, CrossFieldRules) {
     s.lights[0].projection.farPlane = 10.0f;
     EXPECT_EQ(s.validate().size(), 1u);
     s.lights[0].projection.farPlane = 10.5f;
+    EXPECT_TRUE(s.validate().empty());
+
+    // A light's size: a radius up to 1e6 for spot and point lights, an angle up to 90 degrees for a directional one.
+    s.lights[0].size = 120.0f;
+    problems = s.validate();
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0], "lights.0.size: 120 degrees is too wide for a directional light's angular diameter "
+                           "(allowed [0, 90] for a directional light; a spot or point light's radius up to 1e6)");
+    s.lights[0].type = LightType::Point;
+    EXPECT_TRUE(s.validate().empty()) << "a point light's radius of 120";
+    s.lights[0].type = LightType::Directional;
+    s.lights[0].size = 90.0f;
     EXPECT_TRUE(s.validate().empty());
 
     s.camera.position = s.camera.target = glm::vec3(1.0f);
