@@ -35,8 +35,9 @@ std::string viewChoiceLabel(const ViewChoice& choice, std::size_t light) {
 
 bool drawViewChoice(EditorState& state, ViewChoice& choice, std::size_t light, const std::string& id) {
     followLight(choice, light, viewNamesOf(state, light));
+    // A light with one view has nothing to choose: no control (the panel's lines stay whole at 1600x900).
+    if (choice.among.empty()) return false;
     bool changed = false;
-    ImGui::BeginDisabled(choice.among.empty());
     ImGui::SetNextItemWidth(-FLT_MIN);
     if (ImGui::BeginCombo(("##" + id).c_str(), viewChoiceLabel(choice, light).c_str())) {
         if (ImGui::Selectable("all views", choice.view.empty()) && !choice.view.empty()) {
@@ -53,12 +54,10 @@ bool drawViewChoice(EditorState& state, ViewChoice& choice, std::size_t light, c
         }
         ImGui::EndCombo();
     }
-    ImGui::EndDisabled();
     state.controls.recordLastItem(id);
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip(choice.among.empty() ? "This light has one shadow view: nothing to choose"
-                                               : "Which of the light's shadow views the numbers describe (as the "
-                                                 "CLI's --view): a cube face or a cascade, or all of them");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Which of the light's shadow views the numbers describe (as the CLI's --view): a cube face "
+                          "or a cascade, or all of them");
     return changed;
 }
 

@@ -494,7 +494,6 @@ void addCityTraffic(Scene& scene) {
     for (int n = 0; n < kCityCars; ++n) {
         MeshBuilder car("car", paint);
         car.box({0.0f, kCityCarClearance + 0.5f * kCityCarBody.y, 0.0f}, kCityCarBody);
-        car.box({0.0f, kCityCarClearance + kCityCarBody.y + 0.5f * kCityCarCabin.y, -0.2f}, kCityCarCabin);
         SceneNode node;
         node.name = node.path = "car-" + std::to_string(n);
         node.gltfIndex = n;

@@ -204,10 +204,10 @@ inline constexpr int kCityCars = 6;
 inline constexpr float kCityLaneInset = 3.5f;
 inline constexpr float kCityTrafficSeconds = 60.0f;
 // A car in its node's space: length along +z (its heading), standing on y = 0: a body clear of the road by
-// kCityCarClearance (light passes under it) and a cabin on top.
-inline constexpr glm::vec3 kCityCarBody{1.8f, 1.0f, 4.2f};  // x, y, z size
+// kCityCarClearance (light passes under it). One box, so each built-in mesh stays one convex object (the scenes'
+// validity test checks outward faces against the mesh's centre).
+inline constexpr glm::vec3 kCityCarBody{1.8f, 1.5f, 4.2f};  // x, y, z size
 inline constexpr float kCityCarClearance = 0.25f;
-inline constexpr glm::vec3 kCityCarCabin{1.6f, 0.6f, 2.2f};
 
 }  // namespace builtin
 }  // namespace shadowlab

@@ -105,6 +105,7 @@ TEST(EditorViewChoice, TheProbePanelProbesTheChosenViewAndFallsBackToAllViewsWhe
     ASSERT_TRUE(p.report && p.report->ok) << p.report->error;
     EXPECT_EQ(p.report->viewCount, 1);
     EXPECT_FALSE(p.report->viewChosen);
+    EXPECT_FALSE(h.hasControl("probe.view")) << "a one-view light shows no choice";
 }
 
 TEST(EditorViewChoice, TheExportPanelExportsTheChosenCascadeAlone) {

@@ -69,7 +69,6 @@ void drawProfileSection(EditorState& state) {
 std::string describedView(const PixelProbeReport& r) {
     std::string text = "numbers of " + r.viewName;
     if (r.viewChosen) return text + " (the view chosen above)";
-    if (r.viewCount < 2) return text;
     text += " (all views: the one holding this pixel";
     for (const PixelProbeReport& next : r.blend) text += ", blended with " + next.cascade;
     return text + ")";
@@ -101,8 +100,10 @@ void drawProbePanel(PanelContext& ctx) {
     ImGui::TextWrapped("pixel %d,%d: %s", r.x, r.y, probeSummary(r).c_str());
     ImGui::PopStyleColor();
     state.controls.recordLastItem("probe.summary");
-    ImGui::TextWrapped("%s", describedView(r).c_str());
-    state.controls.recordLastItem("probe.describedView");
+    if (r.viewCount >= 2) {  // a one-view light: the summary already names it
+        ImGui::TextWrapped("%s", describedView(r).c_str());
+        state.controls.recordLastItem("probe.describedView");
+    }
     if (ImGui::SmallButton("Save JSON")) ctx.actions.saveProbeJson();
     state.controls.recordLastItem("probe.saveJson");
     if (ImGui::IsItemHovered())
