@@ -260,20 +260,27 @@ TEST_F(BiasTunerTest, SaysWhenNoSettingReachesTheLimit) {
     EXPECT_DOUBLE_EQ(closest.acnePercent, result.report.acnePercent);
 }
 
-// Issue 20: a cascaded light's bias is one setting for every cascade. Each candidate is judged per cascade (the
-// cascades that hold enough pixels), and a suggestion holds in each of them.
-TEST_F(BiasTunerTest, ACascadedLightsSuggestionHoldsInEveryCascade) {
-    const Scene scene = loadBuiltin("textbook");
+// The textbook's sun in 3 cascades (30 units of shadow distance, lambda 0.6) of `resolution`², bias zero, seen from a
+// fixed camera near the floor: the cascaded tuner tests' start.
+Settings cascadedTextbook(int resolution) {
     Settings start = zeroBias(loadShippedPreset("default"));
     LightSettings& sun = start.lights[0];
     sun.projection.fit = ProjectionFit::Cascades;
     sun.projection.cascadeCount = 3;
     sun.projection.shadowDistance = 30.0f;
     sun.projection.splitLambda = 0.6f;
-    sun.shadow.resolution = 512;
+    sun.shadow.resolution = resolution;
     start.camera.autoFrame = false;
     start.camera.position = {-4.0, 1.2, 9.0};
     start.camera.target = {1.0, 0.3, -3.0};
+    return start;
+}
+
+// Issue 20: a cascaded light's bias is one setting for every cascade. Each candidate is judged per cascade (the
+// cascades that hold enough pixels), and a suggestion holds in each of them.
+TEST_F(BiasTunerTest, ACascadedLightsSuggestionHoldsInEveryCascade) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings start = cascadedTextbook(512);
     const int w = 240, h = 135;
     const Camera camera = cameraFor(start.camera, scene, double(w) / h);
     AccuracyMeter meter;
@@ -306,17 +313,8 @@ TEST_F(BiasTunerTest, ACascadeNoCandidateCleansIsNamedWithItsPixelsAndLeastAcne)
     // other shadows. Cascades 0 and 2 come clean with some candidate; cascade 1 with none (render --view cascades and
     // measure --cause-overlay of the closest candidate show it: the acne is the staircase on the green sphere).
     const Scene scene = loadBuiltin("textbook");
-    Settings start = zeroBias(loadShippedPreset("default"));
-    LightSettings& sun = start.lights[0];
-    sun.projection.fit = ProjectionFit::Cascades;
-    sun.projection.cascadeCount = 3;
-    sun.projection.shadowDistance = 30.0f;
-    sun.projection.splitLambda = 0.6f;
-    sun.shadow.resolution = 256;
-    sun.shadow.depthBiasClamp = 1e-4f;
-    start.camera.autoFrame = false;
-    start.camera.position = {-4.0, 1.2, 9.0};
-    start.camera.target = {1.0, 0.3, -3.0};
+    Settings start = cascadedTextbook(256);
+    start.lights[0].shadow.depthBiasClamp = 1e-4f;
     const int w = 240, h = 135;
     const Camera camera = cameraFor(start.camera, scene, double(w) / h);
     AccuracyMeter meter;
