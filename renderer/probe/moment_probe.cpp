@@ -78,6 +78,20 @@ void probeMomentLookup(PixelProbeReport& r, const Renderer& renderer, const Shad
             r.shadowLow = std::min(r.shadowLow, s);
             r.shadowHigh = std::max(r.shadowHigh, s);
         }
+    // The GPU filters stored values at its own precision (llvmpipe: unorm16 in fixed point): each filtered moment
+    // may differ by a couple of storage steps, which MSM's decoding and ill-conditioned bound amplify.
+    for (int c = 0; c < m.channels; ++c)
+        for (const float sign : {-1.0f, 1.0f}) {
+            const float value = filtered[c];
+            const float step = r.filter.momentBits == 32 ? std::abs(value) * 1e-6f
+                               : m.unorm16             ? 2.0f / 65535.0f
+                                                       : std::abs(value) * 2.0f / 1024.0f;
+            glm::vec4 moved = filtered;
+            moved[c] = value + sign * step;
+            const double s = double(m.shadow(moved, z, uniforms)) * cone;
+            r.shadowLow = std::min(r.shadowLow, s);
+            r.shadowHigh = std::max(r.shadowHigh, s);
+        }
     tap.value = tap.low = tap.high = r.shadowCpu;
     r.taps.push_back(tap);
     // Float rounding of the receiver's depth and the moments' arithmetic (the bound divides small differences).

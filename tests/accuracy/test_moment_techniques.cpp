@@ -39,11 +39,12 @@ TEST_F(MomentTechniquesAccuracy, EachTechniquePutsTheTextbookShadowWhereTheRefer
             SCOPED_TRACE(name);
             const AccuracyReport r = measureWith(meter, scene, s, name);
             EXPECT_GT(r.counts.shadowed, 1000u);
-            // Shadows in place: wrong pixels (|S - V| >= 0.5) within 1 % of the picture, at most 0.5 % above PCF 3x3's.
-            EXPECT_LT(r.wrongPercent, 1.0);
-            EXPECT_LT(r.wrongPercent, reference.wrongPercent + 0.5);
-            EXPECT_LE(r.acnePercent, 0.5) << "acne";
-            EXPECT_LE(r.leakPercent, 1.0) << "leak";
+            // Shadows in place: wrong pixels (|S - V| >= 0.5) within 0.1 % of the picture, at most 0.05 % above PCF
+            // 3x3's (llvmpipe: PCF 0.015 %, these 0.017-0.020 %); acne within the default preset's limit (0.1 %).
+            EXPECT_LT(r.wrongPercent, 0.1);
+            EXPECT_LT(r.wrongPercent, reference.wrongPercent + 0.05);
+            EXPECT_LE(r.acnePercent, 0.1) << "acne";
+            EXPECT_LE(r.leakPercent, 0.2) << "leak";
         }
 }
 
