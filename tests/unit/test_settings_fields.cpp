@@ -289,8 +289,8 @@ TEST(SettingsOverride, UnknownKeysSuggestCloseOnesOrListAll) {
     e = applySettingOverride(s, "depthBias=3");  // group forgotten
     EXPECT_TRUE(contains(e, "shadow.depthBias")) << e;
     e = applySettingOverride(s, "shadow.bias=3");  // part of a name
-    EXPECT_TRUE(contains(e, "did you mean shadow.depthBias, shadow.slopeScaledDepthBias, shadow.depthBiasClamp, "
-                            "shadow.receiverPlaneBias?"))
+    EXPECT_TRUE(contains(e, "did you mean filter.momentBias, shadow.depthBias, shadow.slopeScaledDepthBias, "
+                            "shadow.depthBiasClamp, shadow.receiverPlaneBias?"))
         << e;
     e = applySettingOverride(s, "filter.Kind=pcf");  // wrong case
     EXPECT_TRUE(contains(e, "filter.kind")) << e;

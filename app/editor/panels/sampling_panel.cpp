@@ -36,7 +36,11 @@ void techniqueKey(EditorState& state, const char* key) {
             return;
         }
     const std::string label = std::strcmp(key, "filter.kernel") == 0 ? "kernel (NxN)" : std::string(key).substr(7);
-    comboField(state, key, label.c_str());  // enums and keys with a list of integers
+    const SettingsField* field = findSettingsField(key);
+    if (field && field->kind == SettingsFieldKind::Float)
+        dragFloatField(state, key, label.c_str(), 0.01f);  // a new technique's key without a slider range above
+    else
+        comboField(state, key, label.c_str());  // enums and keys with a list of integers
 }
 
 }  // namespace
