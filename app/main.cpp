@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--frames", bench.frames, "timed frames per row")->capture_default_str()->check(
         CLI::Range(1, 100000));
     benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
-    benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
+    benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson, vsm, evsm2, evsm4, msm (their keys: --set)")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
     CLI::Option* benchLights = benchCmd->add_flag(
         "--lights", bench.lights,

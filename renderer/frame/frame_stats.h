@@ -57,6 +57,10 @@ struct FrameStats {
     PassStats sceneUpload;
     std::size_t geometryBytesUploaded = 0;
     std::size_t transformBytesUploaded = 0;
+    // A moments technique (filter.kind vsm, evsm2, evsm4, msm): the views' depth converted to moments, and their blur;
+    // each runs only for the views the shadow pass re-rendered (or whose moments settings changed).
+    PassStats momentsPass;
+    PassStats blurPass;
     std::optional<ViewDepths> seenDepths;  // the seen depths the cascades were fitted to (raw, before quantizing)
     std::vector<ShadowViewStats> views;  // every view of every light (see ShadowViewStats)
     std::size_t lightCount = 0;          // the frame's lights (the effective ones)

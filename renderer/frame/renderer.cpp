@@ -6,6 +6,7 @@
 #include "scene/hash_combine.h"
 #include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 #include "views/depth_bounds.h"
 
 #include <glm/ext/matrix_transform.hpp>
@@ -226,6 +227,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         const PlannedView& p = plan.views[v];
         const LightSettings& light = settings.lights[p.view.light];
         ViewState& state = views_[p.view.id()];
+        state.group = p.group;
         const ShadowMapArray& array = arrays_.at(p.group);
         if (std::string error = state.map.attach(array, p.layer); !error.empty()) {
             stats.error = error;
@@ -329,6 +331,33 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         firstView_.reset();
     }
 
+    // A moments technique: the views' moments, brought up to date for the views just drawn (or new moments settings).
+    const FilterTechnique& technique = filterTechnique(settings.filter.kind);
+    if (technique.moments) {
+        if (!momentsPass_) momentsPass_ = std::make_unique<MomentsPass>();
+        std::vector<MomentsView> momentViews;
+        for (std::size_t v = 0; v < plan.views.size(); ++v) {
+            const PlannedView& p = plan.views[v];
+            const LightSpace& space = p.view.space;
+            // World blur widths: a perspective view's texel at the middle of its depth range.
+            const double texelWorld = space.perspective ? 2.0 * space.tanHalfFov / space.resolution * 0.5 *
+                                                              (space.nearPlane + space.farPlane)
+                                                        : space.texelWorldSize;
+            momentViews.push_back({p.view.id(), viewName(p.view), p.group, p.layer,
+                                   p.action == ViewAction::Render || p.action == ViewAction::Clear, texelWorld});
+        }
+        MomentsPassResult moments = momentsPass_->run(settings.filter, arrays_, momentViews, timer_);
+        momentsPass_->configureSampler(settings.filter, settings.sampler);
+        stats.momentsPass = moments.moments;
+        stats.blurPass = moments.blur;
+        stats.warnings.insert(stats.warnings.end(), moments.warnings.begin(), moments.warnings.end());
+    } else {
+        if (momentsPass_) momentsPass_->release();
+        const std::string reason = std::string("filter.kind ") + technique.name + " compares depth: no moments";
+        stats.momentsPass = {false, reason, std::nullopt};
+        stats.blurPass = {false, reason, std::nullopt};
+    }
+
     // The main pass: every enabled light, each casting one with its map array and layer.
     sampler_.configure(settings.sampler, settings.filter.kind);
     reversedSampler_.configure(settings.sampler, settings.filter.kind);
@@ -349,8 +378,11 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     for (const auto& [group, array] : arrays_) {
         std::vector<GLuint>& list = group.cube ? in.mapsCube : in.maps2D;
         arrayIndex[group] = int(list.size());
-        list.push_back(array.texture());
-        (group.cube ? in.samplersCube : in.samplers2D).push_back(group.reversedZ ? reversedSampler_.id() : sampler_.id());
+        // A moments technique reads the group's moments (one bilinear sampler), else its depth through a compare sampler.
+        list.push_back(technique.moments ? momentsPass_->texture(group) : array.texture());
+        (group.cube ? in.samplersCube : in.samplers2D)
+            .push_back(technique.moments ? momentsPass_->sampler()
+                                         : group.reversedZ ? reversedSampler_.id() : sampler_.id());
     }
     for (std::size_t i = 0; i < settings.lights.size(); ++i) {
         if (!settings.lights[i].enabled) continue;
@@ -406,6 +438,14 @@ void Renderer::waitForTimings(FrameStats& stats) {
     if (stats.mainPass.ran) stats.mainPass.milliseconds = timer_.latestMilliseconds(TimedPass::Main, true);
     if (stats.depthBoundsPass.ran)
         stats.depthBoundsPass.milliseconds = timer_.latestMilliseconds(TimedPass::DepthBounds, true);
+    if (stats.momentsPass.ran) stats.momentsPass.milliseconds = timer_.latestMilliseconds(TimedPass::Moments, true);
+    if (stats.blurPass.ran) stats.blurPass.milliseconds = timer_.latestMilliseconds(TimedPass::Blur, true);
+}
+
+std::vector<glm::vec4> Renderer::viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const {
+    const auto it = views_.find(view);
+    if (!momentsPass_ || it == views_.end() || !momentsPass_->texture(it->second.group)) return {};
+    return momentsPass_->read(it->second.group, it->second.map.layer(), x0, y0, w, h);
 }
 
 }  // namespace shadowlab

@@ -12,6 +12,7 @@
 #include "frame/render_target.h"
 #include "shading/main_pass.h"
 #include "shadow/shadow_map.h"
+#include "shadow/moments_pass.h"
 #include "shadow/shadow_pass.h"
 #include "views/shadow_planner.h"
 #include "timing/pass_timer.h"
@@ -62,10 +63,14 @@ public:
     // The scene as last uploaded (null before the first frame): the pixel probe's G-buffer draws the same draws.
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
     const GlInfo& glInfo() const { return info_; }
+    // A moments technique's stored moments of a view of the last frame, texels [x0, x0+w) x [y0, y0+h) (row 0 =
+    // bottom; a cube face's layer); empty when the frame used a depth technique or the view is unknown.
+    std::vector<glm::vec4> viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const;
 
 private:
     struct ViewState {
         ShadowMap map;  // its layer of its group's array
+        MapGroup group;
     };
 
     GlInfo info_;
@@ -78,6 +83,7 @@ private:
     ShadowSampler reversedSampler_{true};
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<DepthBoundsPass> depthBoundsPass_;  // made when a light first asks for projection.depthBounds
+    std::unique_ptr<MomentsPass> momentsPass_;          // made when a moments technique is first chosen
     // The seen depths the last frame without a fit camera fitted its cascades to: a frame with a fit camera (frozen
     // cascades, the flicker measure's previous-frame cascades) fits to them as that frame did.
     std::optional<ViewDepths> ownCameraDepths_;

@@ -15,7 +15,11 @@ enum class DepthFormat { D16, D24, D32F };
 enum class CullMode { Back, Front, None };
 enum class LightType { Directional, Spot, Point };
 enum class AddressMode { Wrap, ClampToEdge, ClampToBorder };
-enum class FilterKind { Point, Hardware2x2, Pcf, Poisson };
+// Filter techniques (shading/filters/: one file each). The first four compare depths; the others filter moments.
+enum class FilterKind { Point, Hardware2x2, Pcf, Poisson, Vsm, Evsm2, Evsm4, Msm };
+// Where a moments technique's blur width is given: in each view's texels, or in world units (the same in every
+// cascade: converted by each view's texel size).
+enum class BlurUnit { Texels, World };
 // What the main view shows: the lit scene, the shadow factor, the first light's depth, the cascade that holds each
 // pixel (tinted over the lit scene), or shadow-map texels per screen pixel (a log colour scale).
 enum class ViewMode { Lit, Shadow, LightDepth, Cascades, TexelDensity };
@@ -115,6 +119,15 @@ struct FilterSettings {
     FilterKind kind = FilterKind::Pcf;
     int kernel = 3;          // NxN grid PCF: 1,3,5,7,9
     float poissonRadius = 2.0f;  // Poisson disk radius, texels
+    // Moments techniques (VSM, EVSM2/4, MSM): storage precision, the blur after the moments pass, their own terms.
+    int momentBits = 32;             // 16 or 32-bit float moments (MSM 16: optimized quantization in 16-bit unorm)
+    float blurWidth = 5.0f;          // box blur width (1 = none), in blurUnit
+    BlurUnit blurUnit = BlurUnit::Texels;
+    float minVariance = 1e-6f;       // VSM / EVSM: variance floor (depth units squared; EVSM scales it by the warp)
+    float bleedReduction = 0.2f;     // VSM / EVSM / MSM: shadow below this share of light is cut to 0, the rest rescaled
+    float positiveExponent = 40.0f;  // EVSM: c+ of exp(c+ d); clamped to what momentBits hold (5.54 / 42)
+    float negativeExponent = 5.0f;   // EVSM4: c- of -exp(-c- d); the same clamp
+    float momentBias = 3e-5f;        // MSM: moments pulled toward a constant vector by this share
 
     bool operator==(const FilterSettings&) const = default;
 };

@@ -122,7 +122,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         r.warnings = timed.last.warnings;
         r.shadowMs = timed.shadowMs;
         r.mainMs = timed.mainMs;
-        r.costMs = r.shadowMs + r.mainMs;
+        r.costMs = r.shadowMs + r.mainMs + timed.momentsMs + timed.blurMs;  // a moments technique's passes count
         r.shadowMinMs = timed.shadowMinMs;
         r.mainMinMs = timed.mainMinMs;
         r.wallMsPerFrame = timed.wallMsPerFrame;

@@ -59,7 +59,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 49u);  // every tunable of Settings: 17 global, 32 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 57u);  // every tunable of Settings: 25 global, 32 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -210,7 +210,7 @@ TEST(SettingsFields, NonFiniteNumbersAreRefused) {
 TEST(SettingsFields, EnumsRefuseUnknownNames) {
     Settings s;
     std::string e = findSettingsField("filter.kind")->set(s, json("gaussian"));
-    EXPECT_EQ(e, "filter.kind: unknown value \"gaussian\" (allowed one of point, hardware2x2, pcf, poisson)");
+    EXPECT_EQ(e, "filter.kind: unknown value \"gaussian\" (allowed one of point, hardware2x2, pcf, poisson, vsm, evsm2, evsm4, msm)");
     e = findSettingsField("shadow.depthFormat")->set(s, json("D32F"));  // names are case-sensitive
     EXPECT_EQ(e, "shadow.depthFormat: unknown value \"D32F\", did you mean \"d32f\"? (allowed one of d16, d24, d32f)");
     EXPECT_TRUE(s == Settings{});
@@ -289,8 +289,8 @@ TEST(SettingsOverride, UnknownKeysSuggestCloseOnesOrListAll) {
     e = applySettingOverride(s, "depthBias=3");  // group forgotten
     EXPECT_TRUE(contains(e, "shadow.depthBias")) << e;
     e = applySettingOverride(s, "shadow.bias=3");  // part of a name
-    EXPECT_TRUE(contains(e, "did you mean shadow.depthBias, shadow.slopeScaledDepthBias, shadow.depthBiasClamp, "
-                            "shadow.receiverPlaneBias?"))
+    EXPECT_TRUE(contains(e, "did you mean filter.momentBias, shadow.depthBias, shadow.slopeScaledDepthBias, "
+                            "shadow.depthBiasClamp, shadow.receiverPlaneBias?"))
         << e;
     e = applySettingOverride(s, "filter.Kind=pcf");  // wrong case
     EXPECT_TRUE(contains(e, "filter.kind")) << e;

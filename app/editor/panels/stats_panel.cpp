@@ -2,6 +2,7 @@
 // triangles, casters and shadow-map memory; a table of the shadow views (ran or skipped, why, memory, time).
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "shading/filters/filter_technique.h"
 #include "editor/view_rows.h"
 #include "shadow/shadow_map.h"
 
@@ -116,6 +117,11 @@ void drawStatsPanel(PanelContext& ctx) {
     const FrameStats& shadow = state.lastShadowPass;
     passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
     passLine("main pass", s.mainPass, s.mainPass, clock);
+    // A moments technique's own cost lines: the conversion and the blur (they run only when a view's map changed).
+    if (filterTechnique(state.settings.filter.kind).moments) {
+        passLine("moments", s.momentsPass, s.momentsPass, clock);
+        passLine("blur", s.blurPass, s.blurPass, clock);
+    }
     if (s.depthBoundsPass.ran) {
         passLine("depth bounds", s.depthBoundsPass, s.depthBoundsPass, clock);
         if (s.seenDepths && s.seenDepths->farthest >= s.seenDepths->nearest)
