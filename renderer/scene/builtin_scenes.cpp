@@ -519,6 +519,84 @@ Scene cityTraffic() {
     return scene;
 }
 
+// Smooth normal of terrainHeight by central differences (the heightfield's slope, not a face's).
+glm::vec3 terrainNormal(float x, float z) {
+    const float e = 0.05f;
+    const float dx = (terrainHeight(x + e, z) - terrainHeight(x - e, z)) / (2.0f * e);
+    const float dz = (terrainHeight(x, z + e) - terrainHeight(x, z - e)) / (2.0f * e);
+    return glm::normalize(glm::vec3(-dx, 1.0f, -dz));
+}
+
+// The lowest and highest ground under an axis-aligned square footprint (corners and centre): a box reaching from
+// below the lowest to its own height above the highest stands on a slope without floating over its downhill side.
+glm::vec2 terrainSpan(float x, float z, float halfWidth) {
+    glm::vec2 span(terrainHeight(x, z));
+    for (float sx : {-1.0f, 0.0f, 1.0f})
+        for (float sz : {-1.0f, 0.0f, 1.0f}) {
+            const float h = terrainHeight(x + sx * halfWidth, z + sz * halfWidth);
+            span = {std::min(span.x, h), std::max(span.y, h)};
+        }
+    return span;
+}
+
+Scene terrain() {
+    Scene scene = baseScene("terrain");
+    scene.materials[0].baseColorFactor = {0.45f, 0.55f, 0.3f, 1.0f};  // grass
+    const int bark = int(scene.materials.size());
+    scene.materials.push_back(opaque("bark", {0.4f, 0.28f, 0.18f, 1.0f}));
+    const int leaves = int(scene.materials.size());
+    scene.materials.push_back(opaque("leaves", {0.2f, 0.42f, 0.18f, 1.0f}));
+
+    MeshBuilder ground("terrain", 0);
+    Mesh& mesh = ground.mesh;
+    const int n = kTerrainGrid;
+    const float step = kTerrainSize / float(n - 1), start = -0.5f * kTerrainSize;
+    mesh.positions.reserve(std::size_t(n) * n);
+    mesh.normals.reserve(std::size_t(n) * n);
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            const float x = start + float(i) * step, z = start + float(j) * step;
+            mesh.positions.emplace_back(x, terrainHeight(x, z), z);
+            mesh.normals.push_back(terrainNormal(x, z));
+        }
+    }
+    mesh.indices.reserve(std::size_t(n - 1) * (n - 1) * 6);
+    for (int j = 0; j + 1 < n; ++j) {
+        for (int i = 0; i + 1 < n; ++i) {
+            const auto a = std::uint32_t(j * n + i), b = a + 1, c = a + std::uint32_t(n), d = c + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, c, d, a, d, b});  // CCW seen from above (+y)
+        }
+    }
+    addObject(scene, std::move(ground));
+
+    const float reach = 0.45f * kTerrainSize;
+    for (int k = 0; k < kTerrainTrees; ++k) {
+        const float x = (2.0f * cityHash(k, 1, 7) - 1.0f) * reach, z = (2.0f * cityHash(k, 2, 7) - 1.0f) * reach;
+        const float height = 4.0f + 6.0f * cityHash(k, 3, 7), crown = 2.0f + 2.5f * cityHash(k, 4, 7);
+        const glm::vec2 span = terrainSpan(x, z, 0.25f);
+        const float bottom = span.x - 0.5f, top = span.y + height;
+        addBox(scene, "trunk", bark, {x, 0.5f * (bottom + top), z}, {0.5f, top - bottom, 0.5f});
+        addBox(scene, "crown", leaves, {x, top + 0.4f * crown, z}, {crown, 1.2f * crown, crown});
+    }
+    for (int k = 0; k < kTerrainRocks; ++k) {
+        const float x = (2.0f * cityHash(k, 5, 7) - 1.0f) * reach, z = (2.0f * cityHash(k, 6, 7) - 1.0f) * reach;
+        const glm::vec3 size(1.5f + 4.0f * cityHash(k, 7, 7), 1.0f + 2.5f * cityHash(k, 8, 7),
+                             1.5f + 4.0f * cityHash(k, 9, 7));
+        const glm::vec2 span = terrainSpan(x, z, 0.5f * std::max(size.x, size.z));
+        const float bottom = span.x - 0.5f, top = span.y + size.y;
+        addBox(scene, "rock", 1, {x, 0.5f * (bottom + top), z}, {size.x, top - bottom, size.z});
+    }
+
+    SceneLight sun;
+    sun.name = "sun";
+    sun.direction = glm::normalize(kTerrainSunDir);
+    sun.color = {1.0f, 0.95f, 0.85f};
+    scene.lights.push_back(sun);
+    const glm::vec3 eye(-150.0f, terrainHeight(-150.0f, 150.0f) + 25.0f, 150.0f);
+    scene.viewpoint = Scene::Viewpoint{glm::dvec3(eye), glm::dvec3(20.0, 0.0, -20.0)};
+    return scene;
+}
+
 struct Entry {
     const char* name;
     const char* description;
@@ -539,6 +617,8 @@ constexpr Entry kScenes[] = {
              "benches and bollards thinner than a scene-fitted map's texel", city},
     {"city-traffic", "builtin:city with 6 cars driving loops around blocks (animation \"traffic\", 60 s), "
                      "three of them in the street in front of the eye", cityTraffic},
+    {"terrain", "1M triangles of rolling hills with trees and rocks under a sun: the techniques' benchmark scene",
+     terrain},
 };
 
 const Entry* find(const std::string& name) {

@@ -195,6 +195,26 @@ inline constexpr float kCityBollardHeight = 0.9f;
 // The sun (Scene::lights[0], directional): about 33 degrees above the horizon, behind the eye, shining down the street.
 inline constexpr glm::vec3 kCitySunDir{-0.25f, -0.55f, -0.8f};  // travels toward -z (not normalized)
 
+// "terrain": the 1M-triangle benchmark scene of the techniques' figures (issue 21). A heightfield of
+// kTerrainGrid x kTerrainGrid vertices (2 * (kTerrainGrid - 1)^2 = 1,002,528 triangles, mesh "terrain", smooth
+// analytic normals) kTerrainSize on a side, centred at the origin, its height terrainHeight(x, z) in
+// [-kTerrainRelief, kTerrainRelief]; kTerrainTrees trees (a "trunk" and a "crown" box each) and kTerrainRocks rocks
+// stand on it (boxes reaching 0.5 below the lowest ground under them); a sun at kTerrainSunDir, about 35 deg high, so
+// hills shadow their lee sides.
+inline constexpr int kTerrainGrid = 709;
+inline constexpr float kTerrainSize = 400.0f;
+inline constexpr float kTerrainRelief = 28.0f;
+inline constexpr int kTerrainTrees = 160;
+inline constexpr int kTerrainRocks = 60;
+inline constexpr glm::vec3 kTerrainSunDir{-0.7f, -0.6f, -0.4f};
+inline float terrainHeight(float x, float z) {
+    // Three rotated ridges of decreasing wavelength: hills with slopes up to about 44 deg, steeper than the sun.
+    const float a = std::sin(0.021f * x + 0.6f) * std::cos(0.017f * z - 0.3f);
+    const float b = std::sin(0.043f * (0.8f * x + 0.6f * z) + 1.1f);
+    const float c = std::cos(0.087f * (0.3f * x - 0.95f * z) + 0.4f);
+    return kTerrainRelief * (0.6f * a + 0.28f * b + 0.12f * c);
+}
+
 // "city-traffic": the same city (one generator) and kCityCars cars driving loops around blocks, played by one node
 // animation "traffic" (the data a glTF file's animation gives: nodes "car-N" with a LINEAR translation channel and a
 // STEP rotation channel each), every loop kCityTrafficSeconds long. Each car drives around a rectangle of street

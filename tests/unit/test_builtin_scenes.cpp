@@ -43,7 +43,7 @@ Scene builtinOrDie(const std::string& name) {
 
 TEST(BuiltinScenes, NamesDescriptionsAndDefault) {
     const std::vector<std::string> names = builtinSceneNames();
-    ASSERT_EQ(names.size(), 10u);  // city-traffic is the tenth
+    ASSERT_EQ(names.size(), 11u);  // terrain is the eleventh
     EXPECT_EQ(names.front(), "textbook");
     EXPECT_EQ(std::string(kDefaultSceneSpec), "builtin:textbook");
     for (const std::string& n : names) EXPECT_FALSE(builtinSceneDescription(n).empty()) << n;
@@ -86,9 +86,11 @@ TEST(BuiltinScenes, EveryBuiltinIsValidWithFiniteBoundsAndOutwardNormals) {
         for (const Instance& inst : scene.instances) EXPECT_FALSE(inst.mirrored());
 
         // Each mesh is one convex object or one planar quad: every face must look away from the mesh centroid,
-        // agree with its vertex normals, and have non-zero area.
+        // agree with its vertex normals, and have non-zero area. The one heightfield ("terrain") instead has every
+        // face looking up.
         for (const Mesh& mesh : scene.meshes) {
             SCOPED_TRACE(mesh.name);
+            const bool heightfield = name == "terrain" && mesh.name == "terrain";
             glm::dvec3 centroid(0.0);
             for (const glm::vec3& p : mesh.positions) centroid += glm::dvec3(p);
             centroid /= double(mesh.positions.size());
@@ -98,12 +100,36 @@ TEST(BuiltinScenes, EveryBuiltinIsValidWithFiniteBoundsAndOutwardNormals) {
                 const glm::dvec3 a(mesh.positions[i0]), bb(mesh.positions[i1]), c(mesh.positions[i2]);
                 const glm::dvec3 n = glm::cross(bb - a, c - a);
                 const glm::dvec3 vn = glm::dvec3(mesh.normals[i0] + mesh.normals[i1] + mesh.normals[i2]);
-                if (glm::length(n) <= 1e-12 || glm::dot(n, vn) <= 0.0 ||
-                    glm::dot(glm::normalize(n), (a + bb + c) / 3.0 - centroid) < -1e-4)
+                const bool outward = heightfield ? n.y > 0.0
+                                                 : glm::dot(glm::normalize(n), (a + bb + c) / 3.0 - centroid) >= -1e-4;
+                if (glm::length(n) <= 1e-12 || glm::dot(n, vn) <= 0.0 || !outward)
                     ++bad;
             }
             EXPECT_EQ(bad, 0);
         }
+    }
+}
+
+// The techniques' benchmark scene holds the million triangles its figures claim, on a heightfield whose vertices lie
+// on terrainHeight, with every tree and rock standing on (not floating over) the ground.
+TEST(BuiltinScenes, TerrainIsAMillionTriangleHeightfieldWithCastersOnIt) {
+    const std::optional<Scene> scene = makeBuiltinScene("terrain");
+    ASSERT_TRUE(scene.has_value());
+    EXPECT_GE(scene->triangleCount(), 1000000u);
+    const Mesh& ground = scene->meshes.front();
+    ASSERT_EQ(ground.name, "terrain");
+    for (std::size_t i = 0; i < ground.positions.size(); i += 997)
+        EXPECT_NEAR(ground.positions[i].y, builtin::terrainHeight(ground.positions[i].x, ground.positions[i].z), 1e-4);
+    for (std::size_t m = 1; m < scene->meshes.size(); ++m) {
+        const Mesh& mesh = scene->meshes[m];
+        if (mesh.name == "crown") continue;  // sits on its trunk
+        float bottom = mesh.positions.front().y;
+        glm::vec3 centre(0.0f);
+        for (const glm::vec3& p : mesh.positions) {
+            bottom = std::min(bottom, p.y);
+            centre += p / float(mesh.positions.size());
+        }
+        EXPECT_LT(bottom, builtin::terrainHeight(centre.x, centre.z)) << mesh.name << " " << m << " floats";
     }
 }
 
