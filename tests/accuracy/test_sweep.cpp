@@ -6,6 +6,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/scene_animation.h"
 #include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 #include "sweep/pareto_front.h"
 #include "sweep/sweep_output.h"
 #include "sweep/sweep_runner.h"
@@ -319,7 +320,7 @@ TEST_F(SweepTest, TechniqueByBlurWidthCostsTheMomentsAndBlurAndShowsTheSoftError
     const SweepResult r = runSweep(scene, base, plan, options);
     ASSERT_TRUE(r.ok) << r.error;
     ASSERT_EQ(r.points.size(), 8u);
-    std::map<std::string, double> softError;
+    std::map<std::pair<FilterKind, float>, double> softError;  // by technique and blur width
     for (const SweepPointResult& p : r.points) {
         SCOPED_TRACE(p.label);
         ASSERT_FALSE(p.failed()) << p.error;
@@ -332,12 +333,14 @@ TEST_F(SweepTest, TechniqueByBlurWidthCostsTheMomentsAndBlurAndShowsTheSoftError
         EXPECT_EQ(p.blurMs > 0.0, moments);
         EXPECT_NEAR(p.costMs, p.shadowMs + p.momentsMs + p.blurMs + p.mainMs, 1e-9);
         ASSERT_TRUE(p.soft.measured);
-        softError[p.label] = p.soft.meanError;
+        softError[{p.settings.filter.kind, p.settings.filter.blurWidth}] = p.soft.meanError;
     }
     // The width changes a moments technique's picture (its blur re-ran per point), not PCF's.
-    EXPECT_EQ(softError["pcf 3"], softError["pcf 9"]);
-    for (const char* kind : {"vsm", "evsm4", "msm"})
-        EXPECT_NE(softError[std::string(kind) + " 3"], softError[std::string(kind) + " 9"]) << kind;
+    ASSERT_EQ(softError.size(), 8u);
+    auto at = [&](FilterKind kind, float width) { return softError[std::make_pair(kind, width)]; };
+    EXPECT_EQ(at(FilterKind::Pcf, 3.0f), at(FilterKind::Pcf, 9.0f));
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm4, FilterKind::Msm})
+        EXPECT_NE(at(kind, 3.0f), at(kind, 9.0f)) << filterTechnique(kind).name;
 
     EXPECT_TRUE(sweepSoftError(r));
     const LinePlot chart = sweepChart(r);
