@@ -56,7 +56,7 @@ std::vector<std::string> rowCells(const SweepPointResult& p, bool soft) {
             formatted("%.3g", n.edgeErrorP95World),
             formatted("%.1f", n.edgeErrorP95ScreenPixels)};
     if (soft) {  // against the soft reference (the light has a size)
-        cells.push_back(formatted("%.4f", p.soft.meanError));
+        cells.push_back(formatted("%.5f", p.soft.meanError));
         cells.push_back(formatted("%.3f", p.soft.wrongPercent));
         cells.push_back(formatted("%.3f", p.soft.bleedingPercent));
         cells.push_back(formatted("%.3f", p.soft.overDarkeningPercent));
@@ -149,7 +149,7 @@ int runSweep(const SweepOptions& options) {
                                      "main %.3f ms  wrong %.3f %%%s%s\n",
                                      done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.momentsMs,
                                      p.blurMs, p.mainMs, p.accuracy.wrongPercent,
-                                     p.soft.measured ? ("  soft |S-V| " + formatted("%.4f", p.soft.meanError)).c_str()
+                                     p.soft.measured ? ("  soft |S-V| " + formatted("%.5f", p.soft.meanError)).c_str()
                                                      : "",
                                      p.referenceReused ? "" : "  (reference computed)");
                 });
@@ -218,7 +218,7 @@ int runSweep(const SweepOptions& options) {
         for (std::size_t k = 0; k < result.front.size(); ++k) {
             const SweepPointResult& p = result.points[result.front[k]];
             std::cout << "  " << p.label << ": " << formatted("%.3f", p.costMs) << " ms, " << sweepErrorName(soft)
-                      << " " << formatted(soft ? "%.4f" : "%.3f", sweepError(p, soft));
+                      << " " << formatted(soft ? "%.5f" : "%.3f", sweepError(p, soft));
             if (k > 0) std::cout << "   (step up " << frontStepText(result.points[result.front[k - 1]], p) << ")";
             std::cout << "\n";
         }

@@ -153,8 +153,8 @@ int runTune(const TuneOptions& options) {
                     std::cout << " (bias) fewest wrong pixels beyond k, smallest edge error, smallest bias;";
                 if (scope.search != TuneSearch::Bias && !technique.tradeOff.empty())
                     std::cout << " (technique) the least "
-                              << (soft ? "mean |S-V| against the soft reference (light size " +
-                                             std::to_string(one->lights[0].size) + "), then bleeding, over-darkening"
+                              << (soft ? "mean |S-V| against the soft reference, then bleeding, over-darkening (lights." +
+                                             std::to_string(index) + ".size > 0)"
                                        : std::string("mean |S-V|, then leak (lit umbra pixels), acne"));
                 std::cout << "\n";
                 if (scope.search == TuneSearch::Bias || scope.search == TuneSearch::Both ||

@@ -26,7 +26,7 @@ std::string frontStepText(const SweepPointResult& from, const SweepPointResult& 
     char text[300];
     if (from.soft.measured && to.soft.measured)
         std::snprintf(text, sizeof text,
-                      "+%.3g ms: soft mean |S-V| %.4f -> %.4f, bleeding %.3g %% -> %.3g %%, over-darkening %.3g %% -> "
+                      "+%.3g ms: soft mean |S-V| %.5f -> %.5f, bleeding %.3g %% -> %.3g %%, over-darkening %.3g %% -> "
                       "%.3g %%",
                       to.costMs - from.costMs, from.soft.meanError, to.soft.meanError, from.soft.bleedingPercent,
                       to.soft.bleedingPercent, from.soft.overDarkeningPercent, to.soft.overDarkeningPercent);
