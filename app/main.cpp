@@ -129,7 +129,8 @@ int main(int argc, char** argv) {
                            "DEGREES, with this frame's bounds and the frame before's (light 0, cascaded)");
 
     cli::TuneOptions tune;
-    CLI::App* tuneCmd = app.add_subcommand("tune", "Suggest bias (and cull mode): acne <= limit, then fewest wrong pixels");
+    CLI::App* tuneCmd = app.add_subcommand(
+        "tune", "Suggest bias (and cull mode) or the technique's own keys: acne <= limit, then the least error");
     tuneCmd->add_option("--scene", tune.scene, "a .gltf/.glb path or builtin:NAME")->capture_default_str();
     tuneCmd->add_option("--preset", tune.preset, kPresetHelp);
     tuneCmd->add_option("--set", tune.overrides, "override a setting: key=value (repeatable)");
@@ -138,6 +139,11 @@ int main(int argc, char** argv) {
     tuneCmd->add_option("--out", tune.out, "the tuned preset")->capture_default_str();
     tuneCmd->add_option("--max-acne", tune.maxAcnePercent, "acne limit in percent")->capture_default_str();
     tuneCmd->add_option("--json", tune.json, "write the search path and result as JSON");
+    tuneCmd->add_option("--search", tune.search,
+                        "bias, technique (the keys filter.kind declares: VSM minVariance / bleedReduction, EVSM "
+                        "exponents, MSM momentBias...), both (bias first), or auto (technique when it declares keys)")
+        ->check(CLI::IsMember({"auto", "bias", "technique", "both"}))
+        ->capture_default_str();
     tuneCmd->add_option("--light", tune.light,
                         "tune only light N's bias (default: every shadow-casting light in turn, each measured alone)")
         ->check(CLI::NonNegativeNumber);

@@ -225,6 +225,20 @@ void printWhole(std::ostream& out, const ManyLightsReport& m) {
     }
     out << "  pixels " << c.pixels << ": measured " << c.measured << ", reached by no measured light "
         << m.unreached << "\n";
+    if (const SoftAccuracy& soft = m.wholeSoft; soft.measured) {
+        const SoftCounts& sc = soft.counts;
+        out << "  soft (version 3; a sized light's soft V, a hard light's exact V; each pixel once):\n";
+        out << "    wrong pixels   " << std::setw(8) << soft.wrongPercent << " %   (" << sc.wrong << " of "
+            << sc.measured << " measured pixels with |S-V| >= 0.5 for some light)\n";
+        out << "    mean error     " << std::setw(8) << std::setprecision(4) << soft.meanError
+            << "     (mean of the largest |S-V| among the lights reaching a pixel)\n" << std::setprecision(3);
+        out << "    bleeding       " << std::setw(8) << soft.bleedingPercent << " %   (" << sc.bleeding << " of "
+            << sc.umbra << " pixels in some light's umbra that light lights)\n";
+        out << "    over-darkening " << std::setw(8) << soft.overDarkeningPercent << " %   (" << sc.overDarkened
+            << " of " << sc.fullyLit << " pixels fully lit by some light that light darkens)\n";
+        out << "    penumbra width error " << std::setprecision(4) << soft.penumbra.errorWorld
+            << " world units (the largest in magnitude of the lights')\n";
+    }
     out.unsetf(std::ios::floatfield);
 }
 
@@ -263,6 +277,7 @@ nlohmann::json manyLightsToJson(const ManyLightsReport& many) {
         {"height", many.height},
         {"lights", lights},
         {"notMeasured", notMeasured},
+        {"wholeSoft", many.wholeSoft.measured ? softAccuracyToJson(many.wholeSoft) : nlohmann::json(nullptr)},
         {"whole",
          {{"lightsMeasured", many.lights.size()}, {"acnePercent", w.acnePercent}, {"acneSeverity", w.acneSeverity},
           {"leakPercent", w.leakPercent}, {"wrongPixelsPercent", w.wrongPercent}, {"meanError", w.meanError},

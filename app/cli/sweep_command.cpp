@@ -36,13 +36,15 @@ void printRow(std::ostream& out, std::size_t labelWidth, const std::vector<std::
     out << "\n";
 }
 
-std::vector<std::string> rowCells(const SweepPointResult& p) {
+std::vector<std::string> rowCells(const SweepPointResult& p, bool soft) {
     if (p.failed()) return {p.label, "failed: " + p.error};
     const AccuracyNumbers& n = p.accuracy;
-    return {p.label + (p.onFront ? " *" : ""),
+    std::vector<std::string> cells = {p.label + (p.onFront ? " *" : ""),
             std::to_string(p.resolution) + " " + depthFormatName(p.format),
             formatted("%.1f", double(p.mapBytes) / (1024.0 * 1024.0)),
             formatted("%.3f", p.shadowMs),
+            formatted("%.3f", p.momentsMs),
+            formatted("%.3f", p.blurMs),
             formatted("%.3f", p.mainMs),
             formatted("%.3f", p.costMs),
             formatted("%.2fx", p.shadowOverBare),
@@ -53,6 +55,14 @@ std::vector<std::string> rowCells(const SweepPointResult& p) {
             formatted("%.2f", n.edgeErrorP95Texels),
             formatted("%.3g", n.edgeErrorP95World),
             formatted("%.1f", n.edgeErrorP95ScreenPixels)};
+    if (soft) {  // against the soft reference (the light has a size)
+        cells.push_back(formatted("%.5f", p.soft.meanError));
+        cells.push_back(formatted("%.3f", p.soft.wrongPercent));
+        cells.push_back(formatted("%.3f", p.soft.bleedingPercent));
+        cells.push_back(formatted("%.3f", p.soft.overDarkeningPercent));
+        cells.push_back(formatted("%.3g", p.soft.penumbra.errorWorld));
+    }
+    return cells;
 }
 
 // --json and --csv from the sweep as it stands (each rewritten whole, atomically): "" or why not.
@@ -135,9 +145,13 @@ int runSweep(const SweepOptions& options) {
                                      p.error.c_str());
                     else
                         std::fprintf(stderr,
-                                     "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  main %.3f ms  wrong %.3f %%%s\n",
-                                     done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.mainMs,
-                                     p.accuracy.wrongPercent, p.referenceReused ? "" : "  (reference computed)");
+                                     "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  moments %.3f ms  blur %.3f ms  "
+                                     "main %.3f ms  wrong %.3f %%%s%s\n",
+                                     done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.momentsMs,
+                                     p.blurMs, p.mainMs, p.accuracy.wrongPercent,
+                                     p.soft.measured ? ("  soft |S-V| " + formatted("%.5f", p.soft.meanError)).c_str()
+                                                     : "",
+                                     p.referenceReused ? "" : "  (reference computed)");
                 });
             },
             &accuracyProgress);
@@ -155,13 +169,23 @@ int runSweep(const SweepOptions& options) {
         std::string head;
         for (const SweepAxis& a : result.axes) head += (head.empty() ? "" : " ") + a.key;
         labelWidth = std::max(labelWidth, head.size());
-        printRow(std::cout, labelWidth,
-                 {head, "map", "map MiB", "shadow ms", "main ms", "cost ms", "x bare", "wrong %", "mean|S-V|",
-                  "acne %", "leak %", "edge tx", "edge world", "edge px"});
-        for (const SweepPointResult& p : result.points) printRow(std::cout, labelWidth, rowCells(p));
-        if (result.preset) printRow(std::cout, labelWidth, rowCells(*result.preset));
-        std::cout << "(* = on the Pareto front; cost = shadow + main; x bare = shadow pass / bare depth draw; wrong = "
-                     "|S-V| >= 0.5, edges included; edge = p95 distance of mismatched pixels to the true edge)\n";
+        const bool soft = sweepSoftError(result);
+        std::vector<std::string> header = {head,      "map",     "map MiB",  "shadow ms", "moments ms", "blur ms",
+                                           "main ms", "cost ms", "x bare",   "wrong %",   "mean|S-V|",  "acne %",
+                                           "leak %",  "edge tx", "edge world", "edge px"};
+        if (soft)
+            for (const char* column : {"soft|S-V|", "soft wrong", "bleed %", "dark %", "penumbra"})
+                header.push_back(column);
+        printRow(std::cout, labelWidth, header);
+        for (const SweepPointResult& p : result.points) printRow(std::cout, labelWidth, rowCells(p, soft));
+        if (result.preset) printRow(std::cout, labelWidth, rowCells(*result.preset, soft));
+        std::cout << "(* = on the Pareto front; cost = shadow + moments + blur + main; x bare = shadow pass / bare "
+                     "depth draw; wrong = |S-V| >= 0.5, edges included; edge = p95 distance of mismatched pixels to "
+                     "the true edge"
+                  << (soft ? "; soft columns against the soft reference: mean |S-V|, wrong, bleeding (lit umbra), "
+                             "over-darkening (darkened full light), penumbra width error in world units"
+                           : "")
+                  << ")\n";
         if (result.presetPoint < result.points.size())
             std::cout << "current preset: " << result.points[result.presetPoint].label << "\n";
 
@@ -190,11 +214,11 @@ int runSweep(const SweepOptions& options) {
                       << formatted("%.3f", b.ms) << " ms; the shadow pass takes " << formatted("%.2f", lo) << "x"
                       << (hi > lo ? " to " + formatted("%.2f", hi) + "x" : std::string()) << " of it\n";
         }
-        std::cout << "Pareto front (not beaten on both cost and wrong pixels), in order of cost:\n";
+        std::cout << "Pareto front (not beaten on both cost and " << sweepErrorName(soft) << "), in order of cost:\n";
         for (std::size_t k = 0; k < result.front.size(); ++k) {
             const SweepPointResult& p = result.points[result.front[k]];
-            std::cout << "  " << p.label << ": " << formatted("%.3f", p.costMs) << " ms, wrong pixels "
-                      << formatted("%.3f", p.accuracy.wrongPercent) << " %";
+            std::cout << "  " << p.label << ": " << formatted("%.3f", p.costMs) << " ms, " << sweepErrorName(soft)
+                      << " " << formatted(soft ? "%.5f" : "%.3f", sweepError(p, soft));
             if (k > 0) std::cout << "   (step up " << frontStepText(result.points[result.front[k - 1]], p) << ")";
             std::cout << "\n";
         }

@@ -10,7 +10,10 @@
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
 #include "settings/preset_io.h"
+#include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -27,6 +30,54 @@ std::string stepLine(const TuneStep& s) {
                   s.acnePercent, s.leakPercent, s.wrongPercent, s.wrongBeyondK, s.edgeErrorTexels,
                   s.bestSoFar ? "  <- best" : "");
     return line;
+}
+
+// A trade-off candidate: its keys' values, the criterion's figures and what it cost.
+std::string tradeOffLine(const TuneStep& s) {
+    std::string line;
+    char part[320];
+    std::snprintf(part, sizeof part, "%3d  %-40s", s.index, s.phase.c_str());
+    line += part;
+    for (double v : s.tradeOff) {
+        std::snprintf(part, sizeof part, " %10.4g", v);
+        line += part;
+    }
+    std::snprintf(part, sizeof part, " %7.3f %9.5f %8.3f %8.3f %9.1f %8.1f%s", s.acnePercent, tradeOffError(s),
+                  tradeOffBleeding(s), tradeOffDarkening(s), s.costMs, s.toolFrameMs, s.bestSoFar ? "  <- best" : "");
+    return line + part;
+}
+
+std::string tradeOffHeader(const std::vector<std::string>& keys, bool soft) {
+    std::string line = "  #  phase                                   ";
+    for (const std::string& key : keys) {
+        const std::string name = key.substr(key.rfind('.') + 1);
+        char part[64];
+        std::snprintf(part, sizeof part, " %10.10s", name.c_str());
+        line += part;
+    }
+    return line + (soft ? "  acne %  soft|S-V|  bleed %   dark %   cost ms  tool ms"
+                        : "  acne %    |S-V|   leak %   acne %   cost ms  tool ms");
+}
+
+// The technique declares keys of a light ("lights.#.size"): tuned per light, not only on the first.
+bool hasLightKeys(const FilterTechnique& technique) {
+    for (const TradeOffRange& range : technique.tradeOff)
+        if (std::string(range.key).rfind("lights.#.", 0) == 0) return true;
+    return false;
+}
+
+// A trade-off key the tuner saw on its one light ("lights.0.size") as light `index`'s key of the whole preset.
+std::string keyOfLight(const std::string& key, std::size_t index) {
+    const std::string prefix = "lights.0.";
+    return key.rfind(prefix, 0) == 0 ? "lights." + std::to_string(index) + "." + key.substr(prefix.size()) : key;
+}
+
+// A trade-off candidate's values by key (keys of the whole preset), for the JSON.
+nlohmann::json tradeOffJson(const TuneResult& result, const TuneStep& s, std::size_t index) {
+    nlohmann::json values = nlohmann::json::object();
+    for (std::size_t k = 0; k < s.tradeOff.size() && k < result.tradeOffKeys.size(); ++k)
+        values[keyOfLight(result.tradeOffKeys[k], index)] = s.tradeOff[k];
+    return values;
 }
 
 // The tuner keeps shadow.depthBiasClamp as given: it caps what any candidate's constant and slope bias can do.
@@ -57,6 +108,9 @@ int runTune(const TuneOptions& options) {
     const std::optional<std::vector<std::size_t>> chosen = chooseLights(*settings, scene, options.light, "tune", chooseError);
     if (!chosen) return fail(chooseError);
     const std::vector<std::size_t>& indices = *chosen;
+    const std::optional<TuneSearch> search = parseTuneSearch(options.search);
+    if (!search) return fail("--search must be auto, bias, technique or both, not '" + options.search + "'");
+    const FilterTechnique& technique = filterTechnique(settings->filter.kind);
 
     try {
         HeadlessContext context;
@@ -79,30 +133,98 @@ int runTune(const TuneOptions& options) {
             const std::optional<Settings> one = isolateLight(*settings, scene, index, error);
             if (!one) return fail(error);
             const std::string label = lightLabel(index, one->lights[0].type);
+            // The technique's global keys (filter.*) are one setting for every light: tuned on the first light.
+            TuneScope scope{*search, k == 0};
+            if (k > 0 && !hasLightKeys(technique)) {
+                if (scope.search == TuneSearch::TradeOff) {
+                    std::cout << label << ": filter.kind " << technique.name << "'s keys are global, tuned on "
+                              << lightLabel(indices[0], settings->lights[indices[0]].type) << "; nothing to tune\n";
+                    continue;
+                }
+                if (scope.search == TuneSearch::Both) scope.search = TuneSearch::Bias;
+            }
+            const bool soft = one->lights[0].size > 0.0f;
+            bool tradeOffHeaderShown = false;
             progress.above([&] {
-                std::cout << "tuning bias of " << label << " for " << scene.name << " at " << options.width << "x"
-                          << options.height << ", measured alone: acne <= " << options.maxAcnePercent
-                          << " %, then fewest wrong pixels beyond k, smallest edge error, smallest bias\n";
-                std::cout << "  #  phase                                 DepthBias   slope  normal cull  rpb   acne %"
-                             "   leak %  wrong %  wrong>k edge tx\n";
+                std::cout << "tuning " << label << " for " << scene.name << " at " << options.width << "x"
+                          << options.height << " (filter.kind " << technique.name << ", --search "
+                          << options.search << "), measured alone: acne <= " << options.maxAcnePercent << " %, then";
+                if (scope.search != TuneSearch::TradeOff)
+                    std::cout << " (bias) fewest wrong pixels beyond k, smallest edge error, smallest bias;";
+                if (scope.search != TuneSearch::Bias && !technique.tradeOff.empty())
+                    std::cout << " (technique) the least "
+                              << (soft ? "mean |S-V| against the soft reference, then bleeding, over-darkening (lights." +
+                                             std::to_string(index) + ".size > 0)"
+                                       : std::string("mean |S-V|, then leak (lit umbra pixels), acne"));
+                std::cout << "\n";
+                if (scope.search == TuneSearch::Bias || scope.search == TuneSearch::Both ||
+                    (scope.search == TuneSearch::Auto && technique.tradeOff.empty()))
+                    std::cout << "  #  phase                                 DepthBias   slope  normal cull  rpb   acne %"
+                                 "   leak %  wrong %  wrong>k edge tx\n";
             });
             const TuneResult result =
                 tuneBias(meter, scene, *one, camera, options.width, options.height, options.maxAcnePercent,
                          &accuracyProgress,
                          [&](const TuneStep& step) {
-                             progress.above([&] { std::cout << stepLine(step) << std::endl; });
-                         });
+                             progress.above([&] {
+                                 if (!step.tradeOffStep) {
+                                     std::cout << stepLine(step) << std::endl;
+                                     return;
+                                 }
+                                 if (!tradeOffHeaderShown) {
+                                     std::vector<std::string> keys;
+                                     for (const TradeOffRange& range : technique.tradeOff)
+                                         if (k == 0 || std::string(range.key).rfind("lights.#.", 0) == 0)
+                                             keys.push_back(range.key);
+                                     std::cout << tradeOffHeader(keys, step.soft) << "\n";
+                                     tradeOffHeaderShown = true;
+                                 }
+                                 std::cout << tradeOffLine(step) << std::endl;
+                             });
+                         },
+                         scope);
             progress.pause();  // the light's result is printed below
             if (!result.ok) return fail(label + ": " + result.error);
 
             const ShadowMapSettings& best = result.closest.lights[0].shadow;
             const std::string cull = cullModeName(best.cullMode);
+            // The technique's values the search chose, and the criterion's figures there.
+            nlohmann::json chosenValues = nlohmann::json::object();
+            for (const std::string& key : result.tradeOffKeys)
+                chosenValues[keyOfLight(key, index)] = findSettingsField(key)->get(result.closest);
+            for (const std::string& clamp : result.startClamps) std::cout << "start: " << clamp << "\n";
+            if (result.tradeOffSearched) {
+                const TuneStep* bestStep = nullptr;
+                for (const TuneStep& s : result.path)
+                    if (s.tradeOffStep && s.bestSoFar) bestStep = &s;
+                double candidatesMs = 0.0;
+                std::size_t candidates = 0;
+                for (const TuneStep& s : result.path)
+                    if (s.tradeOffStep) candidatesMs += s.costMs, ++candidates;
+                std::cout << "\n" << (result.reachedLimit ? "result" : "closest") << " (" << technique.name
+                          << "): " << label << ":";
+                for (auto it = chosenValues.begin(); it != chosenValues.end(); ++it)
+                    std::cout << " " << it.key() << " " << it.value().dump();
+                if (bestStep)
+                    std::cout << "; acne " << bestStep->acnePercent << " %, "
+                              << (bestStep->soft ? "soft mean |S-V| " : "mean |S-V| ") << tradeOffError(*bestStep) << ", "
+                              << (bestStep->soft ? "bleeding " : "leak ") << tradeOffBleeding(*bestStep) << " %, "
+                              << (bestStep->soft ? "over-darkening " : "acne ") << tradeOffDarkening(*bestStep) << " %";
+                std::cout << " (" << candidates << " technique candidates, " << candidatesMs / 1000.0
+                          << " s measuring)\n";
+                if (result.reachedLimit)
+                    for (auto it = chosenValues.begin(); it != chosenValues.end(); ++it)
+                        findSettingsField(it.key())->set(tuned, it.value());
+            }
+            const bool biasSearched = std::any_of(result.path.begin(), result.path.end(),
+                                                  [](const TuneStep& s) { return !s.tradeOffStep; });
             if (result.reachedLimit) {
-                std::cout << "\nresult: " << label << ": DepthBias " << best.depthBias << ", SlopeScaledDepthBias "
-                          << best.slopeScaledDepthBias << ", normal offset " << best.normalOffset
-                          << " texels, cullMode " << cull << ", receiverPlaneBias "
-                          << (best.receiverPlaneBias ? "true" : "false") << " (" << result.path.size()
-                          << " candidates in " << result.seconds << " s)\n";
+                if (biasSearched)
+                    std::cout << "\nresult: " << label << ": DepthBias " << best.depthBias
+                              << ", SlopeScaledDepthBias " << best.slopeScaledDepthBias << ", normal offset "
+                              << best.normalOffset << " texels, cullMode " << cull << ", receiverPlaneBias "
+                              << (best.receiverPlaneBias ? "true" : "false") << " (" << result.path.size()
+                              << " candidates in " << result.seconds << " s)\n";
                 if (const std::string why = receiverPlaneChoice(result); !why.empty()) std::cout << why << "\n";
                 if (!result.report.cascades.cascades.empty()) {  // the one setting, judged in every cascade
                     std::cout << "holds in every cascade:";
@@ -151,7 +273,16 @@ int runTune(const TuneOptions& options) {
                                 {"wrongPixelsPercent", s.wrongPercent}, {"wrongBeyondK", s.wrongBeyondK},
                                 {"meanError", s.meanError}, {"edgeErrorP95Texels", s.edgeErrorTexels},
                                 {"withinLimit", s.withinLimit}, {"bestSoFar", s.bestSoFar},
-                                {"cascadeAcnePercent", s.cascadeAcnePercent}});
+                                {"cascadeAcnePercent", s.cascadeAcnePercent}, {"tradeOffStep", s.tradeOffStep},
+                                {"tradeOff", tradeOffJson(result, s, index)},
+                                {"soft", s.soft
+                                             ? nlohmann::json{{"meanError", s.softMeanError},
+                                                              {"wrongPixelsPercent", s.softWrongPercent},
+                                                              {"bleedingPercent", s.bleedingPercent},
+                                                              {"overDarkeningPercent", s.overDarkeningPercent},
+                                                              {"penumbraWidthErrorWorld", s.penumbraErrorWorld}}
+                                             : nlohmann::json(nullptr)},
+                                {"costMs", s.costMs}, {"toolFrameMs", s.toolFrameMs}});
             lightsJson.push_back({{"index", index},
                                   {"reachedLimit", result.reachedLimit},
                                   {"blockingCause", causeInfo(result.blockingCause).key},
@@ -166,6 +297,11 @@ int runTune(const TuneOptions& options) {
                                     {"normalOffset", best.normalOffset}, {"cullMode", cull},
                                     {"receiverPlaneBias", best.receiverPlaneBias}}},
                                   {"receiverPlaneChoice", receiverPlaneChoice(result)},
+                                  {"search", tuneSearchName(scope.search)},
+                                  {"tradeOffSearched", result.tradeOffSearched},
+                                  {"tradeOffKeys", result.tradeOffKeys},
+                                  {"tradeOffChosen", chosenValues},
+                                  {"startClamps", result.startClamps},
                                   {"report", accuracyToJson(result.report)},
                                   {"path", path}});
         }

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <optional>
 
 namespace shadowlab {
@@ -102,9 +103,51 @@ std::string receiverPlaneChoice(const TuneResult& result) {
     return text;
 }
 
+double tradeOffError(const TuneStep& s) { return s.soft ? s.softMeanError : s.meanError; }
+double tradeOffBleeding(const TuneStep& s) { return s.soft ? s.bleedingPercent : s.leakPercent; }
+double tradeOffDarkening(const TuneStep& s) { return s.soft ? s.overDarkeningPercent : s.acnePercent; }
+
+bool betterTradeOff(const TuneStep& a, const TuneStep& b) {
+    if (a.withinLimit != b.withinLimit) return a.withinLimit;
+    const double ea = tradeOffError(a), eb = tradeOffError(b);
+    if (!a.withinLimit) {
+        if (limitingAcne(a) != limitingAcne(b)) return limitingAcne(a) < limitingAcne(b);
+        return ea < eb;
+    }
+    if (std::abs(ea - eb) > kTradeOffTie * std::max(ea, eb)) return ea < eb;
+    if (tradeOffBleeding(a) != tradeOffBleeding(b)) return tradeOffBleeding(a) < tradeOffBleeding(b);
+    if (tradeOffDarkening(a) != tradeOffDarkening(b)) return tradeOffDarkening(a) < tradeOffDarkening(b);
+    return ea < eb;
+}
+
+namespace {
+constexpr std::pair<TuneSearch, const char*> kSearchNames[] = {
+    {TuneSearch::Auto, "auto"}, {TuneSearch::Bias, "bias"}, {TuneSearch::TradeOff, "technique"},
+    {TuneSearch::Both, "both"}};
+
+// A trade-off key of the one light the tuner sees: "lights.#.size" is light 0's.
+std::string tradeOffKeyOf(const TradeOffRange& range) {
+    std::string key = range.key;
+    if (const std::size_t at = key.find("#"); at != std::string::npos) key.replace(at, 1, "0");
+    return key;
+}
+}  // namespace
+
+const char* tuneSearchName(TuneSearch search) {
+    for (const auto& [value, name] : kSearchNames)
+        if (value == search) return name;
+    return "?";
+}
+
+std::optional<TuneSearch> parseTuneSearch(const std::string& name) {
+    for (const auto& [value, text] : kSearchNames)
+        if (name == text) return value;
+    return std::nullopt;
+}
+
 TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& start, const Camera& camera, int width,
                     int height, double maxAcnePercent, AccuracyProgress* progress,
-                    std::function<void(const TuneStep&)> onStep) {
+                    std::function<void(const TuneStep&)> onStep, TuneScope scope) {
     const auto started = std::chrono::steady_clock::now();
     TuneResult result;
     result.best = start;
@@ -125,6 +168,34 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     if (!(maxAcnePercent >= 0.0)) {
         result.error = "the acne limit must be a percentage >= 0";
         return finish();
+    }
+
+    // What is searched: the technique's own trade-off (the keys its unit declares) and / or the depth bias.
+    const FilterTechnique& technique = filterTechnique(start.filter.kind);
+    std::vector<TradeOffRange> ranges;
+    for (const TradeOffRange& range : technique.tradeOff)
+        if (scope.globalKeys || std::string(range.key).rfind("lights.#.", 0) == 0) ranges.push_back(range);
+    TuneSearch search = scope.search;
+    if (search == TuneSearch::Auto) search = ranges.empty() ? TuneSearch::Bias : TuneSearch::TradeOff;
+    const bool biasSearch = search == TuneSearch::Bias || search == TuneSearch::Both;
+    const bool tradeOffSearch = search == TuneSearch::TradeOff || search == TuneSearch::Both;
+    if (tradeOffSearch && ranges.empty()) {
+        result.error = std::string("filter.kind ") + technique.name +
+                       (technique.tradeOff.empty() ? " declares no trade-off keys to tune"
+                                                   : " declares only global trade-off keys, tuned on the first light") +
+                       ": search the bias instead";
+        return finish();
+    }
+    std::vector<const SettingsField*> tradeOffFields;
+    for (const TradeOffRange& range : ranges) {
+        const SettingsField* field = findSettingsField(tradeOffKeyOf(range));
+        if (!field) {
+            result.error = std::string("filter.kind ") + technique.name + "'s trade-off key " + range.key +
+                           " is not a settings key";
+            return finish();
+        }
+        tradeOffFields.push_back(field);
+        result.tradeOffKeys.push_back(field->key);
     }
 
     // DepthBias units per texel, from the light space the renderer will build for these settings.
@@ -151,7 +222,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
     }
     std::sort(perView.begin(), perView.end());
     const double unitTexels = perView.empty() ? 0.0 : perView[perView.size() / 2];
-    if (!(unitTexels > 0.0)) {
+    if (biasSearch && !(unitTexels > 0.0)) {
         result.error = "cannot relate DepthBias to texels for this light";
         return finish();
     }
@@ -166,10 +237,15 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         return s;
     };
 
-    std::optional<std::size_t> bestIndex;  // into result.path
+    std::optional<std::size_t> bestIndex;  // into result.path, of the current search
     std::size_t lastCulled = 0;            // wrong pixels the last candidate's culled casters cause
     bool stop = false;
-    int plannedSteps = kMaxSteps;
+    int plannedSteps = biasSearch ? kMaxSteps : 0;
+    for (const TradeOffRange& range : ranges)  // two rounds at most
+        plannedSteps += 2 * int(tradeOffCandidates(range, start).size());
+    // The search's order: the bias criterion, then (for the trade-off search) betterTradeOff.
+    bool (*better)(const TuneStep&, const TuneStep&) = betterCandidate;
+    bool tradeOffPhase = false;
     // Measures one candidate; returns whether its acne is within the limit (nullopt: failed or cancelled).
     auto measure = [&](const std::string& phase, const Settings& s, double magnitude) -> std::optional<bool> {
         if (stop) return std::nullopt;
@@ -213,6 +289,19 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         step.meanError = report.meanError;
         step.edgeErrorTexels = report.edgeErrorP95Texels;
         step.withinLimit = report.acnePercent <= maxAcnePercent;
+        step.tradeOffStep = tradeOffPhase;
+        if (tradeOffPhase)
+            for (const SettingsField* field : tradeOffFields) step.tradeOff.push_back(field->get(s).get<double>());
+        if (report.soft.measured) {
+            step.soft = true;
+            step.softMeanError = report.soft.meanError;
+            step.softWrongPercent = report.soft.wrongPercent;
+            step.bleedingPercent = report.soft.bleedingPercent;
+            step.overDarkeningPercent = report.soft.overDarkeningPercent;
+            step.penumbraErrorWorld = report.soft.penumbra.errorWorld;
+        }
+        step.costMs = report.cost.totalMs;
+        step.toolFrameMs = report.cost.toolFrameMs;
         // A cascaded light: one setting for every cascade, each judged on the pixels it holds.
         for (const CascadeNumbers& c : report.cascades.cascades) {
             step.cascadeAcnePercent.push_back(c.acnePercent);
@@ -222,7 +311,7 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
             step.withinLimit = step.withinLimit && c.acnePercent <= maxAcnePercent;
         }
         lastCulled = report.counts.causeWrong[std::size_t(MismatchCause::CasterCulled)];
-        if (!bestIndex || betterCandidate(step, result.path[*bestIndex])) {
+        if (!bestIndex || better(step, result.path[*bestIndex])) {
             step.bestSoFar = true;
             bestIndex = result.path.size();
             result.closest = s;
@@ -236,86 +325,140 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
         return step.withinLimit;
     };
 
-    // 1. The given preset, and no bias at all.
-    const Candidate given{double(start.lights[0].shadow.depthBias) * unitTexels, start.lights[0].shadow.slopeScaledDepthBias,
-                          start.lights[0].shadow.normalOffset};
-    const Variant startVariant{start.lights[0].shadow.cullMode, start.lights[0].shadow.receiverPlaneBias};
-    measure("start (the given settings)", start, given.magnitude());
-    std::size_t culled = lastCulled;
-    const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}, startVariant), 0.0);
-    if (stop) return finish();
-    culled = std::max(culled, lastCulled);
+    bool planeApplies = false;  // the bias search ran both ways of receiver-plane bias
+    if (biasSearch) {
+        // 1. The given preset, and no bias at all.
+        const Candidate given{double(start.lights[0].shadow.depthBias) * unitTexels, start.lights[0].shadow.slopeScaledDepthBias,
+                              start.lights[0].shadow.normalOffset};
+        const Variant startVariant{start.lights[0].shadow.cullMode, start.lights[0].shadow.receiverPlaneBias};
+        measure("start (the given settings)", start, given.magnitude());
+        std::size_t culled = lastCulled;
+        const std::optional<bool> zeroPasses = measure("zero bias", settingsFor({}, startVariant), 0.0);
+        if (stop) return finish();
+        culled = std::max(culled, lastCulled);
 
-    // 2. Culled casters cause wrong pixels: the other cull modes join the search when they cull less.
-    std::vector<std::pair<Variant, bool>> modes = {{startVariant, zeroPasses.value_or(false)}};
-    if (culled > 0) {
-        for (CullMode mode : {CullMode::None, CullMode::Back, CullMode::Front}) {
-            if (mode == startVariant.cull) continue;
-            const Variant v{mode, startVariant.plane};
-            const std::optional<bool> passes =
-                measure(std::string("zero bias, cull ") + cullModeName(mode), settingsFor({}, v), 0.0);
-            if (stop) return finish();
-            if (lastCulled < culled) {
+        // 2. Culled casters cause wrong pixels: the other cull modes join the search when they cull less.
+        std::vector<std::pair<Variant, bool>> modes = {{startVariant, zeroPasses.value_or(false)}};
+        if (culled > 0) {
+            for (CullMode mode : {CullMode::None, CullMode::Back, CullMode::Front}) {
+                if (mode == startVariant.cull) continue;
+                const Variant v{mode, startVariant.plane};
+                const std::optional<bool> passes =
+                    measure(std::string("zero bias, cull ") + cullModeName(mode), settingsFor({}, v), 0.0);
+                if (stop) return finish();
+                if (lastCulled < culled) {
+                    modes.emplace_back(v, passes.value_or(false));
+                    plannedSteps += 4 * (10 + kBisections);
+                }
+            }
+        }
+        // 2b. A filter whose taps spread (PCF, Poisson) on a directional or spot light: the search runs with
+        //     receiver-plane bias the other way too, and the usual criterion picks between them.
+        planeApplies = technique.receiverPlane && lit.lights[0].type != LightType::Point;
+        if (planeApplies) {
+            const std::size_t count = modes.size();
+            for (std::size_t i = 0; i < count; ++i) {
+                const Variant v{modes[i].first.cull, !modes[i].first.plane};
+                const std::optional<bool> passes =
+                    measure(std::string("zero bias, receiver plane ") + (v.plane ? "on" : "off"), settingsFor({}, v), 0.0);
+                if (stop) return finish();
                 modes.emplace_back(v, passes.value_or(false));
                 plannedSteps += 4 * (10 + kBisections);
             }
         }
-    }
-    // 2b. A filter whose taps spread (PCF, Poisson) on a directional or spot light: the search runs with
-    //     receiver-plane bias the other way too, and the usual criterion picks between them.
-    const bool planeApplies = filterTechnique(start.filter.kind).receiverPlane && lit.lights[0].type != LightType::Point;
-    if (planeApplies) {
-        const std::size_t count = modes.size();
-        for (std::size_t i = 0; i < count; ++i) {
-            const Variant v{modes[i].first.cull, !modes[i].first.plane};
-            const std::optional<bool> passes =
-                measure(std::string("zero bias, receiver plane ") + (v.plane ? "on" : "off"), settingsFor({}, v), 0.0);
-            if (stop) return finish();
-            modes.emplace_back(v, passes.value_or(false));
-            plannedSteps += 4 * (10 + kBisections);
+
+        // 3. Along each direction: double until acne is within the limit, then bisect back toward the smallest bias
+        //    that still is (leak only grows with bias, so that is the family's least-leak setting).
+        const double kRide = 0.02;  // a hair of constant bias: slope alone does nothing on receivers facing the light
+        const std::vector<Family> families = {
+            {"slope", [&](double t) { return Candidate{kRide, t, 0.0}; }, kMaxSlope},
+            {"normal offset", [](double t) { return Candidate{0.0, 0.0, t}; }, kMaxNormalTexels},
+            {"slope + normal offset", [&](double t) { return Candidate{kRide, t, t / 2.0}; }, kMaxSlope},
+            {"constant", [](double t) { return Candidate{t, 0.0, 0.0}; }, kMaxDepthBiasUnits * unitTexels},
+        };
+        for (const auto& [mode, passesAtZero] : modes) {
+            if (passesAtZero) continue;
+            std::string suffix = mode.cull == startVariant.cull ? "" : std::string(", cull ") + cullModeName(mode.cull);
+            if (mode.plane != startVariant.plane) suffix += mode.plane ? ", receiver plane" : ", no receiver plane";
+            for (const Family& family : families) {
+                double failing = 0.0, passing = -1.0;
+                for (double t = 0.25;; t = std::min(t * 2.0, family.tMax)) {
+                    const Candidate c = family.at(t);
+                    const std::optional<bool> ok =
+                        measure(std::string("grow ") + family.name + suffix, settingsFor(c, mode), c.magnitude());
+                    if (stop) return finish();
+                    if (*ok) {
+                        passing = t;
+                        break;
+                    }
+                    failing = t;
+                    if (t >= family.tMax) break;
+                }
+                if (passing < 0.0) continue;
+                for (int i = 0; i < kBisections; ++i) {
+                    const double mid = 0.5 * (failing + passing);
+                    const Candidate c = family.at(mid);
+                    const std::optional<bool> ok =
+                        measure(std::string("bisect ") + family.name + suffix, settingsFor(c, mode), c.magnitude());
+                    if (stop) return finish();
+                    (*ok ? passing : failing) = mid;
+                }
+            }
         }
     }
 
-    // 3. Along each direction: double until acne is within the limit, then bisect back toward the smallest bias
-    //    that still is (leak only grows with bias, so that is the family's least-leak setting).
-    const double kRide = 0.02;  // a hair of constant bias: slope alone does nothing on receivers facing the light
-    const std::vector<Family> families = {
-        {"slope", [&](double t) { return Candidate{kRide, t, 0.0}; }, kMaxSlope},
-        {"normal offset", [](double t) { return Candidate{0.0, 0.0, t}; }, kMaxNormalTexels},
-        {"slope + normal offset", [&](double t) { return Candidate{kRide, t, t / 2.0}; }, kMaxSlope},
-        {"constant", [](double t) { return Candidate{t, 0.0, 0.0}; }, kMaxDepthBiasUnits * unitTexels},
-    };
-    for (const auto& [mode, passesAtZero] : modes) {
-        if (passesAtZero) continue;
-        std::string suffix = mode.cull == startVariant.cull ? "" : std::string(", cull ") + cullModeName(mode.cull);
-        if (mode.plane != startVariant.plane) suffix += mode.plane ? ", receiver plane" : ", no receiver plane";
-        for (const Family& family : families) {
-            double failing = 0.0, passing = -1.0;
-            for (double t = 0.25;; t = std::min(t * 2.0, family.tMax)) {
-                const Candidate c = family.at(t);
-                const std::optional<bool> ok =
-                    measure(std::string("grow ") + family.name + suffix, settingsFor(c, mode), c.magnitude());
-                if (stop) return finish();
-                if (*ok) {
-                    passing = t;
-                    break;
-                }
-                failing = t;
-                if (t >= family.tMax) break;
-            }
-            if (passing < 0.0) continue;
-            for (int i = 0; i < kBisections; ++i) {
-                const double mid = 0.5 * (failing + passing);
-                const Candidate c = family.at(mid);
-                const std::optional<bool> ok =
-                    measure(std::string("bisect ") + family.name + suffix, settingsFor(c, mode), c.magnitude());
-                if (stop) return finish();
-                (*ok ? passing : failing) = mid;
-            }
+    // 4. The technique's own trade-off, from the bias found (or the given settings): one key at a time over its
+    //    declared candidates, the others at the best so far; a second round when the first moved a key.
+    if (tradeOffSearch) {
+        Settings from = biasSearch ? result.closest : start;
+        // A start value above what the settings can use is lowered to it (the renderer would clamp it anyway):
+        // the tuner never proposes a value it would clamp.
+        for (std::size_t k = 0; k < ranges.size(); ++k) {
+            const double value = tradeOffFields[k]->get(from).get<double>();
+            const double top = tradeOffTop(ranges[k], from);
+            if (value <= top) continue;
+            tradeOffFields[k]->set(from, top);
+            char text[200];
+            std::snprintf(text, sizeof text, "%s %g lowered to %g (what these settings use)",
+                          tradeOffFields[k]->key.c_str(), value, top);
+            result.startClamps.push_back(text);
         }
+        tradeOffPhase = true;
+        better = betterTradeOff;
+        bestIndex.reset();
+        std::map<std::vector<double>, bool> seen;  // the candidates measured (by their trade-off values)
+        auto valuesOf = [&](const Settings& s) {
+            std::vector<double> values;
+            for (const SettingsField* field : tradeOffFields) values.push_back(field->get(s).get<double>());
+            return values;
+        };
+        auto tryCandidate = [&](const std::string& phase, const Settings& s) {
+            if (!seen.emplace(valuesOf(s), true).second) return;
+            measure(phase, s, 0.0);
+        };
+        tryCandidate(biasSearch ? "trade-off start (the bias found)" : "start (the given settings)", from);
+        if (stop) return finish();
+        for (int round = 0; round < 2; ++round) {
+            const std::vector<double> before = result.path[*bestIndex].tradeOff;
+            for (std::size_t k = 0; k < ranges.size(); ++k) {
+                const Settings centre = result.closest;  // the best so far: every other key at its best
+                for (double value : tradeOffCandidates(ranges[k], centre)) {
+                    Settings s = centre;
+                    if (std::string error = tradeOffFields[k]->set(s, value); !error.empty()) {
+                        result.error = std::string("filter.kind ") + technique.name + "'s trade-off range: " + error;
+                        return finish();
+                    }
+                    tryCandidate("trade-off " + tradeOffFields[k]->key, s);
+                    if (stop) return finish();
+                }
+            }
+            if (result.path[*bestIndex].tradeOff == before) break;
+        }
+        result.tradeOffSearched = true;
     }
 
     for (const TuneStep& step : result.path) {
+        if (step.tradeOffStep) continue;
         std::optional<TuneStep>& best = result.bestByPlane[step.receiverPlaneBias ? 1 : 0];
         if (!best || betterCandidate(step, *best)) best = step;
     }

@@ -1,10 +1,16 @@
 #pragma once
-// Suggests DepthBias, SlopeScaledDepthBias, normal offset, with a PCF / Poisson filter whether to use receiver-plane
-// depth bias (each way is searched; the plane usually needs far less slope bias) and, when culled casters cause wrong
-// pixels, the shadow pass's cull mode: among the candidates whose acne (metrics version 2) is at most maxAcnePercent, the fewest wrong
-// pixels beyond k, then the smallest edge error, then the smallest bias. It never suggests a setting above the limit:
-// when none reaches it, it says so and names the cause that stops it. Candidates are measured with an AccuracyMeter
-// (each costs one tool frame: the reference is cached). Other settings are kept as given.
+// The tuner. Its bias search suggests DepthBias, SlopeScaledDepthBias, normal offset, with a PCF / Poisson filter
+// whether to use receiver-plane depth bias (each way is searched; the plane usually needs far less slope bias) and,
+// when culled casters cause wrong pixels, the shadow pass's cull mode: among the candidates whose acne (metrics
+// version 2) is at most maxAcnePercent, the fewest wrong pixels beyond k, then the smallest edge error, then the
+// smallest bias. Its trade-off search varies the keys the filter technique declares (FilterTechnique::tradeOff: VSM's
+// minimum variance and bleeding reduction, EVSM's exponents, MSM's moment bias...), one key at a time over its
+// declared candidates with the others at the best so far (at most two rounds), and keeps among the candidates with
+// acne <= maxAcnePercent the least error: a light with a size, the soft metrics against the soft reference (mean
+// |S-V|, then bleeding, then over-darkening); a hard light, version 2's (mean |S-V|, then leak = lit umbra pixels,
+// then acne). It never suggests a setting above the limit: when none reaches it, it says so and names the cause that
+// stops it. Candidates are measured with an AccuracyMeter (each costs one tool frame: the reference is cached).
+// Other settings are kept as given.
 #include "accuracy/accuracy_meter.h"
 
 #include <functional>
@@ -34,7 +40,45 @@ struct TuneStep {
     std::vector<double> cascadeAcnePercent;
     int worstCascade = -1;
     bool withinLimit = false;        // acnePercent <= maxAcnePercent (a cascaded light: in every judged cascade too)
-    bool bestSoFar = false;          // this candidate became the best so far
+    bool bestSoFar = false;          // this candidate became the best so far (of its search: bias or trade-off)
+    // The trade-off search's candidates: the values of TuneResult::tradeOffKeys (empty for a bias candidate).
+    bool tradeOffStep = false;
+    std::vector<double> tradeOff;
+    // A light with a size: the soft numbers against the soft reference (soft_metrics.h).
+    bool soft = false;
+    double softMeanError = 0.0;
+    double softWrongPercent = 0.0;
+    double bleedingPercent = 0.0;
+    double overDarkeningPercent = 0.0;
+    double penumbraErrorWorld = 0.0;
+    // What the candidate cost: the whole measurement (the first also builds the reference) and its tool frame.
+    double costMs = 0.0;
+    double toolFrameMs = 0.0;
+};
+
+// What the trade-off search compares (a light with a size: the soft numbers; else version 2's): the error, the
+// bleeding (light in the true umbra) and the darkening of lit ground.
+double tradeOffError(const TuneStep& s);
+double tradeOffBleeding(const TuneStep& s);
+double tradeOffDarkening(const TuneStep& s);
+// Errors within this share of each other are a tie, decided by bleeding, then darkening.
+inline constexpr double kTradeOffTie = 0.01;
+// Is a a better trade-off than b? Within the acne limit first; among those the least error (ties: kTradeOffTie), then
+// the least bleeding, then the least darkening; outside the limit, the least acne.
+bool betterTradeOff(const TuneStep& a, const TuneStep& b);
+
+// What `tune` searches: the depth bias, the technique's trade-off keys, or both (the bias first, then the trade-off
+// from the bias found). Auto: the trade-off when the technique declares one, else the bias.
+enum class TuneSearch { Auto, Bias, TradeOff, Both };
+// "auto", "bias", "technique", "both" (the CLI's --search values); parseTuneSearch: nullopt for another name.
+const char* tuneSearchName(TuneSearch search);
+std::optional<TuneSearch> parseTuneSearch(const std::string& name);
+
+struct TuneScope {
+    TuneSearch search = TuneSearch::Bias;
+    // false: only the technique's per-light keys ("lights.#.") are searched, its global ones (filter.*) stay as given
+    // (a later light of several: the global keys were tuned on the first).
+    bool globalKeys = true;
 };
 
 // A cascade holding fewer measured pixels than this is not judged on its own (one acne pixel of 20 is 5 %); its
@@ -73,6 +117,12 @@ struct TuneResult {
     // When the search ran both ways (PCF / Poisson): the best candidate with receiver-plane bias and without it, by
     // the same criterion; index 0 = off, 1 = on (nullopt: that way was not searched).
     std::optional<TuneStep> bestByPlane[2];
+    // The trade-off search (when it ran): the keys it varied ("filter.minVariance", "lights.0.size"...), in the order
+    // of TuneStep::tradeOff, and each value of the start it lowered to what the settings can use (EVSM's exponents
+    // at 16 bits), in words.
+    bool tradeOffSearched = false;
+    std::vector<std::string> tradeOffKeys;
+    std::vector<std::string> startClamps;
 };
 
 // Why the tuner kept or dropped receiver-plane bias, in one sentence ("" when it searched only one way).
@@ -80,6 +130,6 @@ std::string receiverPlaneChoice(const TuneResult& result);
 
 TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& start, const Camera& camera, int width,
                     int height, double maxAcnePercent = 0.1, AccuracyProgress* progress = nullptr,
-                    std::function<void(const TuneStep&)> onStep = {});
+                    std::function<void(const TuneStep&)> onStep = {}, TuneScope scope = {});
 
 }  // namespace shadowlab

@@ -23,10 +23,67 @@ double errorAt(const AccuracyReport& r, std::size_t i) {
     return std::abs(double(r.pixelShadow[i]) - (isLit(r.pixelClass[i]) ? 1.0 : 0.0));
 }
 
+// The whole picture's soft numbers (see the header); unmeasured when no light has a size.
+SoftAccuracy combineSoft(const ManyLightsReport& many, std::size_t count) {
+    SoftAccuracy whole;
+    for (const LightAccuracy& light : many.lights)
+        if (light.report.soft.measured && std::abs(light.report.soft.penumbra.errorWorld) >=
+                                              std::abs(whole.penumbra.errorWorld)) {
+            whole.measured = true;
+            whole.penumbra = light.report.soft.penumbra;
+        }
+    if (!whole.measured) return whole;
+    whole.light = many.lights.size();  // none: every light
+    whole.rays = 0;
+    SoftCounts& c = whole.counts;
+    double errorSum = 0.0;
+    for (std::size_t i = 0; i < count; ++i) {
+        bool measured = false, umbra = false, fullyLit = false, penumbra = false, wrong = false, bleeding = false,
+             overDarkened = false;
+        double worstError = 0.0;
+        for (const LightAccuracy& light : many.lights) {
+            const AccuracyReport& r = light.report;
+            if (!r.pixelMeasured[i]) continue;
+            measured = true;
+            const double v = r.pixelSoftVisibility.empty() ? (isLit(r.pixelClass[i]) ? 1.0 : 0.0)
+                                                           : double(r.pixelSoftVisibility[i]);
+            const double s = r.pixelShadow[i];
+            const double error = std::abs(s - v);
+            worstError = std::max(worstError, error);
+            wrong = wrong || error >= kWrongError;
+            if (v == 0.0) {
+                umbra = true;
+                bleeding = bleeding || s > kVisibleStep;
+            } else if (v == 1.0) {
+                fullyLit = true;
+                overDarkened = overDarkened || s < kLitBelow;
+            } else {
+                penumbra = true;
+            }
+        }
+        if (!measured) continue;
+        ++c.measured;
+        errorSum += worstError;
+        c.wrong += wrong;
+        c.umbra += umbra;
+        c.fullyLit += fullyLit;
+        c.penumbra += penumbra;
+        c.bleeding += bleeding;
+        c.overDarkened += overDarkened;
+    }
+    const auto percent = [](std::size_t part, std::size_t all) { return all ? 100.0 * double(part) / double(all) : 0.0; };
+    whole.wrongPercent = percent(c.wrong, c.measured);
+    whole.meanError = c.measured ? errorSum / double(c.measured) : 0.0;
+    whole.bleedingPercent = percent(c.bleeding, c.umbra);
+    whole.overDarkeningPercent = percent(c.overDarkened, c.fullyLit);
+    return whole;
+}
+
 }  // namespace
 
 void combineLights(ManyLightsReport& many) {
     many.whole = AccuracyNumbers{};
+    many.wholeSoft = SoftAccuracy{};
     many.unreached = 0;
     if (many.lights.empty()) return;
     const int width = many.lights.front().report.width, height = many.lights.front().report.height;
@@ -133,6 +190,7 @@ void combineLights(ManyLightsReport& many) {
     w.leakPercent = c.shadowed ? 100.0 * double(c.leak) / double(c.shadowed) : 0.0;
     w.wrongPercent = c.measured ? 100.0 * double(c.wrong) / double(c.measured) : 0.0;
     w.meanError = c.measured ? errorSum / double(c.measured) : 0.0;
+    many.wholeSoft = combineSoft(many, count);
 }
 
 ManyLightsReport measureLights(AccuracyMeter& meter, const Scene& scene, const Settings& settings,

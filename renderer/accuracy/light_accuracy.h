@@ -17,6 +17,13 @@
 //   mean error    = mean over measured pixels of the largest |S-V| among the lights that reach the pixel
 //   edge error    = the largest of the lights' edge errors (each unit on its own): a bound, not a percentile
 //   causes        = each mismatched pixel counted once, under the cause of its worst light
+// With a light of size > 0 among them, the whole picture's soft numbers (version 3), each pixel once over the lights
+// that score it, V being a sized light's soft visibility and a hard light's exact one:
+//   wrong          = pixels with |S-V| >= 0.5 for ANY light; mean error = mean of the largest |S-V| among the lights
+//   bleeding       = pixels some light's umbra (V = 0) holds that that light lights (S > e), over pixels in some umbra
+//   over-darkening = pixels some light fully lights (V = 1) that that light darkens (S < 1-e), over pixels fully lit
+//                    by some light
+//   penumbra width error = the lights' largest in magnitude (each is a median over its own profiles): a bound
 // The worst light at a pixel: acne / leak beyond k (wrong first) > mismatched within k (wrong first), then the larger
 // |S-V|; so the union overlay shows a counted acne / leak colour wherever any light has one.
 // The overlays of the whole picture colour each pixel as its worst light's overlay does; pixels no light gets
@@ -49,6 +56,7 @@ struct ManyLightsReport {
     AccuracyNumbers whole;                    // see above; counts.pixels/background/nonFinite/coverageMismatch are
                                               // the largest over the lights, other exclusion counts stay 0
     std::size_t unreached = 0;                // surface pixels no measured light scores
+    SoftAccuracy wholeSoft;                   // see above; measured only when some measured light has a size
     int width = 0;
     int height = 0;
     std::vector<std::uint8_t> overlayRgba;       // the union, coloured by each pixel's worst light

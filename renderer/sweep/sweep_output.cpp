@@ -12,6 +12,21 @@ namespace shadowlab {
 
 namespace {
 
+// A light with a size: the soft numbers against the soft reference; null for a hard light.
+nlohmann::json softToJson(const SoftAccuracy& soft) {
+    if (!soft.measured) return nullptr;
+    return {{"metricsVersion", soft.metricsVersion},
+            {"size", soft.size},
+            {"sizeUnit", soft.sizeUnit},
+            {"rays", soft.rays},
+            {"wrongPixelsPercent", soft.wrongPercent},
+            {"meanError", soft.meanError},
+            {"bleedingPercent", soft.bleedingPercent},
+            {"overDarkeningPercent", soft.overDarkeningPercent},
+            {"penumbraWidthErrorWorld", soft.penumbra.errorWorld},
+            {"penumbraWidthErrorTexels", soft.penumbra.errorTexels}};
+}
+
 nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p) {
     nlohmann::json values = nlohmann::json::object();
     for (std::size_t a = 0; a < result.axes.size() && a < p.values.size(); ++a) values[result.axes[a].key] = p.values[a];
@@ -19,6 +34,8 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
     return {{"label", p.label},
             {"values", values},
             {"shadowPassMs", p.shadowMs},
+            {"momentsPassMs", p.momentsMs},
+            {"blurPassMs", p.blurMs},
             {"mainPassMs", p.mainMs},
             {"costMs", p.costMs},
             {"shadowPassMinMs", p.shadowMinMs},
@@ -37,6 +54,7 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
             {"edgeErrorP95Texels", n.edgeErrorP95Texels},
             {"edgeErrorP95World", n.edgeErrorP95World},
             {"edgeErrorP95ScreenPixels", n.edgeErrorP95ScreenPixels},
+            {"soft", softToJson(p.soft)},
             {"kTexels", p.kTexels},
             {"coarseMap", p.coarseMap},
             {"paretoFront", p.onFront},
@@ -68,7 +86,8 @@ nlohmann::json sweepToJson(const SweepResult& result) {
     for (std::size_t k = 0; k < result.front.size(); ++k) {
         const SweepPointResult& p = result.points[result.front[k]];
         nlohmann::json step = {{"point", result.front[k]}, {"label", p.label}, {"costMs", p.costMs},
-                               {"wrongPixelsPercent", p.accuracy.wrongPercent}};
+                               {"wrongPixelsPercent", p.accuracy.wrongPercent},
+                               {"error", sweepError(p, sweepSoftError(result))}};
         if (k > 0) step["stepUp"] = frontStepText(result.points[result.front[k - 1]], p);
         front.push_back(step);
     }
@@ -83,6 +102,7 @@ nlohmann::json sweepToJson(const SweepResult& result) {
                           {"bareDraws", bare},
                           {"points", points},
                           {"paretoFront", front},
+                          {"frontError", sweepErrorName(sweepSoftError(result))},
                           {"referenceMs", result.referenceMs},
                           {"wallMs", result.wallMs}};
     if (result.presetPoint < result.points.size())
@@ -94,9 +114,11 @@ nlohmann::json sweepToJson(const SweepResult& result) {
 
 std::string sweepToCsv(const SweepResult& result) {
     std::ostringstream out;
-    out << "label,preset,paretoFront,shadowPassMs,mainPassMs,costMs,bareDrawMs,shadowPassOverBareDraw,resolution,"
-           "depthFormat,shadowMapBytes,wrongPixelsPercent,meanError,acnePercent,acneSeverity,leakPercent,"
-           "edgeErrorP95Texels,edgeErrorP95World,edgeErrorP95ScreenPixels,kTexels,coarseMap,error";
+    out << "label,preset,paretoFront,shadowPassMs,momentsPassMs,blurPassMs,mainPassMs,costMs,bareDrawMs,"
+           "shadowPassOverBareDraw,resolution,depthFormat,shadowMapBytes,wrongPixelsPercent,meanError,acnePercent,"
+           "acneSeverity,leakPercent,edgeErrorP95Texels,edgeErrorP95World,edgeErrorP95ScreenPixels,"
+           "softWrongPixelsPercent,softMeanError,softBleedingPercent,softOverDarkeningPercent,"
+           "softPenumbraWidthErrorWorld,kTexels,coarseMap,error";
     // A column per key of the settings with the most lights (a light axis may add lights).
     const Settings* widest = nullptr;
     for (const SweepPointResult& p : result.points)
@@ -108,11 +130,17 @@ std::string sweepToCsv(const SweepResult& result) {
     auto row = [&](const SweepPointResult& p, bool preset) {
         const AccuracyNumbers& n = p.accuracy;
         out << csvField(p.label) << "," << (preset ? 1 : 0) << "," << (p.onFront ? 1 : 0) << "," << p.shadowMs << ","
-            << p.mainMs << "," << p.costMs << "," << p.bareDrawMs << "," << p.shadowOverBare << "," << p.resolution
-            << "," << depthFormatName(p.format) << "," << p.mapBytes << "," << n.wrongPercent << "," << n.meanError
-            << "," << n.acnePercent << "," << n.acneSeverity << "," << n.leakPercent << "," << n.edgeErrorP95Texels
-            << "," << n.edgeErrorP95World << "," << n.edgeErrorP95ScreenPixels << "," << p.kTexels << ","
-            << (p.coarseMap ? 1 : 0) << "," << csvField(p.error);
+            << p.momentsMs << "," << p.blurMs << "," << p.mainMs << "," << p.costMs << "," << p.bareDrawMs << ","
+            << p.shadowOverBare << "," << p.resolution << "," << depthFormatName(p.format) << "," << p.mapBytes
+            << "," << n.wrongPercent << "," << n.meanError << "," << n.acnePercent << "," << n.acneSeverity << ","
+            << n.leakPercent << "," << n.edgeErrorP95Texels << "," << n.edgeErrorP95World << ","
+            << n.edgeErrorP95ScreenPixels << ",";
+        if (p.soft.measured)  // empty cells for a hard light
+            out << p.soft.wrongPercent << "," << p.soft.meanError << "," << p.soft.bleedingPercent << ","
+                << p.soft.overDarkeningPercent << "," << p.soft.penumbra.errorWorld;
+        else
+            out << ",,,,";
+        out << "," << p.kTexels << "," << (p.coarseMap ? 1 : 0) << "," << csvField(p.error);
         for (const SettingsField* field : columns) {
             const nlohmann::json value = field->get(p.settings);
             out << "," << csvField(value.is_string() ? value.get<std::string>() : value.dump());
@@ -131,14 +159,16 @@ LinePlot sweepChart(const SweepResult& result) {
     plot.title = "What accuracy costs: " + axes + " (" + std::to_string(result.width) + "x" +
                  std::to_string(result.height) + ", median of " + std::to_string(result.frames) + " frames)";
     const bool cpu = result.softwareRasterizer();
-    plot.xLabel = std::string("cost: shadow pass + main pass, ms") + (cpu ? " (CPU time, software rasterizer)" : " (GPU)");
-    plot.yLabel = "wrong pixels %";
+    plot.xLabel = std::string("cost: shadow pass + moments + blur + main pass, ms") +
+                  (cpu ? " (CPU time, software rasterizer)" : " (GPU)");
+    const bool soft = sweepSoftError(result);
+    plot.yLabel = sweepErrorName(soft);
     PlotSeries front;
     front.label = "Pareto front";
     front.color = {220, 60, 40, 255};
     for (std::size_t i : result.front) {
         front.x.push_back(result.points[i].costMs);
-        front.y.push_back(result.points[i].accuracy.wrongPercent);
+        front.y.push_back(sweepError(result.points[i], soft));
     }
     PlotPoints points;
     points.label = "points (axis values)";
@@ -146,7 +176,7 @@ LinePlot sweepChart(const SweepResult& result) {
     for (const SweepPointResult& p : result.points) {
         if (p.failed()) continue;  // no numbers to place
         points.x.push_back(p.costMs);
-        points.y.push_back(p.accuracy.wrongPercent);
+        points.y.push_back(sweepError(p, soft));
         points.labels.push_back(p.label);
     }
     PlotPoints preset;
@@ -160,7 +190,7 @@ LinePlot sweepChart(const SweepResult& result) {
                                                                             : nullptr;
     if (base && !base->failed()) {
         preset.x.push_back(base->costMs);
-        preset.y.push_back(base->accuracy.wrongPercent);
+        preset.y.push_back(sweepError(*base, soft));
         preset.labels.push_back(extra ? base->label : "");
     }
     plot.series = {front};
@@ -172,10 +202,11 @@ std::size_t sweepPointAt(const SweepResult& result, int width, int height, doubl
     const PlotFrame frame = plotFrame(sweepChart(result), width, height);
     std::size_t best = result.points.size();
     double bestDistance = radius;
+    const bool soft = sweepSoftError(result);
     for (std::size_t i = 0; i < result.points.size(); ++i) {
         if (result.points[i].failed()) continue;  // not drawn
         const double d = std::hypot(frame.px(result.points[i].costMs) - x,
-                                    frame.py(result.points[i].accuracy.wrongPercent) - y);
+                                    frame.py(sweepError(result.points[i], soft)) - y);
         if (d <= bestDistance) best = i, bestDistance = d;
     }
     return best;

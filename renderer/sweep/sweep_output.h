@@ -1,7 +1,7 @@
 #pragma once
 // A sweep as files: JSON and CSV with every number of every point and its settings (every preset key; a failed
 // point with its "error" and no numbers), and the
-// chart (cost in ms against wrong pixels, points labelled by their axis values, the Pareto front as a line, the
+// chart (cost in ms against the error: wrong pixels, or a soft light's mean |S-V| (sweepError), points labelled by their axis values, the Pareto front as a line, the
 // current preset ringed; failed points are not drawn) as a LinePlot — the one chart code the PNG and the editor's panel both draw with.
 #include "image/line_plot.h"
 #include "sweep/sweep_runner.h"

@@ -23,22 +23,46 @@ double msSince(Clock::time_point start) {
 }  // namespace
 
 std::string frontStepText(const SweepPointResult& from, const SweepPointResult& to) {
-    char text[200];
-    std::snprintf(text, sizeof text, "+%.3g ms: wrong pixels %.3g %% -> %.3g %%, mean |S-V| %.4f -> %.4f",
-                  to.costMs - from.costMs, from.accuracy.wrongPercent, to.accuracy.wrongPercent,
-                  from.accuracy.meanError, to.accuracy.meanError);
+    char text[300];
+    if (from.soft.measured && to.soft.measured)
+        std::snprintf(text, sizeof text,
+                      "+%.3g ms: soft mean |S-V| %.5f -> %.5f, bleeding %.3g %% -> %.3g %%, over-darkening %.3g %% -> "
+                      "%.3g %%",
+                      to.costMs - from.costMs, from.soft.meanError, to.soft.meanError, from.soft.bleedingPercent,
+                      to.soft.bleedingPercent, from.soft.overDarkeningPercent, to.soft.overDarkeningPercent);
+    else
+        std::snprintf(text, sizeof text, "+%.3g ms: wrong pixels %.3g %% -> %.3g %%, mean |S-V| %.4f -> %.4f",
+                      to.costMs - from.costMs, from.accuracy.wrongPercent, to.accuracy.wrongPercent,
+                      from.accuracy.meanError, to.accuracy.meanError);
     return text;
 }
+
+bool sweepSoftError(const SweepResult& result) {
+    bool any = false;
+    for (const SweepPointResult& p : result.points) {
+        if (p.failed()) continue;
+        if (!p.soft.measured) return false;
+        any = true;
+    }
+    return any;
+}
+
+double sweepError(const SweepPointResult& point, bool soft) {
+    return soft ? point.soft.meanError : point.accuracy.wrongPercent;
+}
+
+std::string sweepErrorName(bool soft) { return soft ? "mean |S-V| against the soft reference" : "wrong pixels %"; }
 
 void markParetoFront(SweepResult& result) {
     std::vector<double> cost, error;
     std::vector<std::size_t> measured;  // the points with numbers; the front is over them only
+    const bool soft = sweepSoftError(result);
     for (std::size_t i = 0; i < result.points.size(); ++i) {
         const SweepPointResult& p = result.points[i];
         if (p.failed()) continue;
         measured.push_back(i);
         cost.push_back(p.costMs);
-        error.push_back(p.accuracy.wrongPercent);
+        error.push_back(sweepError(p, soft));
     }
     result.front = paretoFront(cost, error);
     for (std::size_t& k : result.front) k = measured[k];
@@ -122,7 +146,9 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         r.warnings = timed.last.warnings;
         r.shadowMs = timed.shadowMs;
         r.mainMs = timed.mainMs;
-        r.costMs = r.shadowMs + r.mainMs + timed.momentsMs + timed.blurMs;  // a moments technique's passes count
+        r.momentsMs = timed.momentsMs;
+        r.blurMs = timed.blurMs;
+        r.costMs = r.shadowMs + r.momentsMs + r.blurMs + r.mainMs;  // a moments technique's passes count
         r.shadowMinMs = timed.shadowMinMs;
         r.mainMinMs = timed.mainMinMs;
         r.wallMsPerFrame = timed.wallMsPerFrame;
@@ -164,6 +190,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         }
         r.referenceReused = report.cost.referenceReused;
         r.accuracy = report;
+        r.soft = report.soft;
         r.kTexels = report.kTexels;
         r.coarseMap = !report.coarseMapWarning.empty();
         for (const std::string& w : report.warnings) r.warnings.push_back(w);

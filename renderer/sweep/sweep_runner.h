@@ -1,9 +1,11 @@
 #pragma once
-// The cost-vs-accuracy sweep: for every point of a plan, the time of the shadow pass and the main pass (median of N
-// frames, shadow pass forced: the timing loop of `bench`), the map's memory, the error numbers of metrics version 2
-// against one exact reference (AccuracyMeter caches it: it depends only on scene, light, camera and view size), and
-// the shadow pass as a multiple of a bare depth-only draw of the same triangles into a map of the same size and
-// format. Then the Pareto front of cost (shadow + main ms) against wrong pixels. Knows no window, UI or CLI; needs a
+// The cost-vs-accuracy sweep: for every point of a plan, the time of the shadow pass, a moments technique's moments
+// and blur passes and the main pass (median of N frames, shadow pass forced, so the moments and blur re-run with it:
+// the timing loop of `bench`), the map's memory, the error numbers of metrics version 2 against one exact reference
+// (AccuracyMeter caches it: it depends only on scene, light, camera and view size) and, for a light with a size, the
+// soft numbers against the soft reference, and the shadow pass as a multiple of a bare depth-only draw of the same
+// triangles into a map of the same size and format. Then the Pareto front of cost (shadow + moments + blur + main ms)
+// against the error (sweepError: wrong pixels, or a soft light's mean |S-V|). Knows no window, UI or CLI; needs a
 // current GL 4.5 context on the calling thread.
 #include "accuracy/accuracy_meter.h"
 #include "sweep/bare_depth_draw.h"
@@ -25,7 +27,9 @@ struct SweepPointResult {
 
     double shadowMs = 0.0;            // median shadow pass
     double mainMs = 0.0;              // median main pass
-    double costMs = 0.0;              // shadow + main: the cost the front uses
+    double momentsMs = 0.0;           // median moments pass (a moments technique; 0 for a depth technique)
+    double blurMs = 0.0;              // median blur pass (likewise)
+    double costMs = 0.0;              // shadow + moments + blur + main: the cost the front uses
     double shadowMinMs = 0.0;         // the fastest timed frame of each pass (robust to a loaded CPU)
     double mainMinMs = 0.0;
     double wallMsPerFrame = 0.0;
@@ -35,7 +39,8 @@ struct SweepPointResult {
     double bareDrawMs = 0.0;          // the bare draw at this map size and format
     double shadowOverBare = 0.0;      // shadowMs / bareDrawMs
 
-    AccuracyNumbers accuracy;         // metrics version 2 (wrongPercent is the error the front uses)
+    AccuracyNumbers accuracy;         // metrics version 2 (wrongPercent: the error the front uses for a hard light)
+    SoftAccuracy soft;                // a light with a size: version 3 against the soft reference (else unmeasured)
     double kTexels = 0.0;
     bool coarseMap = false;           // acne and leak cannot judge this map (read wrong pixels and mean error)
     bool referenceReused = false;     // the reference came from the sweep's cache
@@ -89,6 +94,12 @@ using SweepPointCallback = std::function<void(const SweepPointResult& point, std
 // work. `progress` (optional) gets the fraction and stage and carries a cancel request.
 SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& plan, const SweepRunOptions& options,
                      const SweepPointCallback& onPoint = {}, AccuracyProgress* progress = nullptr);
+
+// The error the front and the chart use: when every measured point's light has a size (soft.measured), the soft
+// mean |S-V| against the soft reference; else version 2's wrong pixels %.
+bool sweepSoftError(const SweepResult& result);
+double sweepError(const SweepPointResult& point, bool soft);
+std::string sweepErrorName(bool soft);  // "wrong pixels %" or "mean |S-V| against the soft reference"
 
 // Sets result.front and each point's onFront from the points so far (failed points excluded) (a partial sweep's chart draws it live).
 void markParetoFront(SweepResult& result);

@@ -198,6 +198,42 @@ TEST(WholePicture, APixelIsWrongWhenWrongForAnyLightThatReachesIt) {
     EXPECT_NEAR(many.whole.wrongPercent, 100.0 * 4.0 / 6.0, 1e-9);
 }
 
+// Issue 21: with a sized light among them, the whole picture also has soft numbers: a sized light's soft V, a hard
+// light's exact V, each pixel once.
+TEST(WholePicture, SoftNumbersCombineASizedLightsSoftVisibilityWithAHardLightsExactOne) {
+    using P = PixelClass;
+    ManyLightsReport many;
+    // Light 0 (sized): soft V 1, 0, 0.5, 1, 0 over pixels 0..4; S 1, 0.3 (bleeding), 0.5, 0.9 (over-darkened), 0.
+    AccuracyReport sized = synthetic({P::Lit, P::Shadowed, P::Lit, P::Lit, P::Shadowed}, {1.0f, 0.3f, 0.5f, 0.9f, 0.0f});
+    sized.pixelSoftVisibility = {1.0f, 0.0f, 0.5f, 1.0f, 0.0f};
+    sized.soft.measured = true;
+    sized.soft.penumbra.errorWorld = 0.02;
+    // Light 1 (hard): pixel 4 lit (V = 1) but S 0 (wrong, over-darkened); pixel 0 out of its range.
+    const AccuracyReport hard =
+        synthetic({P::OutOfRange, P::Lit, P::Lit, P::Lit, P::Lit}, {0.0f, 1.0f, 1.0f, 1.0f, 0.0f});
+    many.lights.push_back({0, LightType::Directional, sized});
+    many.lights.push_back({1, LightType::Point, hard});
+    combineLights(many);
+    const SoftAccuracy& w = many.wholeSoft;
+    ASSERT_TRUE(w.measured);
+    EXPECT_EQ(w.counts.measured, 5u);
+    EXPECT_EQ(w.counts.umbra, 2u);     // pixels 1, 4 (light 0's umbra)
+    EXPECT_EQ(w.counts.bleeding, 1u);  // pixel 1
+    EXPECT_EQ(w.counts.fullyLit, 5u);  // 0, 3 by light 0; 1..4 by light 1
+    EXPECT_EQ(w.counts.overDarkened, 2u);  // 3 (light 0), 4 (light 1)
+    EXPECT_EQ(w.counts.wrong, 1u);         // 4 (light 1: |0 - 1|)
+    // Largest |S-V| per pixel: 0, 0.3, 0 (light 0's penumbra matched), 0.1, 1.
+    EXPECT_NEAR(w.meanError, (0.3 + 0.1 + 1.0) / 5.0, 1e-6);
+    EXPECT_NEAR(w.bleedingPercent, 50.0, 1e-9);
+    EXPECT_DOUBLE_EQ(w.penumbra.errorWorld, 0.02);
+
+    // Without a sized light there are no soft numbers.
+    many.lights[0].report.soft.measured = false;
+    many.lights[0].report.pixelSoftVisibility.clear();
+    combineLights(many);
+    EXPECT_FALSE(many.wholeSoft.measured);
+}
+
 TEST(LightIsolation, TheSceneLightsAreIsolatedAndTunedByTheirIndex) {
     // Two glTF lights with useSceneLights and one settings light: both scene lights take lights[0]'s tuning.
     Scene scene = boxScene();

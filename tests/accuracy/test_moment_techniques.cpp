@@ -1,11 +1,13 @@
 // Issue 21: each moments technique (VSM, EVSM2, EVSM4, MSM) puts the textbook scene's shadows where the exact
 // reference has them (few wrong pixels, little acne), and HARD_CASES.md case 21: VSM bleeds light where two casters
 // at different depths overlap in the map over a receiver in their shadow, and the bleeding reduction lowers it.
+#include "accuracy/bias_tuner.h"
 #include "gl_fixture.h"
 #include "hardcases/hard_case_scenes.h"
 #include "reference_fixture.h"
 #include "shading/filters/filter_technique.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace shadowlab::test {
@@ -94,6 +96,80 @@ TEST_F(MomentTechniquesAccuracy, HardCase21VsmBleedsWhereCastersOverlapAndTheRed
     std::printf("case 21: VSM brightest bleeding S = %.3f; bleeding %.2f %% -> %.2f %% with reduction 0.3\n",
                 double(brightest), raw.leakPercent, reduced.leakPercent);
     EXPECT_GT(brightest, 0.05f);
+}
+
+// `tune` searches VSM's own trade-off (minVariance, bleedReduction, declared in vsm_filter.cpp) on case 21: it must
+// pick a bleeding reduction that lowers the bleeding (version 2's leak: lit umbra pixels, the light is hard) with acne
+// within 0.1 %.
+TEST_F(MomentTechniquesAccuracy, TuneOnHardCase21PicksABleedReductionThatLowersBleedingWithinTheAcneLimit) {
+    const Scene scene = overlappingCasters();
+    AccuracyMeter meter;
+    const Settings start = overlappingCastersView();  // bleedReduction 0
+    const Camera camera = cameraFor(start.camera, scene, double(kWidth) / kHeight);
+    const TuneResult result =
+        tuneBias(meter, scene, start, camera, kWidth, kHeight, 0.1, nullptr, {}, {TuneSearch::Auto});
+    ASSERT_TRUE(result.ok) << result.error;
+    ASSERT_TRUE(result.tradeOffSearched) << "a VSM start with --search auto searches the technique's keys";
+    EXPECT_EQ(result.tradeOffKeys, (std::vector<std::string>{"filter.minVariance", "filter.bleedReduction"}));
+    ASSERT_TRUE(result.reachedLimit);
+    const TuneStep& first = result.path.front();
+    const TuneStep* best = nullptr;
+    for (const TuneStep& s : result.path) {
+        EXPECT_TRUE(s.tradeOffStep);
+        EXPECT_GT(s.costMs, 0.0) << "each candidate's cost is reported";
+        if (s.bestSoFar) best = &s;
+        std::printf("%3d %-34s minVariance %-8.3g bleedReduction %-5.2f acne %.3f %% leak %.3f %% |S-V| %.5f "
+                    "(%.0f ms)\n",
+                    s.index, s.phase.c_str(), s.tradeOff[0], s.tradeOff[1], s.acnePercent, s.leakPercent,
+                    s.meanError, s.costMs);
+    }
+    ASSERT_NE(best, nullptr);
+    EXPECT_EQ(first.tradeOff[1], 0.0);
+    EXPECT_GT(first.leakPercent, 2.0) << "the start bleeds";
+    EXPECT_GT(result.closest.filter.bleedReduction, 0.0f);
+    EXPECT_FLOAT_EQ(float(best->tradeOff[1]), result.closest.filter.bleedReduction);
+    EXPECT_LT(best->leakPercent, first.leakPercent / 2.0) << "the chosen reduction lowers the bleeding";
+    EXPECT_LE(best->acnePercent, 0.1);
+    EXPECT_LE(result.report.acnePercent, 0.1);
+}
+
+// EVSM's exponents overflow 16-bit moments above 5.54: the trade-off search starts from 40 lowered to the clamp and
+// never proposes more, while still trying the clamp itself.
+TEST_F(MomentTechniquesAccuracy, TuneEvsmAt16BitsNeverProposesAnExponentAboveTheClamp) {
+    const Scene scene = loadBuiltin("textbook");
+    AccuracyMeter meter;
+    Settings start = loadShippedPreset("default");
+    start.filter.kind = FilterKind::Evsm4;
+    start.filter.momentBits = 16;
+    start.filter.positiveExponent = 40.0f;
+    start.filter.negativeExponent = 40.0f;
+    start.lights[0].shadow.resolution = 512;
+    const int w = 240, h = 135;
+    const Camera camera = cameraFor(start.camera, scene, double(w) / h);
+    const TuneResult result = tuneBias(meter, scene, start, camera, w, h, 0.1, nullptr, {}, {TuneSearch::TradeOff});
+    ASSERT_TRUE(result.ok) << result.error;
+    ASSERT_EQ(result.tradeOffKeys.size(), 4u);
+    EXPECT_EQ(result.tradeOffKeys[0], "filter.positiveExponent");
+    EXPECT_EQ(result.tradeOffKeys[1], "filter.negativeExponent");
+    const float clamp = maxWarpExponent(16);
+    float highest = 0.0f;
+    for (const TuneStep& s : result.path) {
+        for (int k : {0, 1}) {
+            EXPECT_LE(float(s.tradeOff[std::size_t(k)]), clamp) << s.phase << ": " << result.tradeOffKeys[std::size_t(k)];
+            highest = std::max(highest, float(s.tradeOff[std::size_t(k)]));
+        }
+    }
+    EXPECT_FLOAT_EQ(highest, clamp) << "the clamp itself is a candidate";
+    EXPECT_LE(result.closest.filter.positiveExponent, clamp);
+    EXPECT_LE(result.closest.filter.negativeExponent, clamp);
+    ASSERT_EQ(result.startClamps.size(), 2u);
+    EXPECT_NE(result.startClamps[0].find("filter.positiveExponent 40 lowered to 5.54"), std::string::npos)
+        << result.startClamps[0];
+    std::printf("EVSM4 16-bit: %zu candidates; chosen c+ %.3g c- %.3g minVariance %.3g bleedReduction %.2f, acne %.3f "
+                "%%, |S-V| %.5f\n",
+                result.path.size(), double(result.closest.filter.positiveExponent),
+                double(result.closest.filter.negativeExponent), double(result.closest.filter.minVariance),
+                double(result.closest.filter.bleedReduction), result.report.acnePercent, result.report.meanError);
 }
 
 }  // namespace

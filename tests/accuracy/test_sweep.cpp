@@ -6,11 +6,13 @@
 #include "scene/gltf_loader.h"
 #include "scene/scene_animation.h"
 #include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 #include "sweep/pareto_front.h"
 #include "sweep/sweep_output.h"
 #include "sweep/sweep_runner.h"
 
 #include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -297,6 +299,72 @@ TEST_F(SweepTest, AnAxisOnTheAnimationTimePosesEachPointAtItsTime) {
         alone.push_back(report.counts);
     }
     EXPECT_NE(alone[0].shadowed, alone[1].shadowed) << "the two times must differ for this test to tell them apart";
+}
+
+// Issue 21: the technique and the blur width as axes. Each point's cost counts the moments and blur passes (timed,
+// each point re-running them with its own width), and with a light of a size the soft numbers come in every output
+// and the chart and front use the soft mean |S-V|.
+TEST_F(SweepTest, TechniqueByBlurWidthCostsTheMomentsAndBlurAndShowsTheSoftError) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings base = loadShippedPreset("default");
+    base.lights[0].size = 2.0f;  // degrees: a soft sun
+    base.reference.softRays = 64;
+    base.lights[0].shadow.resolution = 512;
+    const SweepPlan plan = planSweep(base, {"filter.kind=pcf,vsm,evsm4,msm", "filter.blurWidth=3,9"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 160;
+    options.height = 90;
+    options.frames = 2;
+    options.measurePreset = false;
+    const SweepResult r = runSweep(scene, base, plan, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.points.size(), 8u);
+    std::map<std::pair<FilterKind, float>, double> softError;  // by technique and blur width
+    for (const SweepPointResult& p : r.points) {
+        SCOPED_TRACE(p.label);
+        ASSERT_FALSE(p.failed()) << p.error;
+        const bool moments = p.settings.filter.kind != FilterKind::Pcf;
+        std::printf("%-10s shadow %.3f moments %.3f blur %.3f main %.3f = %.3f ms; soft |S-V| %.4f, bleeding %.2f %%, "
+                    "over-darkening %.2f %%\n",
+                    p.label.c_str(), p.shadowMs, p.momentsMs, p.blurMs, p.mainMs, p.costMs, p.soft.meanError,
+                    p.soft.bleedingPercent, p.soft.overDarkeningPercent);
+        EXPECT_EQ(p.momentsMs > 0.0, moments);
+        EXPECT_EQ(p.blurMs > 0.0, moments);
+        EXPECT_NEAR(p.costMs, p.shadowMs + p.momentsMs + p.blurMs + p.mainMs, 1e-9);
+        ASSERT_TRUE(p.soft.measured);
+        softError[{p.settings.filter.kind, p.settings.filter.blurWidth}] = p.soft.meanError;
+    }
+    // The width changes a moments technique's picture (its blur re-ran per point), not PCF's.
+    ASSERT_EQ(softError.size(), 8u);
+    auto at = [&](FilterKind kind, float width) { return softError[std::make_pair(kind, width)]; };
+    EXPECT_EQ(at(FilterKind::Pcf, 3.0f), at(FilterKind::Pcf, 9.0f));
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm4, FilterKind::Msm})
+        EXPECT_NE(at(kind, 3.0f), at(kind, 9.0f)) << filterTechnique(kind).name;
+
+    EXPECT_TRUE(sweepSoftError(r));
+    const LinePlot chart = sweepChart(r);
+    EXPECT_NE(chart.yLabel.find("soft reference"), std::string::npos) << chart.yLabel;
+    EXPECT_NE(chart.xLabel.find("moments + blur"), std::string::npos) << chart.xLabel;
+    ASSERT_EQ(chart.points[0].y.size(), 8u);
+    for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(chart.points[0].y[i], r.points[i].soft.meanError);
+    for (std::size_t i : r.front)  // the front is over the soft error: nothing beats a front point on both
+        for (const SweepPointResult& q : r.points)
+            EXPECT_FALSE(q.costMs < r.points[i].costMs && q.soft.meanError < r.points[i].soft.meanError)
+                << q.label << " beats front point " << r.points[i].label;
+
+    const nlohmann::json json = sweepToJson(r);
+    EXPECT_EQ(json["frontError"], "mean |S-V| against the soft reference");
+    for (const nlohmann::json& p : json["points"]) {
+        EXPECT_TRUE(p.contains("momentsPassMs") && p.contains("blurPassMs"));
+        ASSERT_TRUE(p["soft"].is_object());
+        EXPECT_TRUE(p["soft"].contains("bleedingPercent") && p["soft"].contains("overDarkeningPercent"));
+    }
+    const std::string csv = sweepToCsv(r);
+    const std::string header = csv.substr(0, csv.find('\n'));
+    for (const char* column : {"momentsPassMs", "blurPassMs", "softMeanError", "softBleedingPercent",
+                               "softOverDarkeningPercent"})
+        EXPECT_NE(header.find(column), std::string::npos) << column;
 }
 
 }  // namespace shadowlab::test

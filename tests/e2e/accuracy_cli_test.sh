@@ -113,6 +113,22 @@ expect_ok tune-roof "$SHADOWLAB" tune --scene builtin:roof --preset default --wi
 grep -q "^result:.*cullMode \(none\|front\)" tune-roof.out && pass "tune picks a cull mode for the roof" \
   || fail "roof tune: $(grep '^result' tune-roof.out)"
 
+# Issue 21: a VSM preset tunes VSM's own keys (declared in vsm_filter.cpp) with a soft light: the preset gets them,
+# the JSON has each candidate's values, soft numbers and cost.
+expect_ok tune-vsm "$SHADOWLAB" tune --scene builtin:textbook --preset default --set filter.kind=vsm \
+  --set filter.bleedReduction=0 --set lights.0.size=2 --set reference.softRays=64 --set lights.0.shadow.resolution=512 \
+  --width 160 --height 90 --out vsm-tuned.json --json vsm-tune.json
+grep -q "^result (vsm): .*filter.bleedReduction.*soft mean |S-V|" tune-vsm.out && pass "tune names VSM's chosen keys" \
+  || fail "vsm tune: $(grep -A1 '^result' tune-vsm.out)"
+python3 -c "
+import json
+light = json.load(open('vsm-tune.json'))['lights'][0]
+assert light['tradeOffKeys'] == ['filter.minVariance', 'filter.bleedReduction'], light['tradeOffKeys']
+assert all(s['tradeOffStep'] and s['costMs'] > 0 and s['soft'] for s in light['path']), light['path'][0]
+tuned = json.load(open('vsm-tuned.json'))['filter']
+assert tuned['bleedReduction'] == light['tradeOffChosen']['filter.bleedReduction'], tuned
+" && pass "tune's JSON and preset hold the technique's values" || fail "vsm tune JSON / preset"
+
 # Many lights (issue 10): a 2-light preset (the tuned sun plus a spot light) measured light by light, then the whole
 # picture; --light N measures and tunes one light; a light that does not exist or does not cast is refused by key.
 python3 - <<'PY'

@@ -88,20 +88,35 @@ const MomentTechnique kEvsm4{
     [](const glm::vec4& m, float z, const glm::vec4& u) { return explain(m, z, u, true); },
     [](const FilterSettings& f) { return evsmClamps(f, true); }};
 
+// An exponent's trade-off: larger bleeds less, up to what the storage holds (never beyond: the moments overflow).
+TradeOffRange exponentTradeOff(const char* key) {
+    return {key, 1.0, 42.0, 6, /*geometric=*/true,
+            [](const Settings& s) { return double(maxWarpExponent(s.filter.momentBits)); }};
+}
+
 }  // namespace
 
 const FilterTechnique& evsm2Filter() {
-    static const FilterTechnique technique = momentsFilter(
-        FilterKind::Evsm2, "evsm2", {"filter.positiveExponent", "filter.minVariance", "filter.bleedReduction"}, kEvsm2);
+    static const FilterTechnique technique = [] {
+        FilterTechnique t = momentsFilter(FilterKind::Evsm2, "evsm2",
+                                          {"filter.positiveExponent", "filter.minVariance", "filter.bleedReduction"},
+                                          kEvsm2);
+        t.tradeOff = {exponentTradeOff("filter.positiveExponent"), kMinVarianceTradeOff, kBleedReductionTradeOff};
+        return t;
+    }();
     return technique;
 }
 
 const FilterTechnique& evsm4Filter() {
-    static const FilterTechnique technique =
-        momentsFilter(FilterKind::Evsm4, "evsm4",
-                      {"filter.positiveExponent", "filter.negativeExponent", "filter.minVariance",
-                       "filter.bleedReduction"},
-                      kEvsm4);
+    static const FilterTechnique technique = [] {
+        FilterTechnique t = momentsFilter(FilterKind::Evsm4, "evsm4",
+                                          {"filter.positiveExponent", "filter.negativeExponent", "filter.minVariance",
+                                           "filter.bleedReduction"},
+                                          kEvsm4);
+        t.tradeOff = {exponentTradeOff("filter.positiveExponent"), exponentTradeOff("filter.negativeExponent"),
+                      kMinVarianceTradeOff, kBleedReductionTradeOff};
+        return t;
+    }();
     return technique;
 }
 

@@ -38,6 +38,25 @@ std::vector<float> blurWeights(double widthTexels) {
     return w;
 }
 
+double tradeOffTop(const TradeOffRange& range, const Settings& settings) {
+    return range.limit ? std::min(range.high, range.limit(settings)) : range.high;
+}
+
+std::vector<double> tradeOffCandidates(const TradeOffRange& range, const Settings& settings) {
+    const double high = std::max(tradeOffTop(range, settings), range.low);
+    const int steps = std::max(range.steps, 2);
+    std::vector<double> values;
+    for (int i = 0; i < steps; ++i) {
+        const double t = double(i) / double(steps - 1);
+        double v = range.geometric && range.low > 0.0 ? range.low * std::pow(high / range.low, t)
+                                                      : range.low + (high - range.low) * t;
+        // Stored as float: keep the top exactly at the limit (float(5.54) must not round above it).
+        v = i == steps - 1 ? high : std::min(v, high);
+        if (values.empty() || v > values.back()) values.push_back(v);
+    }
+    return values;
+}
+
 float maxWarpExponent(int momentBits) { return momentBits == 16 ? 5.54f : 42.0f; }
 
 }  // namespace shadowlab

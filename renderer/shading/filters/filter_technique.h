@@ -34,6 +34,25 @@ struct MomentTechnique {
     std::vector<std::string> (*clamps)(const FilterSettings& filter) = nullptr;
 };
 
+// One key of a technique's own trade-off, which `tune` searches (accuracy/bias_tuner.h): `steps` candidates from
+// `low` to `high` (both included), spaced by a constant ratio when `geometric` (a variance floor spans decades), else
+// evenly. `limit` (optional) lowers `high` to what these settings can use (EVSM: the exponent the storage holds), so
+// the tuner never proposes a value the renderer would clamp. A light's key is written "lights.#.size": the tuner
+// works on one light, #.
+struct TradeOffRange {
+    const char* key;
+    double low = 0.0;
+    double high = 0.0;
+    int steps = 2;
+    bool geometric = false;
+    double (*limit)(const Settings& settings) = nullptr;
+};
+
+// The candidates of a trade-off key for these settings, low to high, each within the key's own range.
+std::vector<double> tradeOffCandidates(const TradeOffRange& range, const Settings& settings);
+// The largest value the tuner may propose for it with these settings (high, or its limit when lower).
+double tradeOffTop(const TradeOffRange& range, const Settings& settings);
+
 struct FilterTechnique {
     FilterKind kind;
     const char* name;  // the filter.kind value
@@ -54,6 +73,9 @@ struct FilterTechnique {
     std::vector<const char*> keys = {};
     // Set for a moments technique: the map is converted to moments and blurred after the shadow pass.
     const MomentTechnique* moments = nullptr;
+    // The keys and ranges of its own trade-off (bleeding against acne, softness against error), in the order `tune`
+    // searches them; empty: tune searches the depth bias only.
+    std::vector<TradeOffRange> tradeOff = {};
 };
 
 // The table: every technique, in filter.kind's order.

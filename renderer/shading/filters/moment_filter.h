@@ -12,6 +12,12 @@ namespace shadowlab {
 FilterTechnique momentsFilter(FilterKind kind, const char* name, std::initializer_list<const char*> ownKeys,
                               const MomentTechnique& moments);
 
+// The trade-off ranges the moments techniques share (each technique's file lists the ones it searches): the variance
+// floor over decades (too low: acne on slopes and fp16 noise; too high: bleeding) and the bleeding reduction (too
+// low: light in the umbra where casters overlap; too high: darker, narrower penumbrae).
+inline const TradeOffRange kMinVarianceTradeOff{"filter.minVariance", 1e-7, 1e-3, 5, /*geometric=*/true};
+inline const TradeOffRange kBleedReductionTradeOff{"filter.bleedReduction", 0.0, 0.6, 7};
+
 // Chebyshev's one-tailed upper bound of the lit share for a receiver at `z` over moments (mean, E[x^2]), variance at
 // least `minVariance` (chebyshev.glsl's chebyshevUpperBound); 1 when the receiver is not beyond the mean.
 float chebyshevUpperBound(float mean, float meanSquare, float z, float minVariance);

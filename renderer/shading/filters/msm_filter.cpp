@@ -82,8 +82,12 @@ const MomentTechnique kMsm{
 }  // namespace
 
 const FilterTechnique& msmFilter() {
-    static const FilterTechnique technique =
-        momentsFilter(FilterKind::Msm, "msm", {"filter.momentBias", "filter.bleedReduction"}, kMsm);
+    static const FilterTechnique technique = [] {
+        FilterTechnique t = momentsFilter(FilterKind::Msm, "msm", {"filter.momentBias", "filter.bleedReduction"}, kMsm);
+        // The bias over decades: too small, acne on flat receivers (the bound's instability); too large, bleeding.
+        t.tradeOff = {{"filter.momentBias", 1e-6, 1e-2, 5, /*geometric=*/true}, kBleedReductionTradeOff};
+        return t;
+    }();
     return technique;
 }
 

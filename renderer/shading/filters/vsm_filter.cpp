@@ -29,8 +29,11 @@ const MomentTechnique kVsm{
 }  // namespace
 
 const FilterTechnique& vsmFilter() {
-    static const FilterTechnique technique =
-        momentsFilter(FilterKind::Vsm, "vsm", {"filter.minVariance", "filter.bleedReduction"}, kVsm);
+    static const FilterTechnique technique = [] {
+        FilterTechnique t = momentsFilter(FilterKind::Vsm, "vsm", {"filter.minVariance", "filter.bleedReduction"}, kVsm);
+        t.tradeOff = {kMinVarianceTradeOff, kBleedReductionTradeOff};
+        return t;
+    }();
     return technique;
 }
 
