@@ -40,6 +40,23 @@ void computeDrawBounds(const Mesh& mesh, const glm::dmat4& model, GpuDraw& draw)
     draw.hasFiniteBounds = true;
 }
 
+glm::dmat4 toOriginOf(const glm::dvec3& origin) {
+    return glm::dmat4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -origin.x, -origin.y, -origin.z, 1.0);
+}
+
+// The draw's model and normal matrices, winding and bounds at its instance's transform.
+void place(GpuDraw& draw, const Instance& instance, const Mesh& mesh, const glm::dmat4& toOrigin) {
+    const glm::dmat4 model = toOrigin * glm::dmat4(instance.transform);
+    draw.model = glm::mat4(model);
+    // A zero-scale node has no inverse: keep its (degenerate) linear part so no NaN reaches the GPU.
+    const glm::dmat3 linear(model);
+    draw.normalMatrix = std::abs(glm::determinant(linear)) > 1e-30 ? glm::mat3(glm::transpose(glm::inverse(linear)))
+                                                                    : glm::mat3(linear);
+    draw.mirrored = instance.mirrored();
+    draw.hasFiniteBounds = false;
+    computeDrawBounds(mesh, model, draw);
+}
+
 }  // namespace
 
 GpuScene::GpuScene(const Scene& scene, const glm::dvec3& origin) : scene_(&scene), origin_(origin) {
@@ -95,8 +112,7 @@ GpuScene::GpuScene(const Scene& scene, const glm::dvec3& origin) : scene_(&scene
         imageTextures_.push_back(std::move(texture));
     }
 
-    const glm::dmat4 toOrigin = glm::dmat4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0,
-                                           -origin.x, -origin.y, -origin.z, 1.0);
+    const glm::dmat4 toOrigin = toOriginOf(origin);
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& instance = scene.instances[i];
         const Mesh& mesh = scene.meshes[std::size_t(instance.mesh)];
@@ -106,17 +122,25 @@ GpuScene::GpuScene(const Scene& scene, const glm::dvec3& origin) : scene_(&scene
         draw.indexCount = GLsizei(mesh.indices.size());
         draw.firstIndexByte = meshFirstIndex[std::size_t(instance.mesh)] * sizeof(std::uint32_t);
         draw.baseVertex = meshBaseVertex[std::size_t(instance.mesh)];
-        const glm::dmat4 model = toOrigin * glm::dmat4(instance.transform);
-        draw.model = glm::mat4(model);
-        // A zero-scale node has no inverse: keep its (degenerate) linear part so no NaN reaches the GPU.
-        const glm::dmat3 linear(model);
-        draw.normalMatrix = std::abs(glm::determinant(linear)) > 1e-30 ? glm::mat3(glm::transpose(glm::inverse(linear)))
-                                                                        : glm::mat3(linear);
-        draw.mirrored = instance.mirrored();
         draw.material = mesh.material;
-        computeDrawBounds(mesh, model, draw);
+        place(draw, instance, mesh, toOrigin);
         draws_.push_back(draw);
+        transforms_.push_back(instance.transform);
     }
+}
+
+std::vector<std::size_t> GpuScene::updateTransforms(const Scene& scene) {
+    scene_ = &scene;
+    std::vector<std::size_t> moved;
+    const glm::dmat4 toOrigin = toOriginOf(origin_);
+    for (std::size_t d = 0; d < draws_.size(); ++d) {
+        const Instance& instance = scene.instances[draws_[d].instance];
+        if (instance.transform == transforms_[d]) continue;
+        transforms_[d] = instance.transform;
+        place(draws_[d], instance, scene.meshes[std::size_t(instance.mesh)], toOrigin);
+        moved.push_back(d);
+    }
+    return moved;
 }
 
 void GpuScene::setCasting(const std::vector<char>& castingInstances) {

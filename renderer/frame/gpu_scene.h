@@ -32,6 +32,10 @@ public:
 
     void bind() const;
     const std::vector<GpuDraw>& draws() const { return draws_; }
+    // Moves the draws to the instances' transforms of `scene`, which has the geometry uploaded (a posed copy, or the
+    // same scene posed again: geometryFingerprint equal); returns the draws whose transform changed. Nothing is
+    // uploaded: model matrices are per-draw uniforms. The scene must outlive its use, as the constructor's.
+    std::vector<std::size_t> updateTransforms(const Scene& scene);
     // Which draws cast shadows, from a flag per Scene::instances entry (scene/scene_casters.h).
     void setCasting(const std::vector<char>& castingInstances);
     // The alpha texture of a material (0 when it has none).
@@ -48,6 +52,7 @@ private:
     gl::Buffer indices_;
     std::vector<gl::Texture> imageTextures_;  // one per Scene::images entry (empty handle when invalid)
     std::vector<GpuDraw> draws_;
+    std::vector<glm::mat4> transforms_;  // each draw's instance transform as placed
     std::size_t uploadedBytes_ = 0;
 };
 

@@ -3,6 +3,7 @@
 
 #include "gl/gl_errors.h"
 #include "light/volume_overlap.h"
+#include "scene/scene_animation.h"
 #include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
 #include "views/depth_bounds.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <string_view>
 
 namespace shadowlab {
 
@@ -39,7 +41,11 @@ std::string joinLines(const std::vector<std::string>& lines) {
 
 }  // namespace
 
-std::size_t sceneFingerprint(const Scene& scene) {
+namespace {
+
+// The scene's layout without transforms, by address: its meshes' buffers and sizes, which mesh each instance draws,
+// alpha-relevant material values. Cheap; equal for the same scene (or one edited in place: Renderer::sceneChanged).
+std::size_t layoutFingerprint(const Scene& scene) {
     std::size_t seed = std::hash<const void*>{}(&scene);
     hashCombine(seed, scene.meshes.size());
     for (const Mesh& mesh : scene.meshes) {
@@ -48,16 +54,63 @@ std::size_t sceneFingerprint(const Scene& scene) {
         hashCombine(seed, mesh.indices.size());
         hashCombine(seed, std::size_t(mesh.material + 1));
     }
-    for (const Instance& instance : scene.instances) {
-        hashCombine(seed, std::size_t(instance.mesh));
-        hashBytes(seed, instance.transform);
-    }
+    hashCombine(seed, scene.instances.size());
+    for (const Instance& instance : scene.instances) hashCombine(seed, std::size_t(instance.mesh));
     for (const Material& material : scene.materials) {
         hashCombine(seed, std::size_t(material.alphaMode));
         hashBytes(seed, material.alphaCutoff);
         hashBytes(seed, material.baseColorFactor.a);
         hashBytes(seed, material.doubleSided);
         hashBytes(seed, material.uvTransform);
+    }
+    return seed;
+}
+
+std::size_t transformsFingerprint(const Scene& scene) {
+    std::size_t seed = scene.instances.size();
+    for (const Instance& instance : scene.instances) hashBytes(seed, instance.transform);
+    return seed;
+}
+
+template <typename T>
+void hashVector(std::size_t& seed, const std::vector<T>& values) {
+    hashCombine(seed, std::hash<std::string_view>{}(std::string_view(reinterpret_cast<const char*>(values.data()),
+                                                                       values.size() * sizeof(T))));
+}
+
+}  // namespace
+
+std::size_t sceneFingerprint(const Scene& scene) {
+    std::size_t seed = layoutFingerprint(scene);
+    hashCombine(seed, transformsFingerprint(scene));
+    return seed;
+}
+
+std::size_t geometryFingerprint(const Scene& scene) {
+    std::size_t seed = scene.meshes.size();
+    for (const Mesh& mesh : scene.meshes) {
+        hashVector(seed, mesh.positions);
+        hashVector(seed, mesh.normals);
+        hashVector(seed, mesh.uvs);
+        hashVector(seed, mesh.indices);
+        hashCombine(seed, std::size_t(mesh.material + 1));
+    }
+    hashCombine(seed, scene.instances.size());
+    for (const Instance& instance : scene.instances) hashCombine(seed, std::size_t(instance.mesh));
+    for (const Material& material : scene.materials) {
+        hashCombine(seed, std::size_t(material.alphaMode));
+        hashBytes(seed, material.alphaCutoff);
+        hashBytes(seed, material.baseColorFactor.a);
+        hashBytes(seed, material.doubleSided);
+        hashBytes(seed, material.uvTransform);
+        hashCombine(seed, std::size_t(material.baseColorImage + 1));
+    }
+    // Images by size only (hashing their bytes would cost more than uploading them): a scene with these very meshes
+    // and other pictures of the same sizes is not told apart; an edit in place calls Renderer::sceneChanged.
+    hashCombine(seed, scene.images.size());
+    for (const Image& image : scene.images) {
+        hashCombine(seed, std::size_t(image.width));
+        hashCombine(seed, std::size_t(image.height));
     }
     return seed;
 }
@@ -122,14 +175,70 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.lightSource = describeLightSource(requested, scene);
     stats.lightCount = settings.lights.size();
 
-    const std::size_t fingerprint = sceneFingerprint(scene);
-    if (!gpuScene_ || &gpuScene_->scene() != &scene || gpuSceneFingerprint_ != fingerprint) {
-        // Every matrix is built relative to the render origin in double precision.
-        gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
-        gpuSceneFingerprint_ = fingerprint;
+    // The geometry is uploaded once; a scene posed again (in place, or a posed copy) moves the draws, and what moved
+    // dirties only the views it touches (the planner's CasterMotion).
+    const std::size_t layout = layoutFingerprint(scene), transforms = transformsFingerprint(scene);
+    std::size_t fingerprint = layout;
+    hashCombine(fingerprint, transforms);  // sceneFingerprint(scene)
+    std::vector<std::size_t> movedDraws;
+    bool uploaded = false;
+    if (!gpuScene_ || layout != gpuSceneLayout_) {
+        const std::size_t geometry = geometryFingerprint(scene);
+        if (!gpuScene_ || geometry != gpuSceneFingerprint_) {
+            // Every matrix is built relative to the render origin in double precision.
+            gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
+            gpuSceneFingerprint_ = geometry;
+            uploaded = true;
+        }
+        gpuSceneLayout_ = layout;
     }
+    if (!uploaded) movedDraws = gpuScene_->updateTransforms(scene);
     // What casts (casters.excluded): the planner names a change of the key; the maps' contents follow it.
     gpuScene_->setCasting(castingInstances(scene, settings.casters));
+    // The casters (the draws that cast, in draw order) and what moved since the last frame. An upload after
+    // sceneChanged() knows no previous pose: a map drawn before it is stale if any transform changed meanwhile.
+    const std::vector<GpuDraw>& draws = gpuScene_->draws();
+    std::vector<CasterSphere> spheres;
+    std::vector<std::size_t> casterDraws;
+    std::vector<std::size_t> casterOf(draws.size(), std::size_t(-1));
+    for (std::size_t d = 0; d < draws.size(); ++d) {
+        if (!draws[d].casts) continue;
+        casterOf[d] = spheres.size();
+        spheres.push_back(casterSphere(draws[d]));
+        casterDraws.push_back(d);
+    }
+    motion_.moved.clear();
+    if (uploaded && transforms != transformsFingerprint_) {
+        motion_.pose += 2;
+    } else {
+        for (std::size_t d : movedDraws) {
+            if (casterOf[d] == std::size_t(-1)) continue;  // moves no shadow
+            const Instance& instance = scene.instances[draws[d].instance];
+            const bool named = instance.node >= 0 && std::size_t(instance.node) < scene.nodes.size();
+            motion_.moved.push_back({casterOf[d],
+                                     named ? scene.nodes[std::size_t(instance.node)].path
+                                           : "instance " + std::to_string(draws[d].instance),
+                                     d < drawSpheres_.size() ? drawSpheres_[d] : CasterSphere{},
+                                     spheres[casterOf[d]]});
+        }
+        if (!motion_.moved.empty()) ++motion_.pose;
+    }
+    transformsFingerprint_ = transforms;
+    drawSpheres_.resize(draws.size());
+    for (std::size_t d = 0; d < draws.size(); ++d) drawSpheres_[d] = casterSphere(draws[d]);
+    // Static casters (a cachedStatic light caches them): what no playing animation moves, or casters.static.
+    std::vector<char> staticCasters;
+    const bool anyCached = std::any_of(settings.lights.begin(), settings.lights.end(), [](const LightSettings& l) {
+        return l.shadow.update == ShadowUpdate::CachedStatic;
+    });
+    if (anyCached) {
+        std::string playError;
+        const std::vector<int> playing = chosenAnimations(scene, settings.animation.play, playError).value_or(std::vector<int>{});
+        const std::vector<char> instances = staticInstances(scene, playing, settings.casters);
+        for (std::size_t d : casterDraws) staticCasters.push_back(instances[draws[d].instance]);
+        for (std::string& w : unknownCasterPathWarnings(scene, settings.casters))
+            if (w.rfind("casters.excluded", 0) != 0) stats.warnings.push_back(std::move(w));
+    }
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
     const glm::dmat4 view = camera.view(stats.renderOrigin);
@@ -174,12 +283,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention),
     // each decided against what its map holds (the plan the previous frame carried out).
-    const std::vector<CasterSphere> spheres = casterSpheres(*gpuScene_);
     // Cascades follow the fit camera; what the picture's camera cannot see is still judged from the picture's camera.
     ShadowPlan plan = planShadowViews({scene, requested, stats.renderOrigin, &cascadeCamera, stats.cameraViewProjection,
-                                       spheres, fingerprint, info_.maxTextureSize,
+                                       spheres, gpuSceneFingerprint_, info_.maxTextureSize,
                                        previousPlan_ ? &*previousPlan_ : nullptr,
-                                       std::exchange(forceReason_, std::string())});
+                                       std::exchange(forceReason_, std::string()), &motion_,
+                                       anyCached ? &staticCasters : nullptr, frames_++});
     if (!plan.error.empty()) {
         stats.error = plan.error;
         return stats;  // nothing was drawn: the previous plan still says what the maps hold
@@ -245,6 +354,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.format = array.format();
         entry.memoryBytes = state.map.memoryBytes();
         entry.reason = p.reason;
+        entry.cache = cacheStateName(p.cache);
         switch (p.action) {
         case ViewAction::Keep: break;
         case ViewAction::SkipUnseen: anySkippedForOtherReason = true; break;
@@ -255,9 +365,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         case ViewAction::Render: {
             const int timed = PassTimer::kFirstViewPass + int(v);
             timer_.begin(timed);
-            const ShadowPassCounts counts =
-                shadowPass_->run(*gpuScene_, p.view.space, light.shadow, light.depthClampApplies(), state.map);
+            const ShadowPassCounts counts = renderView(p, light, state, casterDraws, staticCasters);
             timer_.end(timed);
+            if (p.cache == CacheState::StaticPlusDynamic) entry.texelsRedrawn = std::size_t(p.rect.area());
             entry.ran = true;
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
@@ -383,6 +493,42 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     previousPlan_ = std::move(plan);  // what each view's map now holds: the next frame's planner compares with it
     stats.ok = true;
     return stats;
+}
+
+ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings& light, ViewState& state,
+                                      const std::vector<std::size_t>& casterDraws,
+                                      const std::vector<char>& statics) {
+    const LightSpace& space = p.view.space;
+    const bool clamp = light.depthClampApplies();
+    if (!p.fromStaticCache) return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map);
+    auto add = [](ShadowPassCounts& sum, const ShadowPassCounts& c) {
+        sum.castersDrawn += c.castersDrawn;
+        sum.castersSkipped += c.castersSkipped;
+        sum.alphaTestedCasters += c.alphaTestedCasters;
+        sum.trianglesDrawn += c.trianglesDrawn;
+    };
+    // Copies the cached static depth into the view's layer (a rectangle of it, or all).
+    auto copyCache = [&](const TexelRect& r) {
+        glCopyImageSubData(state.staticDepth.texture(), GL_TEXTURE_2D, 0, r.x0, r.y0, 0, state.map.texture(),
+                           GL_TEXTURE_2D, 0, r.x0, r.y0, 0, r.x1 - r.x0, r.y1 - r.y0, 1);
+    };
+    ShadowPassCounts counts;
+    std::vector<std::size_t> dynamicDraws;
+    if (p.cache == CacheState::StaticPlusDynamic) {
+        for (std::size_t c : p.dynamicCasters) dynamicDraws.push_back(casterDraws[c]);
+        copyCache(p.rect);
+        CasterSelection over{&dynamicDraws, p.rect, false};
+        return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map, over);
+    }
+    // Full: the static casters into the cached depth, a copy of it, the dynamic casters over it.
+    state.staticDepth.ensure(state.map.resolution(), state.map.format(), info_.maxTextureSize);
+    std::vector<std::size_t> staticDraws;
+    for (std::size_t c = 0; c < casterDraws.size(); ++c)
+        (c < statics.size() && statics[c] ? staticDraws : dynamicDraws).push_back(casterDraws[c]);
+    add(counts, shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.staticDepth, {&staticDraws}));
+    copyCache({0, 0, state.map.resolution(), state.map.resolution()});
+    add(counts, shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map, {&dynamicDraws, std::nullopt, false}));
+    return counts;
 }
 
 void Renderer::waitForTimings(FrameStats& stats) {

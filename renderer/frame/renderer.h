@@ -65,8 +65,13 @@ public:
 
 private:
     struct ViewState {
-        ShadowMap map;  // its layer of its group's array
+        ShadowMap map;          // its layer of its group's array
+        ShadowMap staticDepth;  // shadow.update cachedStatic: its static casters alone (the cached depth)
     };
+    // Draws a view the plan renders (every caster, or through its cached static depth); its counts.
+    // `casterDraws`: each caster's draw; `statics`: 1 per static caster (empty unless a light caches).
+    ShadowPassCounts renderView(const PlannedView& p, const LightSettings& light, ViewState& state,
+                                const std::vector<std::size_t>& casterDraws, const std::vector<char>& statics);
 
     GlInfo info_;
     std::map<MapGroup, ShadowMapArray> arrays_;
@@ -84,7 +89,13 @@ private:
     MainPass mainPass_;
     PassTimer timer_;
     std::unique_ptr<GpuScene> gpuScene_;
-    std::size_t gpuSceneFingerprint_ = 0;
+    std::size_t gpuSceneFingerprint_ = 0;  // geometryFingerprint of the uploaded scene
+    std::size_t gpuSceneLayout_ = 0;       // layoutFingerprint of the scene last seen (geometryFingerprint's key)
+    // The casters' motion: each draw's sphere last frame, the frame's moves, which casters are static.
+    std::vector<CasterSphere> drawSpheres_;
+    CasterMotion motion_;
+    std::size_t transformsFingerprint_ = 0;  // the instances' transforms as last seen
+    std::uint64_t frames_ = 0;
     std::optional<ShadowViewId> firstView_;  // the first view of the last frame (shadowMap())
     struct Receivers {
         std::size_t fingerprint = 0;
@@ -98,5 +109,8 @@ private:
 
 // Changes whenever geometry, instances or alpha-relevant material values of the scene change.
 std::size_t sceneFingerprint(const Scene& scene);
+// The same without the instances' transforms, from the contents (a posed copy of a scene has its fingerprint): what
+// the uploaded buffers and the maps' geometry depend on. Motion is told apart (CasterMotion).
+std::size_t geometryFingerprint(const Scene& scene);
 
 }  // namespace shadowlab

@@ -69,7 +69,7 @@ std::vector<CasterSphere> casterSpheres(const GpuScene& scene) {
 }
 
 ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light, const ShadowMapSettings& shadow,
-                                 bool depthClamp, ShadowMap& map) {
+                                 bool depthClamp, ShadowMap& map, const CasterSelection& selection) {
     ShadowPassCounts counts;
     glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     glViewport(0, 0, map.resolution(), map.resolution());
@@ -80,7 +80,12 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glDepthFunc(reversed ? GL_GREATER : GL_LESS);
     glClearDepth(reversed ? 0.0 : 1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    if (selection.scissor) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(selection.scissor->x0, selection.scissor->y0, selection.scissor->x1 - selection.scissor->x0,
+                  selection.scissor->y1 - selection.scissor->y0);
+    }
+    if (selection.clear) glClear(GL_DEPTH_BUFFER_BIT);
     if (depthClamp)
         glEnable(GL_DEPTH_CLAMP);
     else
@@ -93,7 +98,9 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     std::set<GLuint> prepared;  // programs whose per-pass uniforms are set
     scene.bind();
     const Scene& model = scene.scene();
-    for (const GpuDraw& draw : scene.draws()) {
+    const std::size_t drawCount = selection.draws ? selection.draws->size() : scene.draws().size();
+    for (std::size_t k = 0; k < drawCount; ++k) {
+        const GpuDraw& draw = scene.draws()[selection.draws ? (*selection.draws)[k] : k];
         if (!draw.casts) continue;  // its node is excluded (casters.excluded)
         if (!casterInVolume(casterSphere(draw), light)) {
             ++counts.castersSkipped;
@@ -123,6 +130,7 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
         counts.trianglesDrawn += std::size_t(draw.indexCount / 3);
     }
     resetFaceCulling();
+    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
     if (reversed) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);

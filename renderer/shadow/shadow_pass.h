@@ -8,6 +8,7 @@
 #include "shadow/shadow_map.h"
 #include "views/shadow_planner.h"
 
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,12 +29,19 @@ struct ShadowPassCounts {
     std::size_t trianglesDrawn = 0;
 };
 
+// Which casters a run draws and where (a cachedStatic light's views: docs/moving-scenes.md).
+struct CasterSelection {
+    const std::vector<std::size_t>* draws = nullptr;  // indices into GpuScene::draws(); nullptr: every draw
+    std::optional<TexelRect> scissor;                 // only these texels are cleared and written; nullopt: all
+    bool clear = true;                                // false: draw over what the map holds
+};
+
 class ShadowPass {
 public:
     ShadowPass();
 
     ShadowPassCounts run(const GpuScene& scene, const LightSpace& light, const ShadowMapSettings& shadow,
-                         bool depthClamp, ShadowMap& map);
+                         bool depthClamp, ShadowMap& map, const CasterSelection& selection = {});
 
     // Whether glPolygonOffsetClamp (or its EXT twin) exists; without it DepthBiasClamp is ignored (with a warning).
     bool hasPolygonOffsetClamp() const { return hasOffsetClamp_; }
