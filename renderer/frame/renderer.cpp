@@ -236,8 +236,6 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         const std::vector<int> playing = chosenAnimations(scene, settings.animation.play, playError).value_or(std::vector<int>{});
         const std::vector<char> instances = staticInstances(scene, playing, settings.casters);
         for (std::size_t d : casterDraws) staticCasters.push_back(instances[draws[d].instance]);
-        for (std::string& w : unknownCasterPathWarnings(scene, settings.casters))
-            if (w.rfind("casters.excluded", 0) != 0) stats.warnings.push_back(std::move(w));
     }
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
@@ -500,7 +498,14 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
                                       const std::vector<char>& statics) {
     const LightSpace& space = p.view.space;
     const bool clamp = light.depthClampApplies();
-    if (!p.fromStaticCache) return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map);
+    // Without its cached depth (a map the GPU refused to allocate) the view is drawn whole, every caster.
+    const bool cacheMissing = p.cache == CacheState::StaticPlusDynamic &&
+                              (!state.staticDepth.valid() || state.staticDepth.resolution() != state.map.resolution() ||
+                               state.staticDepth.format() != state.map.format());
+    if (!p.fromStaticCache || cacheMissing ||
+        (p.cache == CacheState::Full &&
+         !state.staticDepth.ensure(state.map.resolution(), state.map.format(), info_.maxTextureSize).empty()))
+        return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map);
     auto add = [](ShadowPassCounts& sum, const ShadowPassCounts& c) {
         sum.castersDrawn += c.castersDrawn;
         sum.castersSkipped += c.castersSkipped;
@@ -521,7 +526,6 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
         return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map, over);
     }
     // Full: the static casters into the cached depth, a copy of it, the dynamic casters over it.
-    state.staticDepth.ensure(state.map.resolution(), state.map.format(), info_.maxTextureSize);
     std::vector<std::size_t> staticDraws;
     for (std::size_t c = 0; c < casterDraws.size(); ++c)
         (c < statics.size() && statics[c] ? staticDraws : dynamicDraws).push_back(casterDraws[c]);
