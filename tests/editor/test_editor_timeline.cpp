@@ -108,9 +108,9 @@ TEST_F(EditorTimeline, PlayPauseLoopSpeedAndScrubMoveTheTimeAndTheScene) {
     EXPECT_FLOAT_EQ(saved.settings->animation.time, h.state().settings.animation.time);
 }
 
-// The Stats panel's views table while the scene plays: with shadow.update cachedStatic and only the Spinner moving
-// ("Spin"), the light's view is drawn static + dynamic (its cached static depth and the Spinner over it) and says the
-// Spinner moved; paused, it is reused.
+// The Stats panel's views table while the scene plays: the change to shadow.update cachedStatic draws the light's view
+// in full (its cached static depth is built); with only the Spinner moving ("Spin") it is drawn static + dynamic (the
+// cached depth and the Spinner over it) and says the Spinner moved; paused, a redraw for an overlay reuses it.
 TEST_F(EditorTimeline, TheViewsTableShowsEachViewsCacheStateWithItsReason) {
     EditorHarness& h = *harness;
     h.click("animation.play");
@@ -124,7 +124,8 @@ TEST_F(EditorTimeline, TheViewsTableShowsEachViewsCacheStateWithItsReason) {
         return rows.empty() ? ViewRow{} : rows.front();
     };
     h.settle();
-    EXPECT_EQ(firstRow().update, "reused") << firstRow().why;
+    EXPECT_EQ(firstRow().update, "full");
+    EXPECT_EQ(firstRow().why, "shadow.update changed");
     h.click("timeline.play");
     play(0.5);
     EXPECT_EQ(firstRow().update, "static + dynamic") << firstRow().why;
@@ -132,6 +133,8 @@ TEST_F(EditorTimeline, TheViewsTableShowsEachViewsCacheStateWithItsReason) {
     h.saveWindow("views_table_static_dynamic");
     h.click("timeline.play");  // pause
     h.settle();
+    h.click("viewport.frustum");  // a redraw that changes no shadow
+    h.frame(2);
     EXPECT_EQ(firstRow().update, "reused") << firstRow().why;
 }
 
