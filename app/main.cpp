@@ -3,6 +3,7 @@
 #include "cli/bench_command.h"
 #include "cli/bench_lights.h"
 #include "cli/bench_planner.h"
+#include "cli/bench_reference_update.h"
 #include "cli/check_command.h"
 #include "cli/export_command.h"
 #include "cli/hardcases_command.h"
@@ -66,17 +67,23 @@ int main(int argc, char** argv) {
     benchCmd->add_option("--frames", bench.frames, "timed frames per row")->capture_default_str()->check(
         CLI::Range(1, 100000));
     benchCmd->add_option("--resolutions", bench.resolutions, "shadow-map sizes to time")->capture_default_str();
-    benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson")->capture_default_str();
+    benchCmd->add_option("--filters", bench.filters, "point, hardware2x2, pcfN, poisson, vsm, evsm2, evsm4, msm (their keys: --set)")->capture_default_str();
     benchCmd->add_option("--json", bench.json, "also write the table as JSON");
     CLI::Option* benchLights = benchCmd->add_flag(
         "--lights", bench.lights,
         "many lights: each view's time, views a static frame and a moved light render, the main pass with 1, 2, 4, "
         "8 ... lights shadowed and not");
-    benchCmd->add_flag("--planner", bench.planner,
+    CLI::Option* benchPlanner = benchCmd->add_flag("--planner", bench.planner,
                        "the shadow planner's CPU time per frame with 8 lights (2 cascaded suns, 3 spots, 3 point "
                        "lights; camera moving and still), and each cascade's shadow pass against a bare depth draw of "
                        "the casters it holds (the settings' cascaded lights, else the first sun)")
         ->excludes(benchLights);
+    benchCmd->add_flag("--reference-update", bench.referenceUpdate,
+                       "the exact reference following an animation step (CPU, Embree): the top level updated after one "
+                       "instance and after a whole step moved, against a full rebuild (a scene with an animation: "
+                       "builtin:city-traffic)")
+        ->excludes(benchLights)
+        ->excludes(benchPlanner);
 
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
@@ -264,7 +271,8 @@ int main(int argc, char** argv) {
 
     if (*renderCmd) return cli::runRender(render);
     if (*benchCmd)
-        return bench.planner ? cli::runBenchPlanner(bench)
+        return bench.referenceUpdate ? cli::runBenchReferenceUpdate(bench)
+               : bench.planner       ? cli::runBenchPlanner(bench)
                : bench.lights ? cli::runBenchLights(bench)
                               : cli::runBench(bench);
     if (*editCmd) return editor_window::runEdit(edit);

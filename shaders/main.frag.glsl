@@ -4,9 +4,10 @@
 //   light set  DIR_LIGHTS, DIR_CASTERS, SPOT_LIGHTS, SPOT_CASTERS, POINT_LIGHTS, POINT_CASTERS: how many lights of
 //              each kind, casters first (uLights holds them in that order: directional, spot, point)
 //   maps       MAP_ARRAYS_2D (sampler2DArrayShadow, directional and spot views), MAP_ARRAYS_CUBE
-//              (samplerCubeArrayShadow, point lights: per-face perspective depth)
+//              (samplerCubeArrayShadow, point lights: per-face perspective depth); moments techniques: sampler2DArray
+//              and samplerCubeArray of moments
 //   filter     FILTER_TAPS and FILTER_GRID_RADIUS or FILTER_TAP_OFFSETS (texels; scaled by uFilterScale): the filter
-//              technique's taps
+//              technique's taps; or MOMENT_TECHNIQUE: moments maps read through the technique's own file
 //              (renderer/shading/filter_taps.cpp, shared with the pixel probe)
 //   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH | VIEW_CASCADES | VIEW_TEXEL_DENSITY; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
 //   CASCADES   how many cascades the frame's cascaded directional lights have together (uCascades' length)
@@ -25,8 +26,7 @@ layout(location = 0) out vec4 outColor;
 #define POINT_BEGIN (DIR_LIGHTS + SPOT_LIGHTS)
 
 #include "shadow/light_data.glsl"
-#include "shadow/lookup_2d.glsl"
-#include "shadow/lookup_cube.glsl"
+#include "shadow/lookup.glsl"
 #include "shadow/cascades.glsl"
 
 #if LIGHT_COUNT > 0

@@ -1,6 +1,7 @@
 #include "cli/accuracy_output.h"
 
 #include "accuracy/cause_shares.h"
+#include "cli/soft_accuracy_output.h"
 #include "settings/settings_fields.h"
 
 #include <cstdio>
@@ -50,7 +51,8 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
     out << std::fixed << std::setprecision(3);
     out << "accuracy, metrics version " << r.metricsVersion << " (" << r.width << "x" << r.height << ", k = "
         << std::setprecision(1) << r.kTexels << " texels = filter radius + 1 = " << std::setprecision(3)
-        << r.kTexels * r.texelWorldSize << " world units; e = 1/255):\n";
+        << r.kTexels * r.texelWorldSize << " world units; e = 1/255"
+        << (r.soft.measured ? "; V = the hard reference, one ray to the light's centre" : "") << "):\n";
     out << "  acne         " << std::setw(8) << r.acnePercent << " %   (" << c.acne << " of " << c.lit
         << " truly lit pixels visibly darkened, S < 1-e, farther than k from a true edge; severity: mean 1-S = "
         << r.acneSeverity << ")\n";
@@ -85,6 +87,7 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
         << c.nonFinite << ", coverage mismatch " << c.coverageMismatch << ", true boundary " << c.boundaryPixels
         << "\n";
     out.unsetf(std::ios::floatfield);
+    printSoftAccuracy(out, r.soft);
 }
 
 std::string legendText(OverlayKind kind) { return legendText(kind == OverlayKind::Error ? errorLegend() : causeLegend()); }
@@ -106,6 +109,9 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
     out << "reference cost:\n";
     if (c.bvhReused)
         out << "  BVH            reused (" << c.triangles << " triangles)\n";
+    else if (c.bvhUpdated)
+        out << "  BVH update     " << std::setprecision(3) << c.bvhUpdateMs << std::setprecision(1) << " ms ("
+            << c.instancesMoved << " instances moved; the mesh BVHs kept, the top level re-committed)\n";
     else
         out << "  BVH build      " << c.bvhBuildMs << " ms (" << c.triangles << " triangles, Embree)\n";
     if (c.referenceReused) {
@@ -160,6 +166,7 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"boundaryPixels", c.boundaryPixels}, {"coverageMismatch", c.coverageMismatch}}},
         {"reference",
          {{"bvhReused", k.bvhReused}, {"referenceReused", k.referenceReused}, {"bvhBuildMs", k.bvhBuildMs},
+          {"bvhUpdated", k.bvhUpdated}, {"bvhUpdateMs", k.bvhUpdateMs}, {"instancesMoved", k.instancesMoved},
           {"triangles", k.triangles}, {"gbufferMs", k.gbufferMs}, {"traceMs", k.traceMs}, {"rays", k.rays},
           {"raysPerSecond", k.raysPerSecond}, {"threads", k.threads}, {"boundaryMs", k.boundaryMs},
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
@@ -168,6 +175,7 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
     json["texelDensity"] = {{"pixels", r.texelDensity.pixels}, {"p5", r.texelDensity.p5},
                             {"median", r.texelDensity.median}, {"p95", r.texelDensity.p95}};
     if (!r.cascades.cascades.empty()) json["cascaded"] = cascadesToJson(r.cascades);
+    if (r.soft.measured) json["soft"] = softAccuracyToJson(r.soft);
     return json;
 }
 

@@ -22,6 +22,7 @@ struct BenchOptions {
     std::string json;  // optional: the table as JSON
     bool lights = false;  // many lights instead: per-view times, what the planner skips, main pass per light count
     bool planner = false;  // the planner's CPU time with 8 lights, each cascade's pass against a bare depth draw
+    bool referenceUpdate = false;  // the exact reference's update after an animation step against a rebuild
 };
 
 int runBench(const BenchOptions& options);

@@ -196,14 +196,14 @@ int runBenchPlanner(const BenchOptions& options) {
         nlohmann::json cascades = nlohmann::json::array();
         for (const ShadowViewStats& v : last.views) {
             if (!v.hasView || v.kind != ShadowViewKind::Cascade) continue;
-            // The instances the pass draws into this cascade: those that cast and whose sphere meets its volume.
+            // The instances the pass draws into this cascade: the pass's own selection (castersInVolume).
             std::vector<char> held(scene.instances.size(), 0);
             int heldCount = 0;
-            for (const GpuDraw& draw : renderer.gpuScene()->draws())
-                if (draw.casts && casterInVolume(casterSphere(draw), v.space) && !held[draw.instance]) {
-                    held[draw.instance] = 1;
-                    ++heldCount;
-                }
+            for (std::uint32_t d : castersInVolume(*renderer.gpuScene(), v.space).draws) {
+                const std::size_t instance = renderer.gpuScene()->draws()[d].instance;
+                heldCount += !held[instance];
+                held[instance] = 1;
+            }
             const LightSettings& light = cascaded.lights[v.light];
             std::cout << "  " << std::left << std::setw(18) << v.name << std::right << std::setw(5) << v.resolution
                       << "² " << depthFormatName(v.format) << "  ";
@@ -219,14 +219,15 @@ int runBenchPlanner(const BenchOptions& options) {
             if (!timing.ok) return fail("bare draw for " + v.name + ": " + timing.error);
             const double shadowMs = medianOf(perView[v.name]);
             const double ratio = timing.ms > 0.0 ? shadowMs / timing.ms : 0.0;
-            std::cout << std::setw(6) << v.castersDrawn << " casters " << std::setw(9) << v.triangles
-                      << " triangles  shadow " << std::setprecision(3) << std::setw(8) << shadowMs << " ms  bare "
-                      << std::setw(8) << timing.ms << " ms  ratio " << std::setprecision(2) << ratio
-                      << (ratio <= kCascadeTargetRatio ? "" : "  (over the target)") << "\n";
+            std::cout << std::setw(6) << v.castersDrawn << " casters in " << v.drawCalls << " draw calls "
+                      << std::setw(9) << v.triangles << " triangles  shadow " << std::setprecision(3) << std::setw(8)
+                      << shadowMs << " ms  bare " << std::setw(8) << timing.ms << " ms  ratio " << std::setprecision(2)
+                      << ratio << (ratio <= kCascadeTargetRatio ? "" : "  (over the target)") << "\n";
             cascades.push_back({{"view", v.name}, {"light", v.light}, {"cascade", v.index}, {"ran", true},
                                 {"direction", {light.direction.x, light.direction.y, light.direction.z}},
                                 {"resolution", v.resolution}, {"format", depthFormatName(v.format)},
-                                {"casters", v.castersDrawn}, {"heldInstances", heldCount},
+                                {"casters", v.castersDrawn}, {"drawCalls", v.drawCalls},
+                                {"heldInstances", heldCount},
                                 {"triangles", v.triangles}, {"bareTriangles", bare.triangles()},
                                 {"shadowMs", shadowMs}, {"bareMs", timing.ms}, {"ratio", ratio}});
         }

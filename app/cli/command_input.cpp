@@ -38,7 +38,7 @@ SceneLoadResult loadSceneForCommand(const std::string& spec, std::initializer_li
     if (!loaded.scene) return loaded;
     for (const std::string& w : loaded.scene->warnings)
         std::cerr << "warning: " << loaded.scene->name << ": " << w << "\n";
-    // The scene at the first settings' animation time (a --compare side shares the pose: one scene is drawn).
+    // The scene at the first settings' animation time (render --compare poses a copy for B at its own).
     for (const Settings* s : settings) {
         if (!s) continue;
         if (std::string error = poseScene(*loaded.scene, s->animation); !error.empty()) {

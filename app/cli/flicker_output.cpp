@@ -2,6 +2,7 @@
 
 #include "cli/accuracy_output.h"
 
+#include <algorithm>
 #include <iomanip>
 
 namespace shadowlab::cli {
@@ -54,6 +55,17 @@ void printFlicker(std::ostream& out, const FlickerReport& r) {
         << (!movesCamera(m.kind)         ? "\n"
             : r.cascadeStepTexels.empty() ? " (a camera motion must not re-render a scene-fitted map)\n"
                                           : " (cascades follow the camera)\n");
+    // An animation moves instances: the reference's BVH follows them (renderer/reference/embree_scene.h).
+    std::size_t updated = 0;
+    double updateMs = 0.0;
+    for (const FlickerFrame& f : r.frames)
+        if (f.cost.bvhUpdated) {
+            ++updated;
+            updateMs = std::max(updateMs, f.cost.bvhUpdateMs);
+        }
+    if (updated > 0)
+        out << std::setprecision(3) << "  reference BVH updated (instances moved, no mesh BVH rebuilt) in " << updated
+            << " of " << r.frames.size() << " frames, at most " << updateMs << " ms\n";
     out << std::setprecision(3);
     out << "  pair     flicker %   V changed %   |dS|>1/8 %   mean |dS|   measured   views\n";
     for (const FlickerPair& p : r.pairs) {
@@ -79,6 +91,9 @@ nlohmann::json flickerToJson(const FlickerReport& r) {
     for (const FlickerFrame& f : r.frames) {
         nlohmann::json j = numbersToJson(f.numbers);
         j["shadowViewsRendered"] = f.shadowViewsRendered;
+        j["reference"] = {{"bvhReused", f.cost.bvhReused}, {"bvhUpdated", f.cost.bvhUpdated},
+                          {"bvhBuildMs", f.cost.bvhBuildMs}, {"bvhUpdateMs", f.cost.bvhUpdateMs},
+                          {"instancesMoved", f.cost.instancesMoved}};
         frames.push_back(std::move(j));
     }
     return {{"metricsVersion", kMetricsVersion},

@@ -31,10 +31,15 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
     out << "shadow pass: " << milliseconds(stats.shadowPass) << " — " << stats.shadowPass.reason << "; "
         << stats.castersDrawn << " casters drawn (" << stats.alphaTestedCasters << " alpha-tested), "
         << stats.castersSkipped << " outside the light's volume skipped, " << stats.shadowTriangles
-        << " triangles\n";
+        << " triangles, " << stats.shadowDrawCalls << " draw calls\n";
+    out << "scene upload: " << (stats.sceneUpload.ran ? stats.sceneUpload.reason : "unchanged") << "\n";
     out << "main pass: " << milliseconds(stats.mainPass) << "; variants:";
     for (const std::string& v : stats.mainVariants) out << " [" << v << "]";
     out << "\n";
+    using NamedPass = std::pair<const char*, const PassStats*>;
+    for (const auto& [name, pass] : {NamedPass{"moments pass", &stats.momentsPass}, NamedPass{"blur pass", &stats.blurPass}})
+        if (pass->ran || pass->reason.find("compares depth") == std::string::npos)
+            out << name << ": " << milliseconds(*pass) << " — " << pass->reason << "\n";
     if (stats.depthBoundsPass.ran) {
         out << "depth bounds pass: " << milliseconds(stats.depthBoundsPass) << " — " << stats.depthBoundsPass.reason;
         if (stats.seenDepths && stats.seenDepths->farthest >= stats.seenDepths->nearest)

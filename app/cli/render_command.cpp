@@ -11,6 +11,7 @@
 #include "image/image_io.h"
 #include "image/split_view.h"
 #include "light/scene_lights.h"
+#include "scene/scene_animation.h"
 #include "scene/scene_source.h"
 #include "settings/preset_io.h"
 #include "settings/settings_fields.h"
@@ -20,6 +21,8 @@
 #include <array>
 #include <cstdio>
 #include <iostream>
+#include <optional>
+#include <tuple>
 
 namespace shadowlab::cli {
 
@@ -59,6 +62,15 @@ int runRender(const RenderOptions& options) {
     SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings, settingsB ? &*settingsB : nullptr});
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
+    // B at its own preset's animation time and choice: the scene was posed at A's (posing sets every transform).
+    std::optional<Scene> posedB;
+    if (settingsB && settingsB->animation != settings->animation) {
+        posedB = scene;
+        if (std::string error = poseScene(*posedB, settingsB->animation); !error.empty())
+            return fail("--compare " + options.compare + ": " + error);
+        if (!posedB->animations.empty()) std::cerr << "note: B: " << animationNote(*posedB, settingsB->animation) << "\n";
+    }
+    const Scene& sceneB = posedB ? *posedB : scene;
 
     // The map files' light and size are known before the render: a point light's faces unfold into a 4 x 3 cross.
     std::optional<std::size_t> mapLight;
@@ -110,17 +122,22 @@ int runRender(const RenderOptions& options) {
             Renderer rendererB;
             RenderTarget targetB;
             if (std::string error = targetB.resize(options.width, options.height); !error.empty()) return fail(error);
-            FrameStats statsB = rendererB.render(scene, *settingsB, camera, targetB);
+            FrameStats statsB = rendererB.render(sceneB, *settingsB, camera, targetB);
             if (!statsB.ok) return fail(options.compare + ": " + statsB.error);
             rendererB.waitForTimings(statsB);
             std::vector<std::string> labelA = compareLabel("A", options.preset.empty() ? "default" : options.preset, stats);
             std::vector<std::string> labelB = compareLabel("B", options.compare, statsB);
             if (options.measure) {
                 AccuracyMeter meter;  // one reference for both sides when the light and view are the same
-                for (auto [side, label] : {std::pair{&*settings, &labelA}, std::pair{&*settingsB, &labelB}}) {
-                    const AccuracyReport report = meter.measure(scene, *side, camera, options.width, options.height);
+                for (auto [side, sideScene, label] : {std::tuple{&*settings, &scene, &labelA},
+                                                      std::tuple{&*settingsB, &sceneB, &labelB}}) {
+                    const AccuracyReport report =
+                        meter.measure(*sideScene, *side, camera, options.width, options.height);
                     if (!report.ok) return fail("--measure: " + report.error);
                     label->push_back(accuracyLine(report));
+                    // The numbers in text too, with the truly shadowed pixels (they follow each side's pose).
+                    std::cout << label->front() << ": " << label->back() << ", truly shadowed "
+                              << report.counts.shadowed << " of " << report.counts.measured << " measured pixels\n";
                 }
             }
             pixels = composeSplitView(topRowFirst(pixels, options.width, options.height),

@@ -13,6 +13,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 namespace shadowlab::cli {
 
@@ -26,6 +27,14 @@ std::string stepLine(const TuneStep& s) {
                   s.acnePercent, s.leakPercent, s.wrongPercent, s.wrongBeyondK, s.edgeErrorTexels,
                   s.bestSoFar ? "  <- best" : "");
     return line;
+}
+
+// The tuner keeps shadow.depthBiasClamp as given: it caps what any candidate's constant and slope bias can do.
+std::string clampNote(float clamp) {
+    std::ostringstream text;
+    text << "; shadow.depthBiasClamp " << clamp
+         << " (kept as given) caps every candidate's constant + slope bias: raise it or set it to 0";
+    return text.str();
 }
 
 }  // namespace
@@ -112,9 +121,13 @@ int runTune(const TuneOptions& options) {
                 const CauseInfo& blocking = causeInfo(result.blockingCause);
                 std::cout << "\n" << label << ": NO setting reached acne <= " << options.maxAcnePercent << " %";
                 if (result.blockingCascade >= 0)  // a cascade's acne stays above the limit
-                    std::cout << " in every cascade: cascade:" << result.blockingCascade << " stops it (texel "
-                              << result.blockingCascadeTexel << " world units, acne " << result.blockingCascadeAcne
-                              << " % at the closest candidate; " << blocking.name << ", " << blocking.remedy
+                    std::cout << " in every cascade: cascade:" << result.blockingCascade << " of " << label
+                              << " stops it: its " << result.blockingCascadePixels
+                              << " measured pixels keep acne above the limit with every candidate (least "
+                              << result.blockingCascadeLeastAcne << " %; " << result.blockingCascadeAcne
+                              << " % at the closest candidate; texel " << result.blockingCascadeTexel
+                              << " world units; " << blocking.name << ", " << blocking.remedy
+                              << (best.depthBiasClamp > 0.0f ? clampNote(best.depthBiasClamp) : std::string())
                               << "). Overall acne there: ";
                 else
                     std::cout << ": stopped by " << blocking.name << " (" << blocking.remedy << "). Least acne: ";
@@ -143,6 +156,10 @@ int runTune(const TuneOptions& options) {
                                   {"reachedLimit", result.reachedLimit},
                                   {"blockingCause", causeInfo(result.blockingCause).key},
                                   {"blockingCascade", result.blockingCascade},
+                                  {"blockingCascadePixels", result.blockingCascadePixels},
+                                  {"blockingCascadeTexelWorldSize", result.blockingCascadeTexel},
+                                  {"blockingCascadeAcnePercent", result.blockingCascadeAcne},
+                                  {"blockingCascadeLeastAcnePercent", result.blockingCascadeLeastAcne},
                                   {"seconds", result.seconds},
                                   {"closest",
                                    {{"depthBias", best.depthBias}, {"slopeScaledDepthBias", best.slopeScaledDepthBias},

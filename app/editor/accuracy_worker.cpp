@@ -155,6 +155,7 @@ AccuracyJobResult AccuracyWorker::run(const AccuracyJob& job, std::uint64_t id) 
         } else if (job.kind == AccuracyJobKind::Measure) {
             progress_.setStage("measuring");
             result.report = gl_->meter.measure(*job.scene, *one, job.camera, job.width, job.height, &progress_);
+            result.report.soft.light = job.light;  // the meter saw it as light 0 of `one`
         } else {
             TuneResult tune = tuneBias(gl_->meter, *job.scene, *one, job.camera, job.width, job.height,
                                        job.maxAcnePercent, &progress_, [this](const TuneStep& step) {

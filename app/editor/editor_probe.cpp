@@ -99,8 +99,10 @@ void Editor::runProbe() {
     const std::optional<AccuracyViewKey> key = accuracyKey();
     if (!key || !renderer_) return;
     std::optional<glm::ivec2> pixel = p.request;
-    // Follow edits live, but not during a drag (an orbit would re-probe every frame).
-    if (!pixel && p.report && p.key && !(*p.key == *key) && !ImGui::IsAnyMouseDown())
+    // The panel's view choice follows the light (another light, kind or cascade count: all views again).
+    followLight(p.view, key->light, viewNamesOf(state_, key->light));
+    // Follow edits and another view choice live, but not during a drag (an orbit would re-probe every frame).
+    if (!pixel && p.report && p.key && (!(*p.key == *key) || p.probedView != p.view.view) && !ImGui::IsAnyMouseDown())
         pixel = glm::ivec2(p.report->x, p.report->y);
     if (!pixel) return;
     p.request.reset();
@@ -109,16 +111,19 @@ void Editor::runProbe() {
     // A live count carries no per-pixel data: only a full measure of this view can explain the pixel.
     const bool measuredHere = a.report && !a.report->live && a.reportKey && *a.reportKey == *key;
     PixelProbeReport report;
-    if (std::string error = captureProbe(*key);
-        !error.empty()) {
+    std::string error = captureProbe(*key);
+    std::optional<std::size_t> view;  // the chosen view, found as the CLI's --view finds it
+    if (error.empty() && !p.view.view.empty()) view = findView(probe_->views(), p.view.view, error);
+    if (!error.empty()) {
         report.x = pixel->x;
         report.y = pixel->y;
         report.error = error;
     } else {
-        report = probe_->at(pixel->x, pixel->y, measuredHere ? &*a.report : nullptr);
+        report = probe_->at(pixel->x, pixel->y, measuredHere ? &*a.report : nullptr, view);
     }
     p.report = std::move(report);
     p.key = key;
+    p.probedView = p.view.view;
     p.withMeasurement = measuredHere;
 }
 

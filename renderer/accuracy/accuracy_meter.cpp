@@ -12,6 +12,7 @@
 #include "light/scene_lights.h"
 #include "reference/embree_scene.h"
 #include "reference/parallel_rows.h"
+#include "reference/soft_visibility.h"
 #include "reference/visibility.h"
 #include "scene/scene_casters.h"
 
@@ -190,6 +191,10 @@ struct AccuracyMeter::Impl {
     std::optional<ReferenceLight> visibilityLight;
     VisibilityResult visibility;
 
+    // Light size and ray count: the soft reference (for a light of size > 0).
+    std::optional<std::pair<ReferenceLight, SoftLight>> softKey;
+    SoftVisibilityResult soft;
+
     // Light space (map size, projection): the boundary in texels and each pixel's distance to it.
     std::optional<std::pair<std::vector<glm::dmat4>, int>> boundaryKey;  // every view's matrix, the resolution
     std::optional<ShadowBoundary> boundary;
@@ -199,12 +204,14 @@ struct AccuracyMeter::Impl {
     std::unique_ptr<GpuAccuracyCounter> counter;
     bool counterCurrent = false;
 
-    void dropScene() {
+    // Forgets everything traced from the scene; keeps the BVH when `keepBvh` (its instances are about to move).
+    void dropScene(bool keepBvh = false) {
         scene = nullptr;
         gpuScene.reset();
-        bvh.reset();
+        if (!keepBvh) bvh.reset();
         surfaceKey.reset();
         visibilityLight.reset();
+        softKey.reset();
         boundaryKey.reset();
         counterCurrent = false;
     }
@@ -299,11 +306,23 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.cost.toolFrameMs = msSince(t);
     if (cancelled(progress)) return stop();
 
-    // The BVH, once per scene geometry and set of casters.
+    // The BVH, once per scene geometry and set of casters; when only instance transforms changed (an animation
+    // step), its top level follows them and the mesh BVHs stay. Everything traced from it is traced again.
     const std::vector<char> casting = castingInstances(scene, settings.casters);
     const std::size_t fingerprint = referenceFingerprint(scene, casting);
     report.cost.bvhReused = m.scene == &scene && m.fingerprint == fingerprint && m.bvh;
-    if (!report.cost.bvhReused) {
+    report.cost.bvhUpdated =
+        !report.cost.bvhReused && m.scene == &scene && m.bvh && m.bvh->sameGeometry(scene, casting);
+    if (report.cost.bvhUpdated) {
+        setStage(progress, 0.1f, "moving the BVH's instances");
+        m.dropScene(true);
+        m.origin = stats.renderOrigin;
+        report.cost.instancesMoved = m.bvh->updateTransforms(scene, m.origin);
+        m.gpuScene = std::make_unique<GpuScene>(scene, m.origin);  // the G-buffer's draws carry the transforms
+        m.scene = &scene;
+        m.fingerprint = fingerprint;
+        report.cost.bvhUpdateMs = m.bvh->updateMilliseconds();
+    } else if (!report.cost.bvhReused) {
         setStage(progress, 0.1f, "building the BVH");
         m.dropScene();
         m.origin = stats.renderOrigin;
@@ -325,6 +344,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         t = Clock::now();
         m.surfaceKey.reset();
         m.visibilityLight.reset();
+        m.softKey.reset();
         m.boundaryKey.reset();
         if (std::string error = m.gbuffer.render(*m.gpuScene, stats.cameraViewProjection, width, height,
                                                  camera.position - m.origin, m.samples);
@@ -352,6 +372,24 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         report.cost.raysPerSecond =
             m.visibility.milliseconds > 0.0 ? double(m.visibility.rays) / (m.visibility.milliseconds * 1e-3) : 0.0;
         report.cost.threads = m.visibility.threads;
+    }
+
+    // The soft reference, once per light, size and ray count (a hard light has none: version 2's numbers only).
+    const SoftLight disc = softLight(settings.lights[0], settings.reference.softRays);
+    if (disc.soft()) {
+        const std::pair<ReferenceLight, SoftLight> softKey{light, disc};
+        if (!(visibilityReused && m.softKey && *m.softKey == softKey)) {
+            setStage(progress, 0.6f, "tracing the soft reference");
+            m.softKey.reset();
+            const double radius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
+            m.soft = traceSoftVisibility(*m.bvh, m.samples, m.visibility.classes, light, disc, radius,
+                                         progress ? &progress->cancel : nullptr);
+            if (m.soft.cancelled) return stop();
+            m.softKey = softKey;
+            report.soft.traceMs = m.soft.milliseconds;
+            report.soft.tracedRays = m.soft.rays;
+            report.soft.threads = m.soft.threads;
+        }
     }
 
     // The true boundary in this light space's texels.
@@ -416,6 +454,27 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     const MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
     report.texelDensity = texelDensityOf(metrics.measured, units);
+    if (disc.soft()) {
+        SoftMetricsInput softInput;
+        softInput.width = width;
+        softInput.height = height;
+        softInput.measured = &metrics.measured;
+        softInput.visibility = &m.soft.visibility;
+        softInput.shadowFactor = &shadowFactor;
+        softInput.points = &m.samples.point;
+        softInput.normals = &m.samples.normal;
+        softInput.worldPerTexel = [&](std::size_t i) { return units.worldPerTexel(i); };
+        const SoftAccuracy softCost = report.soft;
+        report.soft = computeSoftMetrics(softInput);
+        report.soft.traceMs = softCost.traceMs;
+        report.soft.tracedRays = softCost.tracedRays;
+        report.soft.threads = softCost.threads;
+        report.soft.light = 0;  // of these settings; measureLights names the light's index
+        report.soft.size = double(settings.lights[0].size);
+        report.soft.sizeUnit = settings.lights[0].type == LightType::Directional ? "degrees" : "world units";
+        report.soft.rays = disc.rays;
+        report.pixelSoftVisibility = m.soft.visibility;
+    }
     report.pixelOnBoundary.assign(count, 0);
     for (std::size_t i = 0; i < count; ++i) {
         report.pixelOnBoundary[i] = boundary.onBoundary(i) ? 1 : 0;

@@ -6,6 +6,7 @@
 // Knows no window, UI or CLI. Needs a current GL 4.5 context on the calling thread (one meter per context).
 #include "accuracy/cascade_accuracy.h"
 #include "accuracy/mismatch_cause.h"
+#include "accuracy/soft_metrics.h"
 #include "frame/camera.h"
 #include "scene/scene.h"
 #include "settings/settings.h"
@@ -79,8 +80,11 @@ enum class PixelMark : std::uint8_t { None, Acne, AcneNearEdge, Leak, LeakNearEd
 // What the reference and the measurement cost (milliseconds unless named otherwise).
 struct AccuracyCost {
     bool bvhReused = false;        // the scene's BVH came from the cache
+    bool bvhUpdated = false;       // only instance transforms changed: the cached BVH's top level followed them
     bool referenceReused = false;  // G-buffer, visibility and boundary distances came from the cache
     double bvhBuildMs = 0.0;
+    double bvhUpdateMs = 0.0;      // bvhUpdated: moving the instances and re-committing the top level
+    std::size_t instancesMoved = 0;  // bvhUpdated: instances whose transform changed
     std::size_t triangles = 0;     // in the BVH
     double gbufferMs = 0.0;        // G-buffer pass + read-back + double-precision surface rebuild
     double traceMs = 0.0;          // shadow rays
@@ -154,6 +158,12 @@ struct AccuracyReport : AccuracyNumbers {
     TexelDensity texelDensity;
     // A cascaded light: its numbers per cascade and at the seams (cascade_accuracy.h); empty cascades otherwise.
     CascadeAccuracy cascades;
+
+    // A light of size > 0: its soft numbers (version 3, against the soft reference; soft_metrics.h) beside the hard
+    // ones above (version 2, against the ray through the light's centre). soft.measured is false for a hard light
+    // and for a live remeasure (the GPU counter counts the hard numbers only).
+    SoftAccuracy soft;
+    std::vector<float> pixelSoftVisibility;  // the soft V per pixel, row 0 = TOP (empty for a hard light)
 
     // Shadow views the tool frame's planner rendered (0: every map was reused; flicker.h checks it under camera motion).
     std::size_t shadowViewsRendered = 0;

@@ -331,7 +331,13 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
             const CascadeNumbers& c = result.report.cascades.cascades[std::size_t(closest.worstCascade)];
             result.blockingCascade = c.cascade;
             result.blockingCascadeTexel = c.texelWorldSize;
+            result.blockingCascadePixels = c.measured;
             result.blockingCascadeAcne = c.acnePercent;
+            result.blockingCascadeLeastAcne = c.acnePercent;
+            for (const TuneStep& step : result.path)
+                if (std::size_t(c.cascade) < step.cascadeAcnePercent.size())
+                    result.blockingCascadeLeastAcne =
+                        std::min(result.blockingCascadeLeastAcne, step.cascadeAcnePercent[std::size_t(c.cascade)]);
         }
         // What keeps the least-acne candidate's acne up: the cause of most of its acne pixels.
         std::size_t most = 0;

@@ -59,10 +59,13 @@ struct TuneResult {
     Settings closest;                // the candidate with the least acne (== best when reached)
     MismatchCause blockingCause = MismatchCause::None;  // not reached: the cause of most of closest's acne
     // Not reached on a cascaded light: the cascade whose acne stays above the limit at the closest candidate (the
-    // worst judged one), its texel and its acne; -1 when no judged cascade is above it or the light has no cascades.
+    // worst judged one), its texel, the measured pixels it holds and its acne there; -1 when no judged cascade is
+    // above it or the light has no cascades. blockingCascadeLeastAcne: the least acne it reached with any candidate.
     int blockingCascade = -1;
     double blockingCascadeTexel = 0.0;
+    std::size_t blockingCascadePixels = 0;
     double blockingCascadeAcne = 0.0;
+    double blockingCascadeLeastAcne = 0.0;
     std::vector<TuneStep> path;      // every candidate measured, in order
     AccuracyReport report;           // the measurement of `closest`
     double seconds = 0.0;            // wall time of the search

@@ -173,6 +173,7 @@ ManyLightsReport measureLights(AccuracyMeter& meter, const Scene& scene, const S
         light.index = indices[j];
         light.type = one->lights[0].type;
         light.report = meter.measure(scene, *one, camera, width, height, progress);
+        light.report.soft.light = indices[j];
         if (progress) {
             progress->base = base;
             progress->span = span;

@@ -3,6 +3,7 @@
 #include "export/shadow_shader_code.h"
 #include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
+#include "shading/filters/filter_technique.h"
 
 #include <nlohmann/json.hpp>
 
@@ -115,6 +116,7 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
         case FilterKind::Poisson:
             o << kPoissonTaps << " Poisson-disk bilinear comparisons within " << number(f.poissonRadius) << " texels, averaged";
             break;
+        default: o << filterTechnique(f.kind).name; break;  // moments techniques are refused before (exportForScene)
     }
     o << (e.reversedZ ? "; compare: lit when receiver depth >= stored depth (GEQUAL).\n"
                       : "; compare: lit when receiver depth <= stored depth (LEQUAL).\n");
@@ -460,10 +462,7 @@ nlohmann::json jsonOf(const ShadowExport& e) {
                     {"borderStored", e.borderStored},  // what the sampler holds: 1 - borderDepth for reversed-Z
                     {"compare", e.reversedZ ? "GEQUAL" : "LEQUAL"},
                     {"filter", e.linearCompare ? "linear" : "nearest"}};
-    const char* kind = e.filter.kind == FilterKind::Point         ? "point"
-                       : e.filter.kind == FilterKind::Hardware2x2 ? "hardware2x2"
-                       : e.filter.kind == FilterKind::Pcf         ? "pcf"
-                                                                  : "poisson";
+    const char* kind = filterTechnique(e.filter.kind).name;
     nlohmann::json taps = nlohmann::json::array();
     for (const FilterTap& tap : filterTaps(e.filter)) taps.push_back({tap.offsetTexels.x, tap.offsetTexels.y});
     j["filter"] = {{"kind", kind}, {"kernel", e.filter.kernel}, {"poissonRadiusTexels", e.filter.poissonRadius},

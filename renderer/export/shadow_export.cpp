@@ -101,6 +101,12 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
         error = problems.front();
         return std::nullopt;
     }
+    if (const FilterTechnique& t = filterTechnique(requested.filter.kind); t.moments) {
+        error = std::string("filter.kind ") + t.name +
+                ": the export writes depth-comparison lookups (point, hardware2x2, pcf, poisson); a moments "
+                "technique's lookup is shaders/" + t.moments->glslFile + " with shaders/moments.comp.glsl";
+        return std::nullopt;
+    }
     const Settings settings = withEffectiveLights(requested, scene);
     ShadowExportSet set;
     set.sceneLabel = sceneLabel;

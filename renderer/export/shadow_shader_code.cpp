@@ -252,7 +252,7 @@ std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     return o.str();
 }
 
-// Point lights: shadowCube and faceDepth of shaders/shadow/lookup_cube.glsl.
+// Point lights: shadowCube of shaders/shadow/lookup_cube.glsl and faceDepth of cube_face_depth.glsl.
 std::string codeCube(const ShadowExport& e, const ShaderTarget& t) {
     const Words w(t.language);
     const std::string p = "light" + std::to_string(e.lightIndex);

@@ -9,6 +9,7 @@
 //  - previousFrame: the depth the main pass already wrote is reduced after it; the result is read when the next
 //    frame plans its views (by then the GPU has finished the frame before, so the read does not wait; if the GPU is
 //    more than a frame behind it waits rather than use older bounds). No extra draw; the bounds are a frame late.
+#include "frame/depth_casters.h"
 #include "frame/gpu_scene.h"
 #include "frame/render_target.h"
 #include "gl/depth_range_reduction.h"
@@ -35,15 +36,10 @@ public:
     std::optional<ViewDepths> collect();
 
 private:
-    struct Program {
-        gl::Program program;
-        GLint viewProjection = -1, model = -1, uvTransform = -1, alphaFactor = -1, alphaCutoff = -1, baseColor = -1;
-        explicit Program(gl::Program built);
-    };
     void drawDepth(const GpuScene& scene, const glm::dmat4& viewProjection, RenderTarget& target);
     ViewDepths toViewDepths(const std::optional<WrittenDepths>& written, const glm::dmat4& projection) const;
 
-    Program opaque_, alphaFactor_, alphaTextured_;  // the shadow pass's shaders, drawn from the camera
+    DepthCasters casters_;  // the shadow pass's depth drawing, from the camera
     DepthRangeReduction reduction_;
     glm::dmat4 pendingProjection_{1.0};  // the projection of the pending reduction's depth
 };

@@ -6,26 +6,40 @@ namespace shadowlab {
 
 namespace {
 
-void cull(bool enabled, GLenum face, bool mirrored) {
-    if (enabled) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(face);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
-    glFrontFace(mirrored ? GL_CW : GL_CCW);
-}
+FaceCullState cullState(bool enabled, bool front, bool clockwise) { return {enabled, enabled && front, clockwise}; }
 
 bool doubleSided(const Material* material) { return material && material->doubleSided; }
 
 }  // namespace
 
+FaceCullState viewFaceCullState(const Material* material, bool mirrored) {
+    // The winding stays part of the state with culling off: main.frag.glsl reads gl_FrontFacing.
+    return cullState(!doubleSided(material), false, mirrored);
+}
+
+FaceCullState shadowFaceCullState(CullMode mode, const Material* material, bool mirrored) {
+    // No shadow-pass shader reads gl_FrontFacing: with culling off the winding changes nothing, so mirrored and
+    // plain draws share the state (and a multi-draw call).
+    const bool culls = shadowPassCullsAny(mode, doubleSided(material));
+    return cullState(culls, mode == CullMode::Front, culls && mirrored);
+}
+
+void applyFaceCulling(const FaceCullState& state) {
+    if (state.cull) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(state.cullFront ? GL_FRONT : GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    glFrontFace(state.clockwise ? GL_CW : GL_CCW);
+}
+
 void applyViewFaceCulling(const Material* material, bool mirrored) {
-    cull(!doubleSided(material), GL_BACK, mirrored);
+    applyFaceCulling(viewFaceCullState(material, mirrored));
 }
 
 void applyShadowFaceCulling(CullMode mode, const Material* material, bool mirrored) {
-    cull(shadowPassCullsAny(mode, doubleSided(material)), mode == CullMode::Front ? GL_FRONT : GL_BACK, mirrored);
+    applyFaceCulling(shadowFaceCullState(mode, material, mirrored));
 }
 
 void resetFaceCulling() {

@@ -19,6 +19,18 @@ inline bool shadowPassCulls(CullMode mode, bool doubleSided, bool frontFacesLigh
     return shadowPassCullsAny(mode, doubleSided) && (mode == CullMode::Back ? !frontFacesLight : frontFacesLight);
 }
 
+// The GL face-culling state a draw needs, as a value: draws with equal states can share one multi-draw call
+// (frame/draw_batches.h).
+struct FaceCullState {
+    bool cull = false;
+    bool cullFront = false;  // glCullFace(GL_FRONT), else GL_BACK
+    bool clockwise = false;  // glFrontFace(GL_CW): a mirrored instance's front faces
+    int key() const { return int(cull) | int(cullFront) << 1 | int(clockwise) << 2; }  // 0..7, distinct per state
+};
+FaceCullState viewFaceCullState(const Material* material, bool mirrored);
+FaceCullState shadowFaceCullState(CullMode mode, const Material* material, bool mirrored);
+void applyFaceCulling(const FaceCullState& state);
+
 // Sets GL_CULL_FACE, glCullFace and glFrontFace for one draw of the main pass or the G-buffer.
 void applyViewFaceCulling(const Material* material, bool mirrored);
 

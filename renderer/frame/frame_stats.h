@@ -40,6 +40,7 @@ struct ShadowViewStats {
     std::size_t memoryBytes = 0;  // its layer of the map array
     int castersDrawn = 0;
     int castersSkipped = 0;  // outside the view's volume
+    int drawCalls = 0;       // multi-draw calls the pass issued (one per group of casters sharing their state)
     std::size_t triangles = 0;
 };
 
@@ -53,6 +54,15 @@ struct FrameStats {
     // projection.depthBounds: the depth prepass and its reduction (sameFrame) or the main depth's reduction for the
     // next frame (previousFrame); not run when no cascaded light asks for it.
     PassStats depthBoundsPass;
+    // What this frame sent of the scene: "geometry uploaded, N bytes" (a new or changed scene), "transforms updated,
+    // N bytes" (only instances moved: the transform buffer's changed entries), or not run ("unchanged").
+    PassStats sceneUpload;
+    std::size_t geometryBytesUploaded = 0;
+    std::size_t transformBytesUploaded = 0;
+    // A moments technique (filter.kind vsm, evsm2, evsm4, msm): the views' depth converted to moments, and their blur;
+    // each runs only for the views the shadow pass re-rendered (or whose moments settings changed).
+    PassStats momentsPass;
+    PassStats blurPass;
     std::optional<ViewDepths> seenDepths;  // the seen depths the cascades were fitted to (raw, before quantizing)
     std::vector<ShadowViewStats> views;  // every view of every light (see ShadowViewStats)
     std::size_t lightCount = 0;          // the frame's lights (the effective ones)
@@ -64,6 +74,7 @@ struct FrameStats {
     std::size_t shadowMapBytes = 0;          // every map array together
     int castersDrawn = 0;                    // summed over the views that ran
     int castersSkipped = 0;
+    int shadowDrawCalls = 0;                 // summed over the views that ran
     int alphaTestedCasters = 0;
     std::size_t shadowTriangles = 0;
     std::size_t sceneTriangles = 0;

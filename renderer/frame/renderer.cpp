@@ -3,9 +3,11 @@
 
 #include "gl/gl_errors.h"
 #include "light/volume_overlap.h"
+#include "scene/hash_combine.h"
 #include "scene/scene_animation.h"
 #include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 #include "views/depth_bounds.h"
 
 #include <glm/ext/matrix_transform.hpp>
@@ -20,19 +22,6 @@ namespace shadowlab {
 
 namespace {
 
-void hashCombine(std::size_t& seed, std::size_t value) { seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2); }
-
-template <typename T>
-void hashBytes(std::size_t& seed, const T& value) {
-    std::size_t chunk = 0;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&value);
-    for (std::size_t i = 0; i < sizeof(T); ++i) {
-        chunk = chunk * 131 + bytes[i];
-        if (i % 8 == 7) hashCombine(seed, std::exchange(chunk, 0));
-    }
-    hashCombine(seed, chunk);
-}
-
 std::string joinLines(const std::vector<std::string>& lines) {
     std::string out;
     for (const std::string& line : lines) out += (out.empty() ? "" : "; ") + line;
@@ -40,80 +29,6 @@ std::string joinLines(const std::vector<std::string>& lines) {
 }
 
 }  // namespace
-
-namespace {
-
-// The scene's layout without transforms, by address: its meshes' buffers and sizes, which mesh each instance draws,
-// alpha-relevant material values. Cheap; equal for the same scene (or one edited in place: Renderer::sceneChanged).
-std::size_t layoutFingerprint(const Scene& scene) {
-    std::size_t seed = std::hash<const void*>{}(&scene);
-    hashCombine(seed, scene.meshes.size());
-    for (const Mesh& mesh : scene.meshes) {
-        hashCombine(seed, std::hash<const void*>{}(mesh.positions.data()));
-        hashCombine(seed, mesh.positions.size());
-        hashCombine(seed, mesh.indices.size());
-        hashCombine(seed, std::size_t(mesh.material + 1));
-    }
-    hashCombine(seed, scene.instances.size());
-    for (const Instance& instance : scene.instances) hashCombine(seed, std::size_t(instance.mesh));
-    for (const Material& material : scene.materials) {
-        hashCombine(seed, std::size_t(material.alphaMode));
-        hashBytes(seed, material.alphaCutoff);
-        hashBytes(seed, material.baseColorFactor.a);
-        hashBytes(seed, material.doubleSided);
-        hashBytes(seed, material.uvTransform);
-    }
-    return seed;
-}
-
-std::size_t transformsFingerprint(const Scene& scene) {
-    std::size_t seed = scene.instances.size();
-    for (const Instance& instance : scene.instances) hashBytes(seed, instance.transform);
-    return seed;
-}
-
-template <typename T>
-void hashVector(std::size_t& seed, const std::vector<T>& values) {
-    hashCombine(seed, std::hash<std::string_view>{}(std::string_view(reinterpret_cast<const char*>(values.data()),
-                                                                       values.size() * sizeof(T))));
-}
-
-}  // namespace
-
-std::size_t sceneFingerprint(const Scene& scene) {
-    std::size_t seed = layoutFingerprint(scene);
-    hashCombine(seed, transformsFingerprint(scene));
-    return seed;
-}
-
-std::size_t geometryFingerprint(const Scene& scene) {
-    std::size_t seed = scene.meshes.size();
-    for (const Mesh& mesh : scene.meshes) {
-        hashVector(seed, mesh.positions);
-        hashVector(seed, mesh.normals);
-        hashVector(seed, mesh.uvs);
-        hashVector(seed, mesh.indices);
-        hashCombine(seed, std::size_t(mesh.material + 1));
-    }
-    hashCombine(seed, scene.instances.size());
-    for (const Instance& instance : scene.instances) hashCombine(seed, std::size_t(instance.mesh));
-    for (const Material& material : scene.materials) {
-        hashCombine(seed, std::size_t(material.alphaMode));
-        hashBytes(seed, material.alphaCutoff);
-        hashBytes(seed, material.baseColorFactor.a);
-        hashBytes(seed, material.doubleSided);
-        hashBytes(seed, material.uvTransform);
-        hashCombine(seed, std::size_t(material.baseColorImage + 1));
-    }
-    // Images by size only (hashing their bytes would cost more than uploading them): a scene with these very meshes
-    // and other pictures of the same sizes is not told apart; an edit in place calls Renderer::sceneChanged.
-    hashCombine(seed, scene.images.size());
-    for (const Image& image : scene.images) {
-        hashCombine(seed, std::size_t(image.width));
-        hashCombine(seed, std::size_t(image.height));
-    }
-    return seed;
-}
 
 std::vector<ShadowView> frameViewsOf(const FrameStats& stats, std::size_t light) {
     std::vector<ShadowView> views;
@@ -175,24 +90,33 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.lightSource = describeLightSource(requested, scene);
     stats.lightCount = settings.lights.size();
 
-    // The geometry is uploaded once; a scene posed again (in place, or a posed copy) moves the draws, and what moved
-    // dirties only the views it touches (the planner's CasterMotion).
-    const std::size_t layout = layoutFingerprint(scene), transforms = transformsFingerprint(scene);
-    std::size_t fingerprint = layout;
-    hashCombine(fingerprint, transforms);  // sceneFingerprint(scene)
+    // The geometry is uploaded once. Only transforms changed (an animation step, in place or a posed copy:
+    // GpuScene::sameGeometry): the transform buffer is updated and the draws that moved dirty only the views they
+    // touch (the planner's CasterMotion).
+    const std::size_t transforms = transformsFingerprint(scene);
+    const glm::dvec3 origin = renderOriginOf(scene.bounds);
     std::vector<std::size_t> movedDraws;
     bool uploaded = false;
-    if (!gpuScene_ || layout != gpuSceneLayout_) {
-        const std::size_t geometry = geometryFingerprint(scene);
-        if (!gpuScene_ || geometry != gpuSceneFingerprint_) {
-            // Every matrix is built relative to the render origin in double precision.
-            gpuScene_ = std::make_unique<GpuScene>(scene, renderOriginOf(scene.bounds));
-            gpuSceneFingerprint_ = geometry;
-            uploaded = true;
+    if (gpuScene_ && gpuScene_->sameGeometry(scene)) {
+        if (&gpuScene_->scene() != &scene || transforms != transformsFingerprint_ || origin != gpuScene_->origin()) {
+            movedDraws = gpuScene_->updateTransforms(scene, origin).moved;
+            stats.sceneUpload = {true, gpuScene_->lastUpload().describe(), std::nullopt};
+        } else {
+            stats.sceneUpload = {false, "unchanged", std::nullopt};
         }
-        gpuSceneLayout_ = layout;
+    } else {
+        // Every matrix is built relative to the render origin in double precision.
+        gpuScene_ = std::make_unique<GpuScene>(scene, origin);
+        uploaded = true;
+        stats.sceneUpload = {true, gpuScene_->lastUpload().describe(), std::nullopt};
     }
-    if (!uploaded) movedDraws = gpuScene_->updateTransforms(scene);
+    // The scene as posed: its geometry and transforms (what the receivers' depths of the bias report follow).
+    std::size_t fingerprint = gpuScene_->geometryFingerprint();
+    hashCombine(fingerprint, transforms);
+    if (stats.sceneUpload.ran) {
+        stats.geometryBytesUploaded = gpuScene_->lastUpload().geometryBytes;
+        stats.transformBytesUploaded = gpuScene_->lastUpload().transformBytes;
+    }
     // What casts (casters.excluded): the planner names a change of the key; the maps' contents follow it.
     gpuScene_->setCasting(castingInstances(scene, settings.casters));
     // The casters (the draws that cast, in draw order) and what moved since the last frame. An upload after
@@ -283,7 +207,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     // each decided against what its map holds (the plan the previous frame carried out).
     // Cascades follow the fit camera; what the picture's camera cannot see is still judged from the picture's camera.
     ShadowPlan plan = planShadowViews({scene, requested, stats.renderOrigin, &cascadeCamera, stats.cameraViewProjection,
-                                       spheres, gpuSceneFingerprint_, info_.maxTextureSize,
+                                       spheres, gpuScene_->geometryFingerprint(), info_.maxTextureSize,
                                        previousPlan_ ? &*previousPlan_ : nullptr,
                                        std::exchange(forceReason_, std::string()), &motion_,
                                        anyCached ? &staticCasters : nullptr, frames_++});
@@ -334,6 +258,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         const PlannedView& p = plan.views[v];
         const LightSettings& light = settings.lights[p.view.light];
         ViewState& state = views_[p.view.id()];
+        state.group = p.group;
         const ShadowMapArray& array = arrays_.at(p.group);
         if (std::string error = state.map.attach(array, p.layer); !error.empty()) {
             stats.error = error;
@@ -370,6 +295,8 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
             entry.castersSkipped = counts.castersSkipped;
+            entry.drawCalls = counts.drawCalls;
+            stats.shadowDrawCalls += counts.drawCalls;
             entry.triangles = counts.trianglesDrawn;
             stats.castersDrawn += counts.castersDrawn;
             stats.castersSkipped += counts.castersSkipped;
@@ -436,6 +363,33 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         firstView_.reset();
     }
 
+    // A moments technique: the views' moments, brought up to date for the views just drawn (or new moments settings).
+    const FilterTechnique& technique = filterTechnique(settings.filter.kind);
+    if (technique.moments) {
+        if (!momentsPass_) momentsPass_ = std::make_unique<MomentsPass>();
+        std::vector<MomentsView> momentViews;
+        for (std::size_t v = 0; v < plan.views.size(); ++v) {
+            const PlannedView& p = plan.views[v];
+            const LightSpace& space = p.view.space;
+            // World blur widths: a perspective view's texel at the middle of its depth range.
+            const double texelWorld = space.perspective ? 2.0 * space.tanHalfFov / space.resolution * 0.5 *
+                                                              (space.nearPlane + space.farPlane)
+                                                        : space.texelWorldSize;
+            momentViews.push_back({p.view.id(), viewName(p.view), p.group, p.layer,
+                                   p.action == ViewAction::Render || p.action == ViewAction::Clear, texelWorld});
+        }
+        MomentsPassResult moments = momentsPass_->run(settings.filter, arrays_, momentViews, timer_);
+        momentsPass_->configureSampler(settings.filter, settings.sampler);
+        stats.momentsPass = moments.moments;
+        stats.blurPass = moments.blur;
+        stats.warnings.insert(stats.warnings.end(), moments.warnings.begin(), moments.warnings.end());
+    } else {
+        if (momentsPass_) momentsPass_->release();
+        const std::string reason = std::string("filter.kind ") + technique.name + " compares depth: no moments";
+        stats.momentsPass = {false, reason, std::nullopt};
+        stats.blurPass = {false, reason, std::nullopt};
+    }
+
     // The main pass: every enabled light, each casting one with its map array and layer.
     sampler_.configure(settings.sampler, settings.filter.kind);
     reversedSampler_.configure(settings.sampler, settings.filter.kind);
@@ -456,8 +410,11 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     for (const auto& [group, array] : arrays_) {
         std::vector<GLuint>& list = group.cube ? in.mapsCube : in.maps2D;
         arrayIndex[group] = int(list.size());
-        list.push_back(array.texture());
-        (group.cube ? in.samplersCube : in.samplers2D).push_back(group.reversedZ ? reversedSampler_.id() : sampler_.id());
+        // A moments technique reads the group's moments (one bilinear sampler), else its depth through a compare sampler.
+        list.push_back(technique.moments ? momentsPass_->texture(group) : array.texture());
+        (group.cube ? in.samplersCube : in.samplers2D)
+            .push_back(technique.moments ? momentsPass_->sampler()
+                                         : group.reversedZ ? reversedSampler_.id() : sampler_.id());
     }
     for (std::size_t i = 0; i < settings.lights.size(); ++i) {
         if (!settings.lights[i].enabled) continue;
@@ -506,32 +463,43 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
         (p.cache == CacheState::Full &&
          !state.staticDepth.ensure(state.map.resolution(), state.map.format(), info_.maxTextureSize).empty()))
         return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map);
-    auto add = [](ShadowPassCounts& sum, const ShadowPassCounts& c) {
-        sum.castersDrawn += c.castersDrawn;
-        sum.castersSkipped += c.castersSkipped;
-        sum.alphaTestedCasters += c.alphaTestedCasters;
-        sum.trianglesDrawn += c.trianglesDrawn;
+    // The view's casters (castersInVolume) narrowed to the static or the dynamic ones.
+    std::vector<char> staticDraw(gpuScene_->draws().size(), 0);
+    for (std::size_t c = 0; c < casterDraws.size() && c < statics.size(); ++c) staticDraw[casterDraws[c]] = statics[c];
+    const CasterSelection inVolume = castersInVolume(*gpuScene_, space);
+    auto narrowed = [&](auto keep) {
+        CasterSelection selection;
+        selection.skipped = inVolume.skipped;
+        for (std::uint32_t d : inVolume.draws)
+            if (keep(d)) selection.draws.push_back(d);
+        return selection;
     };
     // Copies the cached static depth into the view's layer (a rectangle of it, or all).
     auto copyCache = [&](const TexelRect& r) {
         glCopyImageSubData(state.staticDepth.texture(), GL_TEXTURE_2D, 0, r.x0, r.y0, 0, state.map.texture(),
                            GL_TEXTURE_2D, 0, r.x0, r.y0, 0, r.x1 - r.x0, r.y1 - r.y0, 1);
     };
-    ShadowPassCounts counts;
-    std::vector<std::size_t> dynamicDraws;
     if (p.cache == CacheState::StaticPlusDynamic) {
-        for (std::size_t c : p.dynamicCasters) dynamicDraws.push_back(casterDraws[c]);
+        std::vector<char> listed(staticDraw.size(), 0);
+        for (std::size_t c : p.dynamicCasters) listed[casterDraws[c]] = 1;
         copyCache(p.rect);
-        CasterSelection over{&dynamicDraws, p.rect, false};
-        return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map, over);
+        CasterSelection over = narrowed([&](std::uint32_t d) { return listed[d] != 0; });
+        over.scissor = p.rect;
+        over.clear = false;
+        return shadowPass_->run(*gpuScene_, over, space, light.shadow, clamp, state.map);
     }
     // Full: the static casters into the cached depth, a copy of it, the dynamic casters over it.
-    std::vector<std::size_t> staticDraws;
-    for (std::size_t c = 0; c < casterDraws.size(); ++c)
-        (c < statics.size() && statics[c] ? staticDraws : dynamicDraws).push_back(casterDraws[c]);
-    add(counts, shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.staticDepth, {&staticDraws}));
+    ShadowPassCounts counts =
+        shadowPass_->run(*gpuScene_, narrowed([&](std::uint32_t d) { return staticDraw[d] != 0; }), space,
+                         light.shadow, clamp, state.staticDepth);
     copyCache({0, 0, state.map.resolution(), state.map.resolution()});
-    add(counts, shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map, {&dynamicDraws, std::nullopt, false}));
+    CasterSelection dynamics = narrowed([&](std::uint32_t d) { return staticDraw[d] == 0; });
+    dynamics.clear = false;
+    const ShadowPassCounts over = shadowPass_->run(*gpuScene_, dynamics, space, light.shadow, clamp, state.map);
+    counts.castersDrawn += over.castersDrawn;
+    counts.alphaTestedCasters += over.alphaTestedCasters;
+    counts.trianglesDrawn += over.trianglesDrawn;
+    counts.drawCalls += over.drawCalls;
     return counts;
 }
 
@@ -555,6 +523,14 @@ void Renderer::waitForTimings(FrameStats& stats) {
     if (stats.mainPass.ran) stats.mainPass.milliseconds = timer_.latestMilliseconds(TimedPass::Main, true);
     if (stats.depthBoundsPass.ran)
         stats.depthBoundsPass.milliseconds = timer_.latestMilliseconds(TimedPass::DepthBounds, true);
+    if (stats.momentsPass.ran) stats.momentsPass.milliseconds = timer_.latestMilliseconds(TimedPass::Moments, true);
+    if (stats.blurPass.ran) stats.blurPass.milliseconds = timer_.latestMilliseconds(TimedPass::Blur, true);
+}
+
+std::vector<glm::vec4> Renderer::viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const {
+    const auto it = views_.find(view);
+    if (!momentsPass_ || it == views_.end() || !momentsPass_->texture(it->second.group)) return {};
+    return momentsPass_->read(it->second.group, it->second.map.layer(), x0, y0, w, h);
 }
 
 }  // namespace shadowlab

@@ -10,8 +10,10 @@
 #include "frame/frame_stats.h"
 #include "frame/gpu_scene.h"
 #include "frame/render_target.h"
+#include "scene/scene_fingerprint.h"
 #include "shading/main_pass.h"
 #include "shadow/shadow_map.h"
+#include "shadow/moments_pass.h"
 #include "shadow/shadow_pass.h"
 #include "views/shadow_planner.h"
 #include "timing/pass_timer.h"
@@ -62,10 +64,14 @@ public:
     // The scene as last uploaded (null before the first frame): the pixel probe's G-buffer draws the same draws.
     const GpuScene* gpuScene() const { return gpuScene_.get(); }
     const GlInfo& glInfo() const { return info_; }
+    // A moments technique's stored moments of a view of the last frame, texels [x0, x0+w) x [y0, y0+h) (row 0 =
+    // bottom; a cube face's layer); empty when the frame used a depth technique or the view is unknown.
+    std::vector<glm::vec4> viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const;
 
 private:
     struct ViewState {
         ShadowMap map;          // its layer of its group's array
+        MapGroup group;
         ShadowMap staticDepth;  // shadow.update cachedStatic: its static casters alone (the cached depth)
     };
     // Draws a view the plan renders (every caster, or through its cached static depth); its counts.
@@ -83,14 +89,13 @@ private:
     ShadowSampler reversedSampler_{true};
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<DepthBoundsPass> depthBoundsPass_;  // made when a light first asks for projection.depthBounds
+    std::unique_ptr<MomentsPass> momentsPass_;          // made when a moments technique is first chosen
     // The seen depths the last frame without a fit camera fitted its cascades to: a frame with a fit camera (frozen
     // cascades, the flicker measure's previous-frame cascades) fits to them as that frame did.
     std::optional<ViewDepths> ownCameraDepths_;
     MainPass mainPass_;
     PassTimer timer_;
     std::unique_ptr<GpuScene> gpuScene_;
-    std::size_t gpuSceneFingerprint_ = 0;  // geometryFingerprint of the uploaded scene
-    std::size_t gpuSceneLayout_ = 0;       // layoutFingerprint of the scene last seen (geometryFingerprint's key)
     // The casters' motion: each draw's sphere last frame, the frame's moves, which casters are static.
     std::vector<CasterSphere> drawSpheres_;
     CasterMotion motion_;
@@ -106,11 +111,5 @@ private:
     // The scene's depths in the first view's map (a cascaded light's: in each cascade's), for the bias report.
     std::vector<Receivers> receivers_;
 };
-
-// Changes whenever geometry, instances or alpha-relevant material values of the scene change.
-std::size_t sceneFingerprint(const Scene& scene);
-// The same without the instances' transforms, from the contents (a posed copy of a scene has its fingerprint): what
-// the uploaded buffers and the maps' geometry depend on. Motion is told apart (CasterMotion).
-std::size_t geometryFingerprint(const Scene& scene);
 
 }  // namespace shadowlab

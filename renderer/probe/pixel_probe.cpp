@@ -1,5 +1,7 @@
 #include "probe/pixel_probe.h"
 
+#include "probe/moment_probe.h"
+
 #include "accuracy/light_isolation.h"
 #include "settings/settings_fields.h"
 
@@ -17,15 +19,6 @@
 
 namespace shadowlab {
 
-namespace {
-
-// Window-space texture coordinate (x, y in [0, 1]) and depth of a render-origin-relative point in the view's depth
-// convention, as toLightTexture in shaders/shadow/light_data.glsl computes it (there in float).
-glm::dvec3 toLightTexture(const LightSpace& light, const glm::dvec3& p) {
-    return light.textureOf(light.viewProjection() * glm::dvec4(p, 1.0));
-}
-
-// The texel GL reads for integer coordinate i under the address mode; nullopt = the border (clamp-to-border only).
 std::optional<int> addressTexel(int i, int resolution, AddressMode mode) {
     switch (mode) {
         case AddressMode::Wrap: return ((i % resolution) + resolution) % resolution;
@@ -35,6 +28,14 @@ std::optional<int> addressTexel(int i, int resolution, AddressMode mode) {
             return i;
     }
     return i;
+}
+
+namespace {
+
+// Window-space texture coordinate (x, y in [0, 1]) and depth of a render-origin-relative point in the view's depth
+// convention, as toLightTexture in shaders/shadow/light_data.glsl computes it (there in float).
+glm::dvec3 toLightTexture(const LightSpace& light, const glm::dvec3& p) {
+    return light.textureOf(light.viewProjection() * glm::dvec4(p, 1.0));
 }
 
 // Float rounding the GPU's lookup carries: its position is interpolated and transformed in float. Returns the
@@ -341,7 +342,9 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
         if (!ax || !ay) return;
         minX = std::min(minX, *ax), maxX = std::max(maxX, *ax), minY = std::min(minY, *ay), maxY = std::max(maxY, *ay);
     };
-    for (const FilterTap& tap : filterTaps(settings_.filter)) {
+    // A moments technique reads one bilinear lookup of moments instead of comparing taps (probeMomentLookup below).
+    const bool momentLookup = filterTechnique(r.filter.kind).moments != nullptr;
+    for (const FilterTap& tap : momentLookup ? std::vector<FilterTap>{} : filterTaps(settings_.filter)) {
         ProbeTap t;
         t.offsetTexels = tap.offsetTexels;
         t.bilinear = tap.bilinear;
@@ -437,6 +440,9 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     r.shadowHigh = high / taps * cone;
     // Bilinear comparisons weigh texels with the GPU's sub-texel precision (8 bits in D3D's rules and llvmpipe).
     r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;
+
+    if (momentLookup)
+        probeMomentLookup(r, *renderer_, {view->light, view->kind, view->index}, settings_);
 
     // The bias this surface gets as a caster: its own triangle's slope in the map, r at its largest depth.
     const double slope = windowDepthSlope(window[0], window[1], window[2]);

@@ -88,6 +88,13 @@ struct PixelProbeReport {
     AddressMode addressMode = AddressMode::ClampToBorder;
     std::vector<ProbeTap> taps;
     ProbeBias bias;
+    // A moments technique: the one bilinear lookup of stored moments (its four texels are taps[0], their `stored` the
+    // first moment), the filtered moments, the receiver's depth in the moments' near-0 convention, and the lookup in
+    // words (mean, variance, the bound: the technique's explain).
+    bool momentLookup = false;
+    glm::dvec4 moments{0.0};
+    double momentDepth = 0.0;
+    std::string momentText;
 
     double shadowCpu = 0.0;   // S recomputed here from the stored texels
     double shadowLow = 0.0, shadowHigh = 0.0;  // range the GPU may give (uncertain comparisons, filter weights)
@@ -156,6 +163,9 @@ private:
     SurfaceSamples samples_;
     std::vector<float> shadow_;  // row 0 = top
 };
+
+// The texel GL reads for integer coordinate i under the address mode; nullopt = the border (clamp-to-border only).
+std::optional<int> addressTexel(int i, int resolution, AddressMode mode);
 
 // The stored depth of texels [x0, x0+w) x [y0, y0+h) of a shadow map (row 0 = bottom), read back from the GPU.
 std::vector<float> readShadowMapRect(const ShadowMap& map, int x0, int y0, int w, int h);

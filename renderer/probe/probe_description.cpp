@@ -1,5 +1,7 @@
 #include "probe/probe_description.h"
 
+#include "shading/filters/filter_technique.h"
+
 #include "settings/settings_fields.h"
 #include "shadow/shadow_map.h"
 
@@ -27,8 +29,8 @@ const char* filterName(const FilterSettings& f) {
         case FilterKind::Hardware2x2: return "hardware 2x2";
         case FilterKind::Pcf: return "PCF";
         case FilterKind::Poisson: return "Poisson";
+        default: return filterTechnique(f.kind).name;  // the moments techniques: their filter.kind name
     }
-    return "?";
 }
 
 const char* className(PixelClass c) {
@@ -73,6 +75,18 @@ void lookupLines(const PixelProbeReport& r, std::vector<std::string>& lines, con
     lines.push_back(indent + "  total (as a caster, in the map): " + units(r.bias.total));
     lines.push_back(indent + format("  normal offset %.3g texels = %.3g world units along the shading normal",
                            r.bias.normalOffsetTexels, r.bias.normalOffsetWorld));
+    if (r.momentLookup) {
+        // A moments technique: one bilinear read of the blurred moments, then the technique's bound.
+        lines.push_back(indent + format("filter %s: one bilinear read of %d-bit moments (blur %g %s) at texel coord "
+                                        "(%.3f, %.3f): moments (%.6g, %.6g, %.6g, %.6g), receiver %.6g (near 0)",
+                                        filterName(r.filter), r.filter.momentBits, double(r.filter.blurWidth),
+                                        r.filter.blurUnit == BlurUnit::World ? "world units" : "texels",
+                                        r.taps.empty() ? 0.0 : r.taps[0].texelCoord.x,
+                                        r.taps.empty() ? 0.0 : r.taps[0].texelCoord.y, r.moments.x, r.moments.y,
+                                        r.moments.z, r.moments.w, r.momentDepth));
+        lines.push_back(indent + "  " + r.momentText);
+        return;
+    }
     lines.push_back(indent + format("filter %s%s: %zu taps (stored depth, lit if receiver <= stored; ? = within float "
                            "rounding; (+x) = stored - receiver)",
                            filterName(r.filter),
@@ -118,7 +132,7 @@ std::vector<std::string> describeProbe(const PixelProbeReport& r) {
                     (r.face >= 0 ? std::string(", cube face ") + cubeFaces()[std::size_t(r.face)].name : std::string()) +
                     (r.cascade.empty() ? std::string() : ", " + r.cascade) +
                     (r.viewCount < 2 ? std::string()
-                     : r.viewChosen ? format(" (of %d views: asked for with --view)", r.viewCount)
+                     : r.viewChosen ? format(" (of %d views: the one asked for)", r.viewCount)
                                     : format(" (of %d views: the one holding this point; --view chooses another)",
                                              r.viewCount)) +
                     ", alone: S is this light's shadow factor");

@@ -9,5 +9,7 @@ int workerCount();  // hardware threads, at least 1
 
 // Calls work(row) for row in [0, rows) on workerCount() threads; returns when all are done.
 void parallelRows(int rows, const std::function<void(int row)>& work);
+// The same on `threads` threads (at least 1): tests prove a result does not depend on the count.
+void parallelRows(int rows, const std::function<void(int row)>& work, int threads);
 
 }  // namespace shadowlab

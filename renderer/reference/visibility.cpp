@@ -35,14 +35,18 @@ glm::dvec3 towardLight(const ReferenceLight& light, const glm::dvec3& point) {
     return length > 0.0 ? d / length : glm::dvec3(0.0);
 }
 
+glm::dvec3 shadowRayOrigin(const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius) {
+    // Off the surface along the normal (which faces the light here), far enough for float's rounding.
+    const double offset = 1e-5 * (glm::length(point) + sceneRadius);
+    return point + normal * offset;
+}
+
 namespace {
 
 // The shadow ray of a point that faces the light and lies inside the cone.
 bool occludedFrom(const EmbreeScene& bvh, const ReferenceLight& light, const glm::dvec3& p, const glm::dvec3& n,
                   const glm::dvec3& l, double sceneRadius) {
-    // Off the surface along the normal (which faces the light here), far enough for float's rounding.
-    const double offset = 1e-5 * (glm::length(p) + sceneRadius);
-    const glm::dvec3 origin = p + n * offset;
+    const glm::dvec3 origin = shadowRayOrigin(p, n, sceneRadius);
     glm::dvec3 direction = l;
     float tFar = std::numeric_limits<float>::infinity();
     if (light.positional()) {

@@ -66,6 +66,11 @@ bool litAt(const EmbreeScene& bvh, const ReferenceLight& light, const glm::dvec3
 // Unit vector from a point toward the light.
 glm::dvec3 towardLight(const ReferenceLight& light, const glm::dvec3& point);
 
+// Where a shadow ray from `point` (normal n, facing the light) starts: off the surface along the normal, far enough
+// for float's rounding (1e-5 x (|p| + sceneRadius)), so it cannot hit its own triangle. The soft reference's rays
+// start here too.
+glm::dvec3 shadowRayOrigin(const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius);
+
 // sceneRadius scales the ray's start offset (1e-5 x (|p| + radius) along the normal). cancel may be null.
 VisibilityResult traceVisibility(const EmbreeScene& bvh, const SurfaceSamples& samples, const ReferenceLight& light,
                                  double sceneRadius, const std::atomic<bool>* cancel);

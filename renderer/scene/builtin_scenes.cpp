@@ -1,11 +1,15 @@
 #include "scene/builtin_scenes.h"
 
+#include "scene/scene_animation.h"
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 #include <utility>
 
@@ -423,6 +427,98 @@ Scene city() {
     return scene;
 }
 
+// A car's loop: the rectangle of street centre lines x0 < x1, z0 < z1 it drives around on its inner lane,
+// counter-clockwise seen from above when `ccw`, starting at `phase` (a share of the loop) at t = 0.
+struct CityCarLoop {
+    float x0, x1, z0, z1;
+    float phase;
+    bool ccw;
+};
+constexpr CityCarLoop kCityCarLoops[] = {
+    {0.0f, 100.0f, 200.0f, 400.0f, 0.69f, false},    // away from the eye on x = 3.5, 60 m ahead
+    {-100.0f, 0.0f, 300.0f, 400.0f, 0.40f, false},   // toward the eye on x = -3.5, 80 m ahead
+    {0.0f, 200.0f, -300.0f, 100.0f, 0.1f, true},
+    {-300.0f, -100.0f, 100.0f, 400.0f, 0.6f, true},
+    {100.0f, 300.0f, 100.0f, 400.0f, 0.35f, false},
+    {-100.0f, 100.0f, 400.0f, 500.0f, 0.155f, false},  // across the street 36 m ahead, its shadow in the sun
+};
+static_assert(std::size(kCityCarLoops) == std::size_t(kCityCars));
+
+// One car's loop as node animation keys: a LINEAR translation through the phase
+// point and the four corners of its inner lane, back to the phase point at kCityTrafficSeconds, and a STEP rotation
+// to the heading of the side each key starts.
+void addCarChannels(Animation& traffic, int node, const CityCarLoop& loop) {
+    const float xa = loop.x0 + kCityLaneInset, xb = loop.x1 - kCityLaneInset;
+    const float za = loop.z0 + kCityLaneInset, zb = loop.z1 - kCityLaneInset;
+    // Counter-clockwise seen from above turns the heading +z -> +x -> -z -> -x (positive turns about +y).
+    std::vector<glm::vec2> corners = {{xa, za}, {xa, zb}, {xb, zb}, {xb, za}};
+    if (!loop.ccw) std::reverse(corners.begin() + 1, corners.end());
+    std::vector<float> start(5, 0.0f);  // distance along the loop at each corner (start[4]: the perimeter)
+    for (int k = 0; k < 4; ++k) start[k + 1] = start[k] + glm::length(corners[(k + 1) % 4] - corners[k]);
+    const float perimeter = start[4];
+    const float d0 = loop.phase * perimeter;
+    int side = 0;
+    while (side < 3 && d0 >= start[side + 1]) ++side;
+    auto at = [&](int k, float along) {
+        const glm::vec2 from = corners[k % 4], to = corners[(k + 1) % 4];
+        return from + (to - from) * (along / glm::length(to - from));
+    };
+    AnimationChannel move{node, AnimationPath::Translation, Interpolation::Linear, {}, {}};
+    AnimationChannel turn{node, AnimationPath::Rotation, Interpolation::Step, {}, {}};
+    auto key = [&](float distance, const glm::vec2& p, int k) {
+        const glm::vec2 heading = corners[(k + 1) % 4] - corners[k % 4];
+        const double half = 0.5 * std::atan2(double(heading.x), double(heading.y));  // +z turned to the heading
+        move.times.push_back(distance / perimeter * kCityTrafficSeconds);
+        move.values.insert(move.values.end(), {p.x, 0.0f, p.y});
+        turn.times.push_back(move.times.back());
+        turn.values.insert(turn.values.end(), {0.0f, float(std::sin(half)), 0.0f, float(std::cos(half))});
+    };
+    const glm::vec2 first = at(side, d0 - start[side]);
+    key(0.0f, first, side);
+    for (int k = side + 1; k <= side + 4; ++k) {
+        const float distance = start[k % 4] + (k >= 4 ? perimeter : 0.0f) - d0;
+        if (distance > 0.0f && distance < perimeter) key(distance, corners[k % 4], k);
+    }
+    key(perimeter, first, side);
+    traffic.channels.push_back(std::move(move));
+    traffic.channels.push_back(std::move(turn));
+}
+
+// The cars of "city-traffic": a node and an instance each, posed at t = 0 by their animation.
+void addCityTraffic(Scene& scene) {
+    const int paint = int(scene.materials.size());
+    scene.materials.push_back(opaque("car", {0.62f, 0.12f, 0.1f, 1.0f}));
+    Animation traffic;
+    traffic.name = "traffic";
+    traffic.end = kCityTrafficSeconds;
+    for (int n = 0; n < kCityCars; ++n) {
+        MeshBuilder car("car", paint);
+        car.box({0.0f, kCityCarClearance + 0.5f * kCityCarBody.y, 0.0f}, kCityCarBody);
+        SceneNode node;
+        node.name = node.path = "car-" + std::to_string(n);
+        node.gltfIndex = n;
+        const int index = int(scene.nodes.size());
+        scene.nodes.push_back(node);
+        scene.instances.push_back(Instance{int(scene.meshes.size()), glm::mat4(1.0f), index});
+        scene.meshes.push_back(std::move(car.mesh));
+        addCarChannels(traffic, n, kCityCarLoops[n]);
+        // The node's rest transform is its pose at t = 0.
+        const AnimationChannel& move = traffic.channels[traffic.channels.size() - 2];
+        const AnimationChannel& turn = traffic.channels.back();
+        scene.nodes.back().local.translation = {move.values[0], move.values[1], move.values[2]};
+        scene.nodes.back().local.rotation = glm::dquat(turn.values[3], turn.values[0], turn.values[1], turn.values[2]);
+    }
+    scene.animations.push_back(std::move(traffic));
+    poseScene(scene, {0}, 0.0);
+}
+
+Scene cityTraffic() {
+    Scene scene = city();
+    scene.name = "city-traffic";
+    addCityTraffic(scene);
+    return scene;
+}
+
 struct Entry {
     const char* name;
     const char* description;
@@ -441,6 +537,8 @@ constexpr Entry kScenes[] = {
     {"courtyard", "buildings and thin posts lit by a sun, two spot lights and a point-light lantern", courtyard},
     {"city", "2 km of box buildings on a street grid seen from eye height in a street, a low sun; lamp posts, "
              "benches and bollards thinner than a scene-fitted map's texel", city},
+    {"city-traffic", "builtin:city with 6 cars driving loops around blocks (animation \"traffic\", 60 s), "
+                     "three of them in the street in front of the eye", cityTraffic},
 };
 
 const Entry* find(const std::string& name) {
@@ -477,6 +575,7 @@ std::optional<Scene> makeBuiltinScene(const std::string& name) {
     if (!e) return std::nullopt;
     Scene scene = e->make();
     scene.computeBounds();
+    extendBoundsOverAnimations(scene);
     return scene;
 }
 

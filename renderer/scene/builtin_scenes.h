@@ -1,6 +1,7 @@
 #pragma once
 // Procedural scenes: no files needed. Y up, CCW outward winding, flat normals on planar faces (spheres carry their
-// analytic, smooth normals), one Mesh per object, identity instance transforms (vertices are in world space).
+// analytic, smooth normals), one Mesh per object, identity instance transforms (vertices are in world space) except
+// the moving cars of "city-traffic", which their animation's nodes place.
 // The constants below are the exact dimensions, so tests can compute by hand where shadows fall.
 #include "scene/scene.h"
 
@@ -193,6 +194,20 @@ inline constexpr float kCityBollardWidth = 0.2f;
 inline constexpr float kCityBollardHeight = 0.9f;
 // The sun (Scene::lights[0], directional): about 33 degrees above the horizon, behind the eye, shining down the street.
 inline constexpr glm::vec3 kCitySunDir{-0.25f, -0.55f, -0.8f};  // travels toward -z (not normalized)
+
+// "city-traffic": the same city (one generator) and kCityCars cars driving loops around blocks, played by one node
+// animation "traffic" (the data a glTF file's animation gives: nodes "car-N" with a LINEAR translation channel and a
+// STEP rotation channel each), every loop kCityTrafficSeconds long. Each car drives around a rectangle of street
+// centre lines (builtin_scenes.cpp: kCityCarLoops), kCityLaneInset inside it (its inner lane, so no two loops share
+// a lane); the rectangles do not overlap, so no two cars meet. Three cars are in the street x = 0 ahead of the eye.
+inline constexpr int kCityCars = 6;
+inline constexpr float kCityLaneInset = 3.5f;
+inline constexpr float kCityTrafficSeconds = 60.0f;
+// A car in its node's space: length along +z (its heading), standing on y = 0: a body clear of the road by
+// kCityCarClearance (light passes under it). One box, so each built-in mesh stays one convex object (the scenes'
+// validity test checks outward faces against the mesh's centre).
+inline constexpr glm::vec3 kCityCarBody{1.8f, 1.5f, 4.2f};  // x, y, z size
+inline constexpr float kCityCarClearance = 0.25f;
 
 }  // namespace builtin
 }  // namespace shadowlab

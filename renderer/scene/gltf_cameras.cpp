@@ -63,16 +63,14 @@ std::optional<SceneCamera> importCamera(const tg::Model& model, int nodeIndex, c
     } else {
         return refuse("unknown type '" + gc.type + "' (allowed perspective, orthographic)");
     }
-    const glm::dvec3 position(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const NodeFrame frame = nodeFrame(world);  // a camera stands at its node's origin, looking along its -Z
+    const glm::dvec3& position = frame.position;
     if (!(std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)}) <= kMaxCameraPosition))
         return refuse("its node " + str(nodeIndex) + " places it at (" + str(position.x) + ", " + str(position.y) +
                       ", " + str(position.z) + "), beyond " + str(kMaxCameraPosition) + " (the camera.position limit)");
-    const glm::dvec3 forward = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);  // a camera looks along its -Z
-    const double length = glm::length(forward);
-    if (!(length > 1e-12) || !std::isfinite(length))
-        return refuse("its node " + str(nodeIndex) + "'s transform has no -Z direction (zero scale)");
+    if (!frame.forward) return refuse("its node " + str(nodeIndex) + "'s transform has no -Z direction (zero scale)");
     camera.position = position;
-    camera.forward = forward / length;
+    camera.forward = *frame.forward;
     return camera;
 }
 

@@ -40,17 +40,16 @@ std::optional<SceneLight> importLight(const tg::Model& model, int nodeIndex, con
     }
     // The position limit of the light.position key (1e7, HARD_CASES 3): a light 1e30 away would only end in a
     // light volume whose near and far planes cannot be told apart.
-    const glm::dvec3 position(world * glm::dvec4(0, 0, 0, 1));
+    const NodeFrame frame = nodeFrame(world);
+    const glm::dvec3& position = frame.position;
     if (!(std::max({std::abs(position.x), std::abs(position.y), std::abs(position.z)}) <= kMaxLightPosition)) {
         warn("light '" + light.name + "': position (" + str(position.x) + ", " + str(position.y) + ", " +
              str(position.z) + ") has a component beyond " + str(kMaxLightPosition) + " (the light.position limit); ignored");
         return std::nullopt;
     }
     light.position = glm::vec3(position);
-    const glm::dvec3 dir = glm::dmat3(world) * glm::dvec3(0, 0, -1);  // the light shines along its node's -Z
-    const double len = glm::length(dir);
-    if (len > 1e-12 && std::isfinite(len))
-        light.direction = glm::vec3(dir / len);
+    if (frame.forward)  // the light shines along its node's -Z
+        light.direction = glm::vec3(*frame.forward);
     else
         warn("light '" + light.name + "': its node's transform has no -Z direction; (0,0,-1) used");
     if (light.type == SceneLightType::Spot) {

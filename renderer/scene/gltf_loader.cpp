@@ -195,8 +195,15 @@ void Loader::visit(int index, const glm::dmat4& parent, int depth, int parentNod
             scene_.instances.push_back(Instance{mesh, glm::mat4(world), sceneNode});
         }
     }
-    if (std::optional<SceneLight> light = importLight(model_, index, world, sink_)) scene_.lights.push_back(*light);
-    if (std::optional<SceneCamera> camera = importCamera(model_, index, world, sink_)) scene_.cameras.push_back(*camera);
+    // Lights and cameras keep their node: a pose moves them with it (scene_animation.h).
+    if (std::optional<SceneLight> light = importLight(model_, index, world, sink_)) {
+        light->node = sceneNode;
+        scene_.lights.push_back(*light);
+    }
+    if (std::optional<SceneCamera> camera = importCamera(model_, index, world, sink_)) {
+        camera->node = sceneNode;
+        scene_.cameras.push_back(*camera);
+    }
     onPath_[std::size_t(index)] = 1;
     for (int child : node.children) visit(child, world, depth + 1, sceneNode, animatedPath);
     onPath_[std::size_t(index)] = 0;

@@ -10,6 +10,15 @@ namespace shadowlab {
 
 bool Instance::mirrored() const { return glm::determinant(glm::mat3(transform)) < 0.0f; }
 
+NodeFrame nodeFrame(const glm::dmat4& world) {
+    NodeFrame frame;
+    frame.position = glm::dvec3(world * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    const glm::dvec3 forward = glm::dmat3(world) * glm::dvec3(0.0, 0.0, -1.0);
+    const double length = glm::length(forward);
+    if (length > 1e-12 && std::isfinite(length)) frame.forward = forward / length;
+    return frame;
+}
+
 std::string nodePathSegment(const std::string& name, int gltfIndex) {
     if (name.empty()) return "#" + std::to_string(gltfIndex);
     std::string out = name.front() == '#' ? "\\" : "";  // never read as an unnamed node's "#<index>"

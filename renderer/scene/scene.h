@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
 
 #include "scene/node_animation.h"
@@ -68,6 +69,7 @@ struct SceneLight {
     float range = 0.0f;                      // 0 = infinite
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
+    int node = -1;  // the SceneNode that places it (an animation moves it with its node); -1 = none
 };
 
 // A camera of the file (glTF `cameras`, placed by the node that uses it). The view's aspect ratio is the window's,
@@ -82,7 +84,17 @@ struct SceneCamera {
     double ymag = 1.0;                   // orthographic: half the view's height, world units (xmag follows the aspect)
     double znear = 0.1;
     double zfar = 0.0;                   // 0 = infinite (perspective without zfar)
+    int node = -1;                       // the SceneNode that places it (an animation moves it); -1 = none
 };
+
+// Where a light or camera a node carries stands and looks under the node's world transform: glTF puts both at the
+// node's origin, looking along its -Z. `forward` is unit, nullopt when the transform has no -Z (zero scale) or
+// is not finite.
+struct NodeFrame {
+    glm::dvec3 position{0.0};
+    std::optional<glm::dvec3> forward;
+};
+NodeFrame nodeFrame(const glm::dmat4& world);
 
 // A node of the file's hierarchy as the loader walked it from the scene's roots (a node two parents list appears
 // under each). `path` names it in presets: the names from the root down joined by '/', an unnamed node as

@@ -161,6 +161,21 @@ void poseScene(Scene& scene, const std::vector<int>& chosen, double time) {
         const glm::dmat4& m = world[std::size_t(instance.node)];
         instance.transform = fitsFloat(m) ? glm::mat4(m) : glm::mat4(0.0f);
     }
+    // Lights and cameras follow their node's pose; one the pose cannot place (no -Z, beyond a float) stays put.
+    for (SceneLight& light : scene.lights) {
+        if (light.node < 0 || !fitsFloat(world[std::size_t(light.node)])) continue;
+        const NodeFrame frame = nodeFrame(world[std::size_t(light.node)]);
+        if (!frame.forward) continue;
+        light.position = glm::vec3(frame.position);
+        light.direction = glm::vec3(*frame.forward);
+    }
+    for (SceneCamera& camera : scene.cameras) {
+        if (camera.node < 0 || !fitsFloat(world[std::size_t(camera.node)])) continue;
+        const NodeFrame frame = nodeFrame(world[std::size_t(camera.node)]);
+        if (!frame.forward) continue;
+        camera.position = frame.position;
+        camera.forward = *frame.forward;
+    }
 }
 
 std::string poseScene(Scene& scene, const AnimationSettings& animation) {

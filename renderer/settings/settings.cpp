@@ -31,6 +31,15 @@ std::vector<std::string> Settings::validate() const {
                            " is not less than " + prefix + "far " +
                            describeJsonValue(findSettingsField(prefix + "far")->get(*this)) + " (allowed near < far)");
     }
+    // A directional light's size is an angle: the key's range is a radius's.
+    for (std::size_t i = 0; i < lights.size() && i < kMaxLights; ++i) {
+        if (lights[i].type != LightType::Directional || !(lights[i].size > kMaxAngularDiameterDeg)) continue;
+        const std::string key = "lights." + std::to_string(i) + ".size";
+        problems.push_back(key + ": " + describeJsonValue(findSettingsField(key)->get(*this)) +
+                           " degrees is too wide for a directional light's angular diameter (allowed [0, " +
+                           std::to_string(int(kMaxAngularDiameterDeg)) +
+                           "] for a directional light; a spot or point light's radius up to 1e6)");
+    }
     if (!camera.autoFrame) {
         // glm::lookAt(eye == center) is all NaN (HARD_CASES 14).
         const glm::dvec3 d = camera.target - camera.position;

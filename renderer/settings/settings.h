@@ -15,7 +15,11 @@ enum class DepthFormat { D16, D24, D32F };
 enum class CullMode { Back, Front, None };
 enum class LightType { Directional, Spot, Point };
 enum class AddressMode { Wrap, ClampToEdge, ClampToBorder };
-enum class FilterKind { Point, Hardware2x2, Pcf, Poisson };
+// Filter techniques (shading/filters/: one file each). The first four compare depths; the others filter moments.
+enum class FilterKind { Point, Hardware2x2, Pcf, Poisson, Vsm, Evsm2, Evsm4, Msm };
+// Where a moments technique's blur width is given: in each view's texels, or in world units (the same in every
+// cascade: converted by each view's texel size).
+enum class BlurUnit { Texels, World };
 // A light's shadow update policy (ShadowMapSettings::update).
 enum class ShadowUpdate { EveryFrame, OnChange, CachedStatic, EveryNthFrame };
 // What the main view shows: the lit scene, the shadow factor, the first light's depth, the cascade that holds each
@@ -91,6 +95,9 @@ struct LightSettings {
     glm::vec3 color{1.0f, 1.0f, 1.0f};
     bool enabled = true;       // off: the light neither shines nor casts
     bool castsShadows = true;  // off: it shines everywhere, no shadow view is rendered for it
+    // Its size, for the soft reference (reference/soft_visibility.h): directional = angular diameter in degrees,
+    // spot / point = radius of a disc in world units. 0 = a hard light (glTF has no size, so only a preset sets it).
+    float size = 0.0f;
     ShadowMapSettings shadow;
     ProjectionSettings projection;
 
@@ -105,6 +112,9 @@ struct LightSettings {
 // Enough for every sample we compare with (bgfx: 16 maps); the shader's light loop is specialised to the count used.
 inline constexpr std::size_t kMaxLights = 32;
 
+// The widest angular diameter a directional light's size may have (its cone's half angle is then 45 degrees).
+inline constexpr float kMaxAngularDiameterDeg = 90.0f;
+
 struct SamplerSettings {
     AddressMode addressMode = AddressMode::ClampToBorder;
     float borderDepth = 1.0f;  // depth returned outside the map with clamp-to-border; 1 = lit
@@ -116,6 +126,15 @@ struct FilterSettings {
     FilterKind kind = FilterKind::Pcf;
     int kernel = 3;          // NxN grid PCF: 1,3,5,7,9
     float poissonRadius = 2.0f;  // Poisson disk radius, texels
+    // Moments techniques (VSM, EVSM2/4, MSM): storage precision, the blur after the moments pass, their own terms.
+    int momentBits = 32;             // 16 or 32-bit float moments (MSM 16: optimized quantization in 16-bit unorm)
+    float blurWidth = 5.0f;          // box blur width (1 = none), in blurUnit
+    BlurUnit blurUnit = BlurUnit::Texels;
+    float minVariance = 1e-6f;       // VSM / EVSM: variance floor (depth units squared; EVSM scales it by the warp)
+    float bleedReduction = 0.2f;     // VSM / EVSM / MSM: shadow below this share of light is cut to 0, the rest rescaled
+    float positiveExponent = 40.0f;  // EVSM: c+ of exp(c+ d); clamped to what momentBits hold (5.54 / 42)
+    float negativeExponent = 5.0f;   // EVSM4: c- of -exp(-c- d); the same clamp
+    float momentBias = 3e-5f;        // MSM: moments pulled toward a constant vector by this share
 
     bool operator==(const FilterSettings&) const = default;
 };
@@ -153,6 +172,13 @@ struct AnimationSettings {
     bool operator==(const AnimationSettings&) const = default;
 };
 
+// The accuracy reference: how many rays the soft reference traces per pixel toward a light of size > 0.
+struct ReferenceSettings {
+    int softRays = 256;
+
+    bool operator==(const ReferenceSettings&) const = default;
+};
+
 struct Settings {
     std::vector<LightSettings> lights = std::vector<LightSettings>(1);  // one default light
     float ambient = 0.15f;        // ambient term, unaffected by shadows
@@ -162,6 +188,7 @@ struct Settings {
     CameraSettings camera;
     CasterSettings casters;
     AnimationSettings animation;
+    ReferenceSettings reference;
     ViewMode view = ViewMode::Lit;
 
     // Every problem as "key: what is wrong (allowed range)"; empty when the settings can be rendered.

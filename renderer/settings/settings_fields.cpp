@@ -1,6 +1,7 @@
 #include "settings/settings_fields.h"
 
 #include "settings/json_nesting.h"
+#include "shading/filters/filter_technique.h"
 
 #include <algorithm>
 #include <array>
@@ -80,6 +81,13 @@ std::string rangeText(double lo, double hi) {
     s += formatNumber(hi);
     s += "]";
     return s;
+}
+
+// filter.kind's names, from the technique table (one line there adds a technique).
+std::vector<std::pair<FilterKind, std::string>> filterKindNames() {
+    std::vector<std::pair<FilterKind, std::string>> names;
+    for (const FilterTechnique* t : filterTechniques()) names.emplace_back(t->kind, t->name);
+    return names;
 }
 
 // ---- field factories. `access` is a generic lambda returning a reference into Settings (const or not). ----
@@ -366,6 +374,13 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
     f.push_back(tagged(boolField(keyOf("castsShadows"), "The light has shadow views (off: it lights everything)",
                                  at([](auto& l) -> auto& { return l.castsShadows; })),
                        kView | kVariant));
+    // Its size: only the soft reference reads it (a hard technique ignores it), so no view or variant is stale.
+    f.push_back(inUnit(floatField(keyOf("size"),
+                                  "Light size for the soft reference: a directional light's angular diameter "
+                                  "(degrees, at most 90), a spot or point light's radius (world units); 0 = a hard "
+                                  "light. glTF has no size: a preset sets it",
+                                  0, 1e6, at([](auto& l) -> auto& { return l.size; })),
+                       "degrees (directional) or world units (spot, point)"));
 
     // its shadow map
     f.push_back(tagged(inUnit(intField(keyOf("shadow.resolution"),
@@ -546,12 +561,11 @@ std::vector<SettingsField> buildGlobalFields() {
                        kInvalidatesSampler));
 
     // filter
-    f.push_back(tagged(enumField<FilterKind>("filter.kind", "Shadow filter",
-                                             {{FilterKind::Point, "point"},
-                                              {FilterKind::Hardware2x2, "hardware2x2"},
-                                              {FilterKind::Pcf, "pcf"},
-                                              {FilterKind::Poisson, "poisson"}},
-                                             [](auto& s) -> auto& { return s.filter.kind; }),
+    f.push_back(tagged(enumField<FilterKind>("filter.kind",
+                                             "Shadow filter technique: depth comparisons (point, hardware2x2, pcf, "
+                                             "poisson) or filtered moments (vsm, evsm2, evsm4, msm: a moments pass and "
+                                             "a blur after the shadow pass)",
+                                             filterKindNames(), [](auto& s) -> auto& { return s.filter.kind; }),
                        kVariant | kInvalidatesSampler));
     f.push_back(tagged(inUnit(intField("filter.kernel", "PCF grid size: N x N taps", 1, 9, {1, 3, 5, 7, 9},
                                        [](auto& s) -> auto& { return s.filter.kernel; }),
@@ -560,6 +574,45 @@ std::vector<SettingsField> buildGlobalFields() {
     f.push_back(inUnit(floatField("filter.poissonRadius", "Poisson disk radius", 0.5, 16,
                                   [](auto& s) -> auto& { return s.filter.poissonRadius; }),
                        "shadow-map texels"));
+    // the moments techniques (vsm, evsm2, evsm4, msm): storage, blur, their own terms (shading/filters/)
+    f.push_back(tagged(inUnit(intField("filter.momentBits",
+                                       "Moments storage precision: 16 (half float; MSM: unorm with the optimized "
+                                       "quantization) or 32-bit float. EVSM's exponents are clamped to what it holds "
+                                       "(5.54 at 16 bits, 42 at 32)",
+                                       16, 32, {16, 32}, [](auto& s) -> auto& { return s.filter.momentBits; }),
+                              "bits per moment"),
+                       kInvalidatesNothingElse));
+    f.push_back(inUnit(floatField("filter.blurWidth",
+                                  "Moments techniques: width of the separable box blur after the moments pass (1 = "
+                                  "none; fractional widths weigh the outermost taps; at most 63 texels), in "
+                                  "filter.blurUnit",
+                                  0, 1e4, [](auto& s) -> auto& { return s.filter.blurWidth; }),
+                       "texels or world units (filter.blurUnit)"));
+    f.push_back(enumField<BlurUnit>("filter.blurUnit",
+                                    "Moments techniques: filter.blurWidth in each view's texels, or in world units "
+                                    "(the same blur in every cascade: divided by each view's texel size)",
+                                    {{BlurUnit::Texels, "texels"}, {BlurUnit::World, "world"}},
+                                    [](auto& s) -> auto& { return s.filter.blurUnit; }));
+    f.push_back(inUnit(floatField("filter.minVariance",
+                                  "VSM / EVSM: the variance floor of Chebyshev's bound (acne on slopes against "
+                                  "softer contacts; EVSM scales it by the warp's slope)",
+                                  0, 0.01, [](auto& s) -> auto& { return s.filter.minVariance; }),
+                       "depth units squared"));
+    f.push_back(floatField("filter.bleedReduction",
+                           "VSM / EVSM / MSM: light-bleeding reduction: a lit share below it becomes 0 and the rest "
+                           "is rescaled (less bleeding where casters overlap, darker penumbrae)",
+                           0, 0.99, [](auto& s) -> auto& { return s.filter.bleedReduction; }));
+    f.push_back(floatField("filter.positiveExponent",
+                           "EVSM2 / EVSM4: c+ of the warp exp(c+ (2z - 1)); above what filter.momentBits holds "
+                           "(5.54 at 16, 42 at 32) it is clamped, with a warning",
+                           0, 42, [](auto& s) -> auto& { return s.filter.positiveExponent; }));
+    f.push_back(floatField("filter.negativeExponent",
+                           "EVSM4: c- of the warp -exp(-c- (2z - 1)); clamped like filter.positiveExponent", 0, 42,
+                           [](auto& s) -> auto& { return s.filter.negativeExponent; }));
+    f.push_back(floatField("filter.momentBias",
+                           "MSM: the moments pulled toward (0.5, 0.5, 0.5, 0.5) by this share before the Hamburger "
+                           "bound (against the bound's instability; larger: more bleeding)",
+                           0, 0.01, [](auto& s) -> auto& { return s.filter.momentBias; }));
 
     // camera
     f.push_back(tagged(boolField("camera.autoFrame", "Place the camera to frame the scene (position/target ignored)",
@@ -618,6 +671,13 @@ std::vector<SettingsField> buildGlobalFields() {
                                          "its last, that key's pose holds (the editor's player loops)",
                                   0, 1e6, [](auto& s) -> auto& { return s.animation.time; }),
                        "seconds"));  // the posed scene's motion dirties the views it touches, not the key
+
+    // the accuracy reference
+    f.push_back(inUnit(intField("reference.softRays",
+                                "Rays per pixel of the soft reference toward a light of size > 0 (stratified over the "
+                                "light's disc; more rays, smoother penumbrae, longer measures)",
+                                64, 1024, {}, [](auto& s) -> auto& { return s.reference.softRays; }),
+                       "rays per pixel"));
 
     f.push_back(tagged(enumField<ViewMode>(
                            "view",

@@ -151,7 +151,9 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         unitsCube.push_back(GLint(unit++));
     }
     const GLuint baseColorUnit = unit;
-    const float filterScale = filterTechnique(settings.filter.kind).scale(settings.filter);
+    const FilterTechnique& technique = filterTechnique(settings.filter.kind);
+    const float filterScale = technique.scale(settings.filter);
+    const glm::vec4 techniqueUniforms = technique.moments ? technique.moments->uniforms(settings.filter) : glm::vec4(0.0f);
 
     in.scene->bind();
     for (const GpuDraw& draw : in.scene->draws()) {
@@ -174,6 +176,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
                 glUniform3fv(u.cascadeForward, 1, glm::value_ptr(glm::vec3(in.cascadeForward)));
             glUniform1f(u.ambient, settings.ambient);
             glUniform1f(u.filterScale, filterScale);
+            if (u.technique >= 0) glUniform4fv(u.technique, 1, glm::value_ptr(techniqueUniforms));
             if (!units2D.empty()) glUniform1iv(u.maps2D, GLsizei(units2D.size()), units2D.data());
             if (!unitsCube.empty()) glUniform1iv(u.mapsCube, GLsizei(unitsCube.size()), unitsCube.data());
             if (key.alphaTexture) glUniform1i(u.baseColorTexture, GLint(baseColorUnit));

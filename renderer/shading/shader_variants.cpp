@@ -1,6 +1,7 @@
 #include "shading/shader_variants.h"
 
 #include "gl/program.h"
+#include "shading/filters/filter_technique.h"
 
 namespace shadowlab {
 
@@ -12,7 +13,7 @@ MainUniforms locateUniforms(GLuint p) {
             at("uMaps2D[0]"),      at("uMapsCube[0]"),    at("uCameraPosition"), at("uBaseColor"),
             at("uAmbient"),        at("uFilterScale"),    at("uAlphaFactor"),  at("uAlphaCutoff"),
             at("uBaseColorTexture"), at("uCameraForward"), at("uPixelPerDepth"), at("uCascadeEye"),
-            at("uCascadeForward")};
+            at("uCascadeForward"), at("uTechnique")};
 }
 
 }  // namespace
@@ -20,8 +21,12 @@ MainUniforms locateUniforms(GLuint p) {
 const MainProgram& MainVariantCache::program(const MainVariantKey& key) {
     auto it = programs_.find(key);
     if (it == programs_.end()) {
+        // A moments technique's lookup is its own file: the variant includes exactly that one.
+        const MomentTechnique* moments = filterTechnique(key.filter).moments;
+        gl::IncludeAliases aliases;
+        if (moments) aliases["alias:technique"] = moments->glslFile;
         gl::Program program = gl::buildProgram(
-            {{GL_VERTEX_SHADER, "main.vert.glsl"}, {GL_FRAGMENT_SHADER, "main.frag.glsl"}}, key.defines());
+            {{GL_VERTEX_SHADER, "main.vert.glsl"}, {GL_FRAGMENT_SHADER, "main.frag.glsl"}}, key.defines(), aliases);
         const MainUniforms uniforms = locateUniforms(program.id());
         it = programs_.emplace(key, MainProgram{std::move(program), uniforms, key.name()}).first;
     }

@@ -26,7 +26,9 @@ std::vector<std::string> MainVariantKey::defines() const {
     FilterSettings filterSettings;
     filterSettings.kind = filter;
     filterSettings.kernel = kernel;
-    std::vector<std::string> d = filterDefines(filterSettings);
+    // A moments technique reads its moments through its own file (the program's "alias:technique"), no taps.
+    const bool moments = filterTechnique(filter).moments != nullptr;
+    std::vector<std::string> d = moments ? std::vector<std::string>{"MOMENT_TECHNIQUE"} : filterDefines(filterSettings);
     switch (view) {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;
@@ -59,6 +61,7 @@ std::string MainVariantKey::name() const {
     for (std::string d : defines()) {
         if (d.starts_with("FILTER_TAP_OFFSETS") || d.starts_with("FILTER_GRID_RADIUS")) continue;  // the numbers follow from the filter, said by FILTER_TAPS
         if (d.starts_with("CASCADE_TINTS")) continue;  // fixed colours, said by VIEW_CASCADES
+        if (d == "MOMENT_TECHNIQUE") d = "FILTER_" + upper(filterTechnique(filter).name) + " " + d;
         if (d.starts_with("FILTER_TAPS")) d = "FILTER_" + upper(filterTechnique(filter).name) +
                                               (filter == FilterKind::Pcf ? " PCF_KERNEL " + std::to_string(kernel) : "") +
                                               " " + d;

@@ -1,9 +1,6 @@
 #include "shadow/shadow_pass.h"
 
 #include "frame/face_culling.h"
-#include "gl/program.h"
-
-#include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
 
@@ -30,25 +27,7 @@ void setPolygonOffset(float slopeScaled, float constant, float clamp, bool hasCl
 
 }  // namespace
 
-ShadowPass::CasterProgram::CasterProgram(gl::Program built) : program(std::move(built)) {
-    const GLuint p = program.id();
-    lightViewProjection = glGetUniformLocation(p, "uLightViewProjection");
-    model = glGetUniformLocation(p, "uModel");
-    uvTransform = glGetUniformLocation(p, "uUvTransform");
-    alphaFactor = glGetUniformLocation(p, "uAlphaFactor");
-    alphaCutoff = glGetUniformLocation(p, "uAlphaCutoff");
-    baseColor = glGetUniformLocation(p, "uBaseColorTexture");
-}
-
-ShadowPass::ShadowPass()
-    : depthOnly_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {})),
-      alphaFactorOnly_(gl::buildProgram(
-          {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
-          {"ALPHA_MASK"})),
-      alphaTextured_(gl::buildProgram(
-          {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
-          {"ALPHA_MASK", "BASE_COLOR_TEXTURE"})),
-      hasOffsetClamp_(glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr) {}
+ShadowPass::ShadowPass() : hasOffsetClamp_(glPolygonOffsetClamp != nullptr || glPolygonOffsetClampEXT != nullptr) {}
 
 void clearShadowMap(const ShadowMap& map, bool reversedZ) {
     glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
@@ -68,9 +47,28 @@ std::vector<CasterSphere> casterSpheres(const GpuScene& scene) {
     return spheres;
 }
 
+CasterSelection castersInVolume(const GpuScene& scene, const LightSpace& light) {
+    CasterSelection selection;
+    const std::vector<GpuDraw>& draws = scene.draws();
+    for (std::size_t d = 0; d < draws.size(); ++d) {
+        if (!draws[d].casts) continue;  // its node is excluded (casters.excluded)
+        if (casterInVolume(casterSphere(draws[d]), light))
+            selection.draws.push_back(std::uint32_t(d));
+        else
+            ++selection.skipped;
+    }
+    return selection;
+}
+
 ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light, const ShadowMapSettings& shadow,
-                                 bool depthClamp, ShadowMap& map, const CasterSelection& selection) {
+                                 bool depthClamp, ShadowMap& map) {
+    return run(scene, castersInVolume(scene, light), light, shadow, depthClamp, map);
+}
+
+ShadowPassCounts ShadowPass::run(const GpuScene& scene, const CasterSelection& casters, const LightSpace& light,
+                                 const ShadowMapSettings& shadow, bool depthClamp, ShadowMap& map) {
     ShadowPassCounts counts;
+    counts.castersSkipped = casters.skipped;
     glBindFramebuffer(GL_FRAMEBUFFER, map.framebuffer());
     glViewport(0, 0, map.resolution(), map.resolution());
     glDepthMask(GL_TRUE);
@@ -80,12 +78,12 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glDepthFunc(reversed ? GL_GREATER : GL_LESS);
     glClearDepth(reversed ? 0.0 : 1.0);
-    if (selection.scissor) {
+    if (casters.scissor) {
         glEnable(GL_SCISSOR_TEST);
-        glScissor(selection.scissor->x0, selection.scissor->y0, selection.scissor->x1 - selection.scissor->x0,
-                  selection.scissor->y1 - selection.scissor->y0);
+        glScissor(casters.scissor->x0, casters.scissor->y0, casters.scissor->x1 - casters.scissor->x0,
+                  casters.scissor->y1 - casters.scissor->y0);
     }
-    if (selection.clear) glClear(GL_DEPTH_BUFFER_BIT);
+    if (casters.clear) glClear(GL_DEPTH_BUFFER_BIT);
     if (depthClamp)
         glEnable(GL_DEPTH_CLAMP);
     else
@@ -94,42 +92,15 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const LightSpace& light,
     setPolygonOffset(toward * shadow.slopeScaledDepthBias, toward * shadow.depthBias, toward * shadow.depthBiasClamp,
                      hasOffsetClamp_);
 
-    const glm::mat4 lightViewProjection(light.viewProjection());
-    std::set<GLuint> prepared;  // programs whose per-pass uniforms are set
-    scene.bind();
-    const Scene& model = scene.scene();
-    const std::size_t drawCount = selection.draws ? selection.draws->size() : scene.draws().size();
-    for (std::size_t k = 0; k < drawCount; ++k) {
-        const GpuDraw& draw = scene.draws()[selection.draws ? (*selection.draws)[k] : k];
-        if (!draw.casts) continue;  // its node is excluded (casters.excluded)
-        if (!casterInVolume(casterSphere(draw), light)) {
-            ++counts.castersSkipped;
-            continue;
-        }
-        const Material* material = draw.material >= 0 ? &model.materials[std::size_t(draw.material)] : nullptr;
-        const bool alphaTested = material && material->alphaMode == AlphaMode::Mask;
-        const GLuint texture = alphaTested ? scene.materialTexture(draw.material) : 0;
-        const CasterProgram& caster = !alphaTested ? depthOnly_ : texture ? alphaTextured_ : alphaFactorOnly_;
-        glUseProgram(caster.program.id());
-        if (prepared.insert(caster.program.id()).second) {
-            glUniformMatrix4fv(caster.lightViewProjection, 1, GL_FALSE, glm::value_ptr(lightViewProjection));
-            glUniform1i(caster.baseColor, 1);
-        }
-        glUniformMatrix4fv(caster.model, 1, GL_FALSE, glm::value_ptr(draw.model));
-        if (alphaTested) {
-            ++counts.alphaTestedCasters;
-            glUniformMatrix3fv(caster.uvTransform, 1, GL_FALSE, glm::value_ptr(material->uvTransform));
-            glUniform1f(caster.alphaFactor, material->baseColorFactor.a);
-            glUniform1f(caster.alphaCutoff, material->alphaCutoff);
-            if (texture) glBindTextureUnit(1, texture);
-        }
-        applyShadowFaceCulling(shadow.cullMode, material, draw.mirrored);
-        glDrawElementsBaseVertex(GL_TRIANGLES, draw.indexCount, GL_UNSIGNED_INT,
-                                 reinterpret_cast<const void*>(draw.firstIndexByte), draw.baseVertex);
-        ++counts.castersDrawn;
-        counts.trianglesDrawn += std::size_t(draw.indexCount / 3);
-    }
-    resetFaceCulling();
+    const DepthCastersDrawn drawn =
+        casters_.draw(scene, casters.draws, glm::mat4(light.viewProjection()),
+                      [&](const Material* material, bool mirrored) {
+                          return shadowFaceCullState(shadow.cullMode, material, mirrored);
+                      });
+    counts.castersDrawn = int(casters.draws.size());
+    counts.alphaTestedCasters = drawn.alphaTested;
+    counts.trianglesDrawn = drawn.triangles;
+    counts.drawCalls = drawn.drawCalls;
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);

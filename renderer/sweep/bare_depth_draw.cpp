@@ -1,5 +1,6 @@
 #include "sweep/bare_depth_draw.h"
 
+#include "frame/gpu_scene.h"
 #include "frame/timed_frames.h"
 #include "gl/program.h"
 
@@ -12,11 +13,11 @@ namespace shadowlab {
 
 BareDepthDraw::BareDepthDraw(const Scene& scene, const glm::dvec3& origin, TimingSource source,
                              const std::vector<char>* instances)
-    // The shadow pass's own depth-only vertex stage (with an identity model matrix): the same vertex work per
-    // triangle, so the difference is what the pass adds around the raster.
+    // The shadow pass's own depth-only vertex stage (with one identity model matrix in its transform buffer): the
+    // same vertex work per triangle, so the difference is what the pass adds around the raster.
     : program_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {})), timer_(source) {
     lightViewProjection_ = glGetUniformLocation(program_.id(), "uLightViewProjection");
-    model_ = glGetUniformLocation(program_.id(), "uModel");
+    bindDrawTransformsBlock(program_.id());
     std::vector<glm::vec3> triangles;
     triangles.reserve(scene.triangleCount() * 3);
     for (std::size_t n = 0; n < scene.instances.size(); ++n) {
@@ -41,11 +42,23 @@ BareDepthDraw::BareDepthDraw(const Scene& scene, const glm::dvec3& origin, Timin
     vertices_ = gl::createBuffer();
     glNamedBufferStorage(vertices_.id(), GLsizeiptr(std::max<std::size_t>(triangles.size(), 1) * sizeof(glm::vec3)),
                          triangles.empty() ? nullptr : triangles.data(), 0);
+    const glm::mat4 identity(1.0f);
+    const std::uint32_t drawIndex = 0;
+    transform_ = gl::createBuffer();
+    glNamedBufferStorage(transform_.id(), sizeof identity, &identity, 0);
+    drawIndex_ = gl::createBuffer();
+    glNamedBufferStorage(drawIndex_.id(), sizeof drawIndex, &drawIndex, 0);
     vao_ = gl::createVertexArray();
     glVertexArrayVertexBuffer(vao_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
     glEnableVertexArrayAttrib(vao_.id(), 0);
     glVertexArrayAttribFormat(vao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(vao_.id(), 0, 0);
+    // The draw index as GpuScene feeds it (an instanced attribute), always 0: the identity above.
+    glVertexArrayVertexBuffer(vao_.id(), 1, drawIndex_.id(), 0, sizeof drawIndex);
+    glVertexArrayBindingDivisor(vao_.id(), 1, 1);
+    glEnableVertexArrayAttrib(vao_.id(), kDrawIndexAttribute);
+    glVertexArrayAttribIFormat(vao_.id(), kDrawIndexAttribute, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao_.id(), kDrawIndexAttribute, 1);
 }
 
 BareDrawTiming BareDepthDraw::time(const glm::dmat4& lightViewProjection, int resolution, DepthFormat format,
@@ -59,7 +72,6 @@ BareDrawTiming BareDepthDraw::time(const glm::dmat4& lightViewProjection, int re
         return result;
     }
     const glm::mat4 viewProjection(lightViewProjection);
-    const glm::mat4 identity(1.0f);
     const RepeatedTiming timing = timeRepeated(frames, [&](std::vector<double>& ms) -> std::string {
         timer_.begin(TimedPass::Shadow);
         glBindFramebuffer(GL_FRAMEBUFFER, map_.framebuffer());
@@ -73,7 +85,7 @@ BareDrawTiming BareDepthDraw::time(const glm::dmat4& lightViewProjection, int re
         glClear(GL_DEPTH_BUFFER_BIT);
         glUseProgram(program_.id());
         glUniformMatrix4fv(lightViewProjection_, 1, GL_FALSE, glm::value_ptr(viewProjection));
-        glUniformMatrix4fv(model_, 1, GL_FALSE, glm::value_ptr(identity));
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDrawTransformsBinding, transform_.id());
         glBindVertexArray(vao_.id());
         glDrawArrays(GL_TRIANGLES, 0, vertexCount_);
         timer_.end(TimedPass::Shadow);

@@ -43,8 +43,10 @@ public:
 
 private:
     gl::Program program_;
-    GLint lightViewProjection_ = -1, model_ = -1;
+    GLint lightViewProjection_ = -1;
     gl::Buffer vertices_;
+    gl::Buffer transform_;  // one identity matrix (the transform buffer the shader reads)
+    gl::Buffer drawIndex_;  // one 0
     gl::VertexArray vao_;
     GLsizei vertexCount_ = 0;
     PassTimer timer_;

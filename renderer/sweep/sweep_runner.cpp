@@ -2,6 +2,7 @@
 
 #include "frame/timed_frames.h"
 #include "accuracy/light_isolation.h"
+#include "scene/scene_animation.h"
 #include "settings/settings_fields.h"
 #include "sweep/pareto_front.h"
 
@@ -83,10 +84,27 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
     result.presetPoint = plan.basePoint;
     const double aspect = double(options.width) / double(options.height);
 
+    // The scene comes posed at the base settings' animation; a point with another animation.time or .play (an
+    // axis) is drawn and measured on a copy posed at its own (posing sets every transform, so one copy serves all).
+    std::optional<Scene> reposed;
+    std::optional<AnimationSettings> reposedAt;  // what `reposed` is posed at
+    auto sceneFor = [&](const Settings& settings, std::string& error) -> const Scene* {
+        if (settings.animation == base.animation) return &scene;
+        if (reposedAt == settings.animation) return &*reposed;
+        if (!reposed) reposed = scene;
+        reposedAt.reset();
+        if (error = poseScene(*reposed, settings.animation); !error.empty()) return nullptr;
+        reposedAt = settings.animation;
+        return &*reposed;
+    };
+
     // Times and measures one point into r: nullopt when cancelled, else "" or why it failed.
     auto measurePoint = [&](const SweepPoint& point, SweepPointResult& r, std::size_t done) -> std::optional<std::string> {
-        if (std::string error = sceneCameraError(point.settings.camera, scene); !error.empty()) return error;
-        if (castingLights(point.settings, scene).empty())
+        std::string poseError;
+        const Scene* posed = sceneFor(point.settings, poseError);
+        if (!posed) return poseError;
+        if (std::string error = sceneCameraError(point.settings.camera, *posed); !error.empty()) return error;
+        if (castingLights(point.settings, *posed).empty())
             return std::string("no light casts a shadow with these values (every light is off or has "
                                "castsShadows=false): nothing to time or measure");
         if (progress) {
@@ -97,14 +115,14 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         }
         const Camera camera = options.camera && point.settings.camera == base.camera
                                   ? *options.camera
-                                  : cameraFor(point.settings.camera, scene, aspect);
-        const TimedFrames timed = timeFrames(renderer, scene, point.settings, camera, target, options.frames);
+                                  : cameraFor(point.settings.camera, *posed, aspect);
+        const TimedFrames timed = timeFrames(renderer, *posed, point.settings, camera, target, options.frames);
         if (!timed.ok) return timed.error;
         result.timingSource = timed.timingSource;
         r.warnings = timed.last.warnings;
         r.shadowMs = timed.shadowMs;
         r.mainMs = timed.mainMs;
-        r.costMs = r.shadowMs + r.mainMs;
+        r.costMs = r.shadowMs + r.mainMs + timed.momentsMs + timed.blurMs;  // a moments technique's passes count
         r.shadowMinMs = timed.shadowMinMs;
         r.mainMinMs = timed.mainMinMs;
         r.wallMsPerFrame = timed.wallMsPerFrame;
@@ -120,7 +138,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         if (found == result.bareDraws.end()) {
             if (progress) progress->setStage("bare draw " + std::to_string(r.resolution) + "² " + depthFormatName(r.format));
             if (!bare)
-                bare = std::make_unique<BareDepthDraw>(scene, timed.last.renderOrigin,
+                bare = std::make_unique<BareDepthDraw>(*posed, timed.last.renderOrigin,
                                                        info.softwareRasterizer ? TimingSource::CpuAroundFinish
                                                                                : TimingSource::GpuQueries);
             BareDrawTiming timing = bare->time(timed.last.light.viewProjection(), r.resolution, r.format,
@@ -136,7 +154,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         if (progress) progress->setStage("measuring " + r.label);
         const auto measureStart = Clock::now();
         const AccuracyReport report =
-            meter.measure(scene, point.settings, camera, options.width, options.height, progress);
+            meter.measure(*posed, point.settings, camera, options.width, options.height, progress);
         if (report.cancelled) return std::nullopt;
         if (!report.ok) return report.error;
         r.measureMs = msSince(measureStart);
@@ -199,7 +217,8 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
     };
 
 
-    // Run order: grouped by the values of the axes the reference depends on (light and camera), plan order within.
+    // Run order: grouped by the values of the axes the reference depends on (light, camera and the animation's
+    // pose), plan order within.
     std::vector<std::size_t> order(plan.points.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     auto referenceValues = [&](std::size_t i) {
@@ -212,7 +231,8 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
                     const SettingsField* field = findSettingsField(key);
                     const bool movesLight = field && field->light >= 0 && field->group() != "shadow" &&
                                             field->group() != "projection";
-                    return movesLight || key.rfind("camera.", 0) == 0;
+                    // animation.*: the scene's pose, so its casters and receivers.
+                    return movesLight || key.rfind("camera.", 0) == 0 || key.rfind("animation.", 0) == 0;
                 }))
                 values.push_back(plan.points[i].values[a]);
         }

@@ -4,7 +4,7 @@
 // receiver plane (in texels) keep their meaning in every cascade. The CPU fills the block in
 // renderer/shading/main_pass.cpp.
 #include "shadow/light_data.glsl"
-#include "shadow/lookup_2d.glsl"
+#include "shadow/lookup.glsl"
 #include "shadow/view_select.glsl"
 
 #if CASCADES > 0 && MAP_ARRAYS_2D > 0

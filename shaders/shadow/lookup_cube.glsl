@@ -3,6 +3,7 @@
 #include "shadow/light_data.glsl"
 #include "shadow/filter_taps.glsl"
 #include "shadow/view_select.glsl"
+#include "shadow/cube_face_depth.glsl"
 
 #if MAP_ARRAYS_CUBE > 0
 uniform samplerCubeArrayShadow uMapsCube[MAP_ARRAYS_CUBE];
@@ -23,16 +24,6 @@ float sampleMapCube(int map, vec4 coord, float ref) {
 #endif
 
 #if MAP_ARRAYS_CUBE > 0
-// The stored value of a cube face is that face's perspective depth, so the reference is the receiver's depth in the
-// face the tap's direction selects: its distance along that face's axis, through the same near/far mapping.
-float faceDepth(vec3 fromLight, vec3 tapDirection, LightData L) {
-    vec3 axis = cubeFaceAxis(cubeFaceOf(tapDirection));
-    float near = L.depth.x, far = L.depth.y;
-    float z = max(dot(fromLight, axis), near);
-    if (reversedZ(L)) return near * (far - z) / (z * (far - near));  // zero-to-one, near 1, far 0
-    return ((far + near) / (far - near) - 2.0 * far * near / ((far - near) * z)) * 0.5 + 0.5;
-}
-
 float shadowCube(LightData L, vec3 lookup) {
     vec3 v = lookup - L.position.xyz;
     vec3 a = abs(v);

@@ -260,20 +260,27 @@ TEST_F(BiasTunerTest, SaysWhenNoSettingReachesTheLimit) {
     EXPECT_DOUBLE_EQ(closest.acnePercent, result.report.acnePercent);
 }
 
-// Issue 20: a cascaded light's bias is one setting for every cascade. Each candidate is judged per cascade (the
-// cascades that hold enough pixels), and a suggestion holds in each of them.
-TEST_F(BiasTunerTest, ACascadedLightsSuggestionHoldsInEveryCascade) {
-    const Scene scene = loadBuiltin("textbook");
+// The textbook's sun in 3 cascades (30 units of shadow distance, lambda 0.6) of `resolution`², bias zero, seen from a
+// fixed camera near the floor: the cascaded tuner tests' start.
+Settings cascadedTextbook(int resolution) {
     Settings start = zeroBias(loadShippedPreset("default"));
     LightSettings& sun = start.lights[0];
     sun.projection.fit = ProjectionFit::Cascades;
     sun.projection.cascadeCount = 3;
     sun.projection.shadowDistance = 30.0f;
     sun.projection.splitLambda = 0.6f;
-    sun.shadow.resolution = 512;
+    sun.shadow.resolution = resolution;
     start.camera.autoFrame = false;
     start.camera.position = {-4.0, 1.2, 9.0};
     start.camera.target = {1.0, 0.3, -3.0};
+    return start;
+}
+
+// Issue 20: a cascaded light's bias is one setting for every cascade. Each candidate is judged per cascade (the
+// cascades that hold enough pixels), and a suggestion holds in each of them.
+TEST_F(BiasTunerTest, ACascadedLightsSuggestionHoldsInEveryCascade) {
+    const Scene scene = loadBuiltin("textbook");
+    const Settings start = cascadedTextbook(512);
     const int w = 240, h = 135;
     const Camera camera = cameraFor(start.camera, scene, double(w) / h);
     AccuracyMeter meter;
@@ -297,6 +304,47 @@ TEST_F(BiasTunerTest, ACascadedLightsSuggestionHoldsInEveryCascade) {
         if (c.measured >= kTuneCascadeMinPixels)
             EXPECT_LE(c.acnePercent, limit) << "cascade " << c.cascade << " (texel " << c.texelWorldSize << ")";
     RecordProperty("candidatesStoppedByACascade", cascadeStopped);
+}
+
+TEST_F(BiasTunerTest, ACascadeNoCandidateCleansIsNamedWithItsPixelsAndLeastAcne) {
+    // The textbook's three cascades at 256² with the preset's DepthBiasClamp at 1e-4 window depth (kept as given: the
+    // tuner never changes it). The clamp caps every candidate's constant + slope bias; normal offset alone leaves the
+    // sphere's terminator in cascade 1 (texel 0.058) shadowed in steps, and larger offsets move its lookups into
+    // other shadows. Cascades 0 and 2 come clean with some candidate; cascade 1 with none (render --view cascades and
+    // measure --cause-overlay of the closest candidate show it: the acne is the staircase on the green sphere).
+    const Scene scene = loadBuiltin("textbook");
+    Settings start = cascadedTextbook(256);
+    start.lights[0].shadow.depthBiasClamp = 1e-4f;
+    const int w = 240, h = 135;
+    const Camera camera = cameraFor(start.camera, scene, double(w) / h);
+    AccuracyMeter meter;
+    const double limit = 0.1;
+    const TuneResult result = tuneBias(meter, scene, start, camera, w, h, limit);
+    ASSERT_TRUE(result.ok) << result.error;
+    EXPECT_FALSE(result.reachedLimit);
+    ASSERT_EQ(result.blockingCascade, 1);
+    ASSERT_EQ(result.report.cascades.cascades.size(), 3u);
+    const CascadeNumbers& blocking = result.report.cascades.cascades[1];
+    EXPECT_EQ(result.blockingCascadePixels, blocking.measured);
+    EXPECT_GE(result.blockingCascadePixels, kTuneCascadeMinPixels) << "judged on its own";
+    EXPECT_DOUBLE_EQ(result.blockingCascadeTexel, blocking.texelWorldSize);
+    EXPECT_DOUBLE_EQ(result.blockingCascadeAcne, blocking.acnePercent);
+    // The least acne it reached is over every candidate, and above the limit: no candidate cleans it ...
+    double least = 100.0;
+    std::vector<double> othersLeast(3, 100.0);
+    for (const TuneStep& step : result.path) {
+        ASSERT_EQ(step.cascadeAcnePercent.size(), 3u);
+        least = std::min(least, step.cascadeAcnePercent[1]);
+        for (std::size_t c : {0u, 2u}) othersLeast[c] = std::min(othersLeast[c], step.cascadeAcnePercent[c]);
+        EXPECT_FALSE(step.withinLimit) << "candidate " << step.index;
+    }
+    EXPECT_DOUBLE_EQ(result.blockingCascadeLeastAcne, least);
+    EXPECT_GT(least, limit);
+    EXPECT_LE(result.blockingCascadeLeastAcne, result.blockingCascadeAcne);
+    // ... while the other cascades reach it.
+    EXPECT_LE(othersLeast[0], limit);
+    EXPECT_LE(othersLeast[2], limit);
+    RecordProperty("cascade1LeastAcnePercent", std::to_string(least));
 }
 
 TEST_F(BiasTunerTest, CancelStopsTheSearch) {

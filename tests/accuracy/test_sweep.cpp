@@ -3,6 +3,8 @@
 // against one reference computed once; a bare draw stands beside every map size; the front holds exactly the points
 // nothing beats; the chart is drawn and a point is found under its own marker.
 #include "gl_fixture.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_animation.h"
 #include "settings/settings_fields.h"
 #include "sweep/pareto_front.h"
 #include "sweep/sweep_output.h"
@@ -256,4 +258,45 @@ TEST_F(SweepTest, AFailingPointIsKeptWithItsReasonAndTheOthersAreMeasured) {
 }
 
 }  // namespace
+TEST_F(SweepTest, AnAxisOnTheAnimationTimePosesEachPointAtItsTime) {
+    // animated_boxes' Move carries a box across the floor: at 0 s and 1.5 s its shadow falls elsewhere. The scene
+    // comes posed at the base's time (0 s), as every command loads it; each point must be drawn and measured at
+    // its own time, as one measurement of the scene posed there gives.
+    const std::string path = std::string(SHADOWLAB_SOURCE_DIR) + "/tests/data/scenes/animated_boxes.gltf";
+    SceneLoadResult loaded = loadGltfScene(path);
+    ASSERT_TRUE(loaded.scene) << loaded.error;
+    Scene scene = std::move(*loaded.scene);
+    Settings base = loadShippedPreset("default");
+    ASSERT_EQ(applySettingOverride(base, "animation.play=Move"), "");
+    ASSERT_EQ(applySettingOverride(base, "shadow.resolution=512"), "");
+    ASSERT_EQ(poseScene(scene, base.animation), "");
+    const SweepPlan plan = planSweep(base, {"animation.time=0,1.5"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 160;
+    options.height = 90;
+    options.frames = 1;
+    options.measurePreset = false;
+    const SweepResult r = runSweep(scene, base, plan, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.points.size(), 2u);
+    EXPECT_EQ(r.references, 2) << "the reference follows the pose";
+    std::vector<AccuracyCounts> alone;
+    for (const SweepPointResult& p : r.points) {
+        ASSERT_FALSE(p.failed()) << p.label << ": " << p.error;
+        Scene posed = loadGltfScene(path).scene.value();
+        ASSERT_EQ(poseScene(posed, p.settings.animation), "");
+        AccuracyMeter meter;
+        const Camera camera = cameraFor(p.settings.camera, posed, 160.0 / 90.0);
+        const AccuracyReport report = meter.measure(posed, p.settings, camera, 160, 90);
+        ASSERT_TRUE(report.ok) << report.error;
+        EXPECT_EQ(p.accuracy.counts.lit, report.counts.lit) << p.label;
+        EXPECT_EQ(p.accuracy.counts.shadowed, report.counts.shadowed) << p.label;
+        EXPECT_EQ(p.accuracy.counts.wrong, report.counts.wrong) << p.label;
+        EXPECT_DOUBLE_EQ(p.accuracy.meanError, report.meanError) << p.label;
+        alone.push_back(report.counts);
+    }
+    EXPECT_NE(alone[0].shadowed, alone[1].shadowed) << "the two times must differ for this test to tell them apart";
+}
+
 }  // namespace shadowlab::test

@@ -32,6 +32,25 @@ for key in leakPercent acneSeverity wrongPixelsPercent meanError edgeErrorP95Tex
   grep -q "\"$key\"" acne.json && pass "JSON has $key" || fail "JSON lacks $key"
 done
 
+# A light of size > 0: its soft numbers (version 3) after its hard ones, naming the light, in the text and the JSON;
+# a hard light (the acne run above) has none.
+expect_ok measure-soft "$SHADOWLAB" measure --scene builtin:textbook --preset default --width 320 --height 180 \
+  --set lights.0.size=3 --set reference.softRays=64 --json soft.json
+grep -q "soft light lights.0 (size 3.000 degrees angular diameter, 64 rays per pixel), metrics version 3" \
+  measure-soft.out && pass "measure names the soft light" || fail "no soft block: $(tail -12 measure-soft.out)"
+for word in "bleeding" "over-darkening" "penumbra width error"; do
+  grep -q "$word" measure-soft.out && pass "soft measure prints $word" || fail "soft output lacks '$word'"
+done
+python3 - <<'PY' && pass "soft JSON: version 3, light 0, widths" || fail "soft JSON: $(head -c 600 soft.json)"
+import json, sys
+soft = json.load(open("soft.json"))["lights"][0]["soft"]
+ok = soft["metricsVersion"] == 3 and soft["light"] == 0 and soft["rays"] == 64 and soft["sizeUnit"] == "degrees"
+ok = ok and soft["penumbraWidth"]["profiles"] > 0 and soft["penumbraWidth"]["referenceWorld"] > 0
+sys.exit(0 if ok else 1)
+PY
+python3 -c "import json,sys; sys.exit('soft' in json.load(open('acne.json'))['lights'][0])" \
+  && pass "a hard light has no soft numbers" || fail "acne.json has soft numbers for a hard light"
+
 # Issue 9, observation 3: the roof's leak is named as a culled caster, with its remedy.
 expect_ok measure-roof "$SHADOWLAB" measure --scene builtin:roof --preset default --width 320 --height 180 \
   --set shadow.cullMode=back --json roof.json

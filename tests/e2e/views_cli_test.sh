@@ -75,4 +75,32 @@ expect_ok export-room-face "$SHADOWLAB" export --preset room --scene builtin:roo
   || fail "export face: $(head -c 300 face.json)"
 expect_error probe-room-bad-view "allowed: +X, -X, +Y, -Y, +Z, -Z" \
   "$SHADOWLAB" probe --scene builtin:room --preset room --width 160 --height 120 --pixel 80,90 --view cascade:0
+
+# tune on a cascaded light where one cascade stops every candidate: the preset's DepthBiasClamp (1e-4, kept as given)
+# caps constant + slope bias, and normal offset alone leaves the sphere's terminator in cascade 1 in steps. The message
+# and the JSON name the light, the cascade, its pixels and the least acne it reached; no preset is written.
+tuneCasc=(--scene builtin:textbook --preset default --width 240 --height 135 --set lights.0.projection.fit=cascades
+          --set lights.0.projection.cascadeCount=3 --set lights.0.projection.shadowDistance=30
+          --set lights.0.projection.splitLambda=0.6 --set camera.autoFrame=false --set camera.position=[-4,1.2,9]
+          --set camera.target=[1,0.3,-3] --set shadow.resolution=256 --set shadow.depthBiasClamp=0.0001
+          --set shadow.depthBias=0 --set shadow.slopeScaledDepthBias=0 --set shadow.normalOffset=0)
+"$SHADOWLAB" tune "${tuneCasc[@]}" --json tune-casc.json --out tune-casc-preset.json >tune-casc.out 2>tune-casc.err
+rc=$?
+[ $rc -eq 3 ] && [ ! -e tune-casc-preset.json ] && pass "tune: no setting holds in every cascade (exit 3, no preset)" \
+  || fail "tune cascades: exit $rc, $(tail -3 tune-casc.err)"
+grep -Eq "cascade:1 of lights.0 \(directional\) stops it: its [0-9]+ measured pixels keep acne above the limit with every candidate \(least [0-9.]+ %;.*shadow.depthBiasClamp 0.0001" tune-casc.out \
+  && pass "tune names the light, the cascade, its pixels, its least acne and the clamp" \
+  || fail "tune message: $(grep 'NO setting' tune-casc.out)"
+python3 - <<'PY' && pass "tune JSON: blockingCascade 1, its pixels and least acne" || fail "tune JSON: $(head -c 400 tune-casc.json)"
+import json
+l = json.load(open("tune-casc.json"))["lights"][0]
+c = l["report"]["cascaded"]["cascades"][1]
+least = min(s["cascadeAcnePercent"][1] for s in l["path"])
+others = [min(s["cascadeAcnePercent"][i] for s in l["path"]) for i in (0, 2)]
+assert not l["reachedLimit"] and l["blockingCascade"] == 1, l["blockingCascade"]
+assert l["blockingCascadePixels"] == c["pixels"] >= 200, (l["blockingCascadePixels"], c["pixels"])
+assert abs(l["blockingCascadeLeastAcnePercent"] - least) < 1e-12 and least > 0.1, least
+assert l["blockingCascadeAcnePercent"] == c["acnePercent"] and l["blockingCascadeTexelWorldSize"] == c["texelWorldSize"]
+assert max(others) <= 0.1, others
+PY
 finish

@@ -20,6 +20,8 @@ inline std::vector<nlohmann::json> otherValues(const SettingsField& f, const nlo
             break;
         case SettingsFieldKind::Float:
             values = {f.min, f.max, double(float(f.min + (f.max - f.min) * 0.0318309886)), (f.min + f.max) / 2};
+            // A light's size is a directional light's angle too (at most 90 degrees): sizes every type accepts.
+            if (f.name() == "size") values = {f.min, 0.5, 2.0, 45.0};
             break;
         case SettingsFieldKind::Vec3:
             values = {nlohmann::json::array({0.25, -2.25, 0.125}), nlohmann::json::array({0.5, 0.5, 0.5}),

@@ -43,7 +43,7 @@ Scene builtinOrDie(const std::string& name) {
 
 TEST(BuiltinScenes, NamesDescriptionsAndDefault) {
     const std::vector<std::string> names = builtinSceneNames();
-    ASSERT_EQ(names.size(), 9u);
+    ASSERT_EQ(names.size(), 10u);  // city-traffic is the tenth
     EXPECT_EQ(names.front(), "textbook");
     EXPECT_EQ(std::string(kDefaultSceneSpec), "builtin:textbook");
     for (const std::string& n : names) EXPECT_FALSE(builtinSceneDescription(n).empty()) << n;

@@ -85,6 +85,8 @@ Settings awkwardSettings() {
     s.lights[0].shadow.depthBiasClamp = std::numeric_limits<float>::denorm_min();  // 1.4e-45, the smallest denormal
     s.lights[0].shadow.normalOffset = 1e-40f;                                     // another denormal
     s.lights[0].shadow.cullMode = CullMode::Front;  // not the default (none)
+    s.lights[0].size = 0.53f;                       // the sun's angular diameter
+    s.reference.softRays = 1000;
     s.lights[0].type = LightType::Spot;
     s.lights[0].direction = {1.0f / 3.0f, -std::numeric_limits<float>::min(), -0.7f};
     s.lights[0].position = {1e7f, -9999999.0f, 16777217.0f / 4.0f};
@@ -142,7 +144,7 @@ TEST(Presets, JsonHasTheDocumentedShape) {
         return leaves;
     };
     EXPECT_EQ(leavesOf(j) - 4 + leavesOf(light), settingsFieldsOf(Settings{}).size());
-    EXPECT_EQ(j.size(), 4u + 3u + 5u + 1u);  // groups: sampler, filter, camera, casters, animation
+    EXPECT_EQ(j.size(), 4u + 3u + 6u + 1u);  // groups: sampler, filter, camera, casters, animation, reference
     EXPECT_EQ(j["camera"]["sceneCamera"], -1);
     EXPECT_EQ(j["casters"]["excluded"], json::array());
 
@@ -319,6 +321,28 @@ TEST(Presets, APresetRecordsItsSceneAndCameraAndOldPresetsLoadUnchanged) {
     EXPECT_FALSE(b.settings);
     ASSERT_FALSE(b.errors.empty());
     EXPECT_TRUE(contains(b.errors.front(), "scene: expected a string")) << b.errors.front();
+}
+
+// Presets written before lights had a size and the reference a ray count: no warning, hard lights (size 0) and the
+// default 256 rays, every other value as saved.
+TEST(Presets, PresetsWithoutLightSizesLoadAsHardLights) {
+    Settings s = awkwardSettings();
+    s.lights.push_back(LightSettings{});
+    s.lights[1].type = LightType::Point;
+    s.lights[0].size = s.lights[1].size = 0.0f;
+    s.reference = ReferenceSettings{};
+    json old = presetToJson(s, "old");
+    for (json& light : old["lights"]) {
+        ASSERT_TRUE(light.contains("size"));
+        light.erase("size");
+    }
+    ASSERT_EQ(old.erase("reference"), 1u);
+    const PresetLoadResult r = presetFromJson(old);
+    ASSERT_TRUE(r.settings) << joinLines(r.errors);
+    EXPECT_TRUE(r.warnings.empty()) << joinLines(r.warnings);
+    EXPECT_EQ(*r.settings, s);
+    EXPECT_EQ(r.settings->lights[1].size, 0.0f);
+    EXPECT_EQ(r.settings->reference.softRays, 256);
 }
 
 TEST(Presets, OnAnotherSceneTheCameraAutoFramesAndSaysSo) {

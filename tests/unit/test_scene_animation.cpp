@@ -16,6 +16,8 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <tuple>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -243,4 +245,53 @@ TEST(SceneAnimation, ThePresetRecordsTheAnimationAndTheTime) {
     EXPECT_EQ(settings.animation.play, "2");
     EXPECT_NE(applySettingOverride(settings, "animation.play=\"\"").find("animation.play"), std::string::npos);
     EXPECT_NE(applySettingOverride(settings, "animation.time=-1").find("animation.time"), std::string::npos);
+}
+
+TEST(SceneAnimation, LightsAndCamerasFollowTheirAnimatedNode) {
+    // animated_boxes with a spot light and a camera under Spinner (translated 1 along its z, scaled 0.5 there), so
+    // Spin's turn about y moves both and turns where they look.
+    std::ifstream in(kScenes + "animated_boxes.gltf");
+    nlohmann::json doc = nlohmann::json::parse(in);
+    const std::size_t spinner = 4;
+    ASSERT_EQ(doc["nodes"][spinner]["name"], "Spinner");
+    doc["nodes"].push_back({{"name", "Lamp"}, {"translation", {0, 0, 1}},
+                            {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
+    doc["nodes"].push_back({{"name", "Eye"}, {"translation", {0, 0, 1}}, {"camera", 0}});
+    doc["nodes"][spinner]["children"] = {doc["nodes"].size() - 2, doc["nodes"].size() - 1};
+    doc["extensionsUsed"] = {"KHR_lights_punctual"};
+    doc["extensions"] = {{"KHR_lights_punctual",
+                          {{"lights", {{{"name", "lamp"}, {"type", "spot"}, {"spot", {{"outerConeAngle", 0.5}}}}}}}}};
+    doc["cameras"] = {{{"name", "eye"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
+    const std::string path = ::testing::TempDir() + "animated_lamp.gltf";
+    std::ofstream(path) << doc.dump();
+    const Scene rest = load(path);
+    ASSERT_EQ(rest.lights.size(), 1u);
+    ASSERT_EQ(rest.cameras.size(), 1u);
+    EXPECT_EQ(rest.lights[0].node, nodeNamed(rest, "Lamp"));
+    EXPECT_EQ(rest.cameras[0].node, nodeNamed(rest, "Eye"));
+    expectNear(glm::dvec3(rest.lights[0].position), {6, 2, -5.5}, "rest lamp");
+    expectNear(glm::dvec3(rest.lights[0].direction), {0, 0, -1}, "rest lamp direction");
+
+    const double h = std::sqrt(0.5);
+    for (const auto& [time, offset, forward] :
+         {std::tuple{1.0, glm::dvec3(0.5, 0, 0), glm::dvec3(-1, 0, 0)},                   // a quarter turn
+          std::tuple{0.5, glm::dvec3(0.5 * h, 0, 0.5 * h), glm::dvec3(-h, 0, -h)}}) {   // halfway: an eighth
+        Scene scene = load(path);
+        AnimationSettings a;
+        a.play = "Spin";
+        a.time = float(time);
+        ASSERT_EQ(poseScene(scene, a), "");
+        const std::string at = "t = " + std::to_string(time);
+        expectNear(glm::dvec3(scene.lights[0].position), glm::dvec3(6, 2, -6) + offset, ("lamp at " + at).c_str());
+        expectNear(glm::dvec3(scene.lights[0].direction), forward, ("lamp direction at " + at).c_str());
+        expectNear(scene.cameras[0].position, glm::dvec3(6, 2, -6) + offset, ("eye at " + at).c_str());
+        expectNear(scene.cameras[0].forward, forward, ("eye forward at " + at).c_str());
+    }
+    // "none": the file's pose again.
+    Scene none = load(path);
+    AnimationSettings still;
+    still.play = "none";
+    still.time = 1.0f;
+    ASSERT_EQ(poseScene(none, still), "");
+    expectNear(glm::dvec3(none.lights[0].position), {6, 2, -5.5}, "none");
 }

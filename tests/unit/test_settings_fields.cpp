@@ -59,7 +59,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 51u);  // every tunable of Settings: 18 global, 33 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 61u);  // every tunable of Settings: 27 global, 34 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -210,7 +210,7 @@ TEST(SettingsFields, NonFiniteNumbersAreRefused) {
 TEST(SettingsFields, EnumsRefuseUnknownNames) {
     Settings s;
     std::string e = findSettingsField("filter.kind")->set(s, json("gaussian"));
-    EXPECT_EQ(e, "filter.kind: unknown value \"gaussian\" (allowed one of point, hardware2x2, pcf, poisson)");
+    EXPECT_EQ(e, "filter.kind: unknown value \"gaussian\" (allowed one of point, hardware2x2, pcf, poisson, vsm, evsm2, evsm4, msm)");
     e = findSettingsField("shadow.depthFormat")->set(s, json("D32F"));  // names are case-sensitive
     EXPECT_EQ(e, "shadow.depthFormat: unknown value \"D32F\", did you mean \"d32f\"? (allowed one of d16, d24, d32f)");
     EXPECT_TRUE(s == Settings{});
@@ -289,8 +289,8 @@ TEST(SettingsOverride, UnknownKeysSuggestCloseOnesOrListAll) {
     e = applySettingOverride(s, "depthBias=3");  // group forgotten
     EXPECT_TRUE(contains(e, "shadow.depthBias")) << e;
     e = applySettingOverride(s, "shadow.bias=3");  // part of a name
-    EXPECT_TRUE(contains(e, "did you mean shadow.depthBias, shadow.slopeScaledDepthBias, shadow.depthBiasClamp, "
-                            "shadow.receiverPlaneBias?"))
+    EXPECT_TRUE(contains(e, "did you mean filter.momentBias, shadow.depthBias, shadow.slopeScaledDepthBias, "
+                            "shadow.depthBiasClamp, shadow.receiverPlaneBias?"))
         << e;
     e = applySettingOverride(s, "filter.Kind=pcf");  // wrong case
     EXPECT_TRUE(contains(e, "filter.kind")) << e;
@@ -336,6 +336,18 @@ TEST(SettingsValidate, CrossFieldRules) {
     s.lights[0].projection.farPlane = 10.0f;
     EXPECT_EQ(s.validate().size(), 1u);
     s.lights[0].projection.farPlane = 10.5f;
+    EXPECT_TRUE(s.validate().empty());
+
+    // A light's size: a radius up to 1e6 for spot and point lights, an angle up to 90 degrees for a directional one.
+    s.lights[0].size = 120.0f;
+    problems = s.validate();
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0], "lights.0.size: 120 degrees is too wide for a directional light's angular diameter "
+                           "(allowed [0, 90] for a directional light; a spot or point light's radius up to 1e6)");
+    s.lights[0].type = LightType::Point;
+    EXPECT_TRUE(s.validate().empty()) << "a point light's radius of 120";
+    s.lights[0].type = LightType::Directional;
+    s.lights[0].size = 90.0f;
     EXPECT_TRUE(s.validate().empty());
 
     s.camera.position = s.camera.target = glm::vec3(1.0f);

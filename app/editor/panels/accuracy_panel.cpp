@@ -53,6 +53,45 @@ void facingAwayNote(EditorState& state, const AccuracyCounts& c) {
     state.controls.recordLastItem("accuracy.facingAway");
 }
 
+// A light of size > 0: its numbers against the soft reference (metrics version 3), under the light they describe.
+void softNumbers(EditorState& state, const SoftAccuracy& s) {
+    if (!s.measured) return;
+    const SoftCounts& c = s.counts;
+    const PenumbraWidths& w = s.penumbra;
+    ImGui::Separator();
+    noteText("Light " + std::to_string(s.light) + format(", size %.3g ", s.size) + s.sizeUnit +
+             (s.sizeUnit == "degrees" ? " (angular diameter)" : " (radius)") + ", " + std::to_string(s.rays) +
+             " rays per pixel: version 3, against the share of rays that reach the light (above: version 2, one "
+             "ray to its centre)");
+    state.controls.recordLastItem("accuracy.soft.light");
+    if (!ImGui::BeginTable("soft", 2, ImGuiTableFlags_SizingFixedFit)) return;
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+    row("wrong pixels", format("%.3f %%", s.wrongPercent) + "  (" + grouped(c.wrong) + " of " + grouped(c.measured) + ")",
+        "|S - V| >= 0.5 against the soft V, over every measured pixel");
+    state.controls.recordLastItem("accuracy.soft.wrong");
+    row("mean error", format("%.4f", s.meanError), "mean |S - V| against the soft V over every measured pixel");
+    row("bleeding", format("%.3f %%", s.bleedingPercent) + "  (" + grouped(c.bleeding) + " of " + grouped(c.umbra) +
+                        " umbra)",
+        "pixels in the true umbra (V = 0: no ray reaches the light) that the technique lights (S > 1/255): the VSM leak");
+    state.controls.recordLastItem("accuracy.soft.bleeding");
+    row("over-darkening", format("%.3f %%", s.overDarkeningPercent) + "  (" + grouped(c.overDarkened) + " of " +
+                              grouped(c.fullyLit) + " fully lit)",
+        "pixels every ray of which reaches the light (V = 1) that the technique darkens (S < 1 - 1/255): acne, or a "
+        "blur that spread a shadow");
+    row("penumbra width error", format("%+.3g world = ", w.errorWorld) + format("%+.2f texels", w.errorTexels),
+        "the technique's 0.1..0.9 transition width across true edges minus the reference's (median over profiles "
+        "across the reference's 0.5 contour; docs/accuracy.md says how a width is measured on pixels)");
+    state.controls.recordLastItem("accuracy.soft.penumbra");
+    row("penumbra widths", format("technique %.3g, ", w.techniqueWorld) + format("reference %.3g world", w.referenceWorld) +
+                               " (" + grouped(c.profiles) + " profiles)",
+        "the 0.1..0.9 widths themselves, medians over the same profiles");
+    row("soft reference", c.measured && s.tracedRays == 0 ? std::string("reused")
+                                                          : grouped(s.tracedRays) + format(" rays in %.1f ms", s.traceMs),
+        "the soft reference's rays (reused when the light, its size, the ray count and the view are unchanged)");
+    ImGui::EndTable();
+}
+
 void numbersTab(EditorState& state, const AccuracyReport& r) {
     const AccuracyCounts& c = r.counts;
     if (!r.coarseMapWarning.empty()) {
@@ -84,6 +123,7 @@ void numbersTab(EditorState& state, const AccuracyReport& r) {
         ImGui::EndTable();
     }
     facingAwayNote(state, c);
+    softNumbers(state, r.soft);
 }
 
 // Why the pixels are wrong: each cause's share of what it explains (acne of acne, leak of leak, wrong of wrong; see
@@ -164,7 +204,10 @@ void costTab(const AccuracyState& a, const AccuracyReport& r) {
     }
     if (!r.live && ImGui::BeginTable("cost", 2, ImGuiTableFlags_SizingFixedFit)) {
         row("total", format("%.1f ms", k.totalMs) + format(" (job %.2f s)", a.reportSeconds));
-        row("BVH", k.bvhReused ? "reused" : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
+        row("BVH", k.bvhReused    ? "reused"
+                   : k.bvhUpdated ? format("updated in %.2f ms", k.bvhUpdateMs) + " (" +
+                                        grouped(k.instancesMoved) + " instances moved)"
+                                  : format("%.1f ms", k.bvhBuildMs) + " (" + grouped(k.triangles) + " tris)");
         row("rays", k.referenceReused ? "reused (" + grouped(k.rays) + ")"
                                       : grouped(k.rays) + format(" in %.1f ms", k.traceMs));
         row("rays/s", k.referenceReused ? "-" : format("%.2f M", k.raysPerSecond * 1e-6) +
@@ -356,6 +399,14 @@ void drawAccuracyPanel(PanelContext& ctx) {
         ImGui::SetTooltip("Search DepthBias, slope, normal offset (and cull mode when culled casters cause wrong "
                           "pixels) for acne <= %.1f %% with the fewest wrong pixels, and apply it",
                           a.maxAcnePercent);
+    // The soft reference's rays per pixel (reference.softRays): read only for a light of size > 0.
+    int softRays = state.settings.reference.softRays;
+    ImGui::SetNextItemWidth(110.0f);
+    if (ImGui::InputInt("soft rays", &softRays, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue))
+        state.edit("reference.softRays", softRays);
+    state.controls.recordLastItem(controlName("reference.softRays"));
+    fieldHelp(state, "reference.softRays");
+    showFieldError(state, "reference.softRays");
     ImGui::EndDisabled();
     ImGui::SameLine();
     ImGui::BeginDisabled(!a.running);

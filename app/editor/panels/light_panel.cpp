@@ -1,5 +1,5 @@
-// Light: the selected light's type, direction as azimuth + elevation, spot / point position, cone and range, colour
-// and intensity; the animation preview.
+// Light: the selected light's type, direction as azimuth + elevation, spot / point position, cone and range, its size
+// (the soft reference's), colour and intensity; the animation preview.
 #include "editor/field_widgets.h"
 #include "editor/light_angles.h"
 #include "editor/panels/panel_registry.h"
@@ -53,6 +53,12 @@ void drawLightPanel(PanelContext& ctx) {
         // The label stays short (the sidebar is narrow); the value says what 0 means.
         dragFloatField(state, key("range").c_str(), "range", 0.05f, light.range == 0.0f ? "0 (no limit)" : "%.2f");
     }
+    // The soft reference's light size: an angle for a directional light, a disc's radius for spot and point lights.
+    const char* sizeFormat = light.size == 0.0f                      ? "0 (hard)"
+                             : light.type == LightType::Directional ? "%.2f deg diameter"
+                                                                    : "%.3f radius";
+    dragFloatField(state, key("size").c_str(), "size", light.type == LightType::Directional ? 0.01f : 0.005f,
+                   sizeFormat);
     glm::vec3 color = light.color;
     const bool recoloured = ImGui::ColorEdit3("colour", &color.x, ImGuiColorEditFlags_Float);
     vec3Control(state, key("color"), recoloured, color);

@@ -3,6 +3,7 @@
 // Above it, once a line is Ctrl+dragged in the viewport, the depth profile along it (depth_profile.h).
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "editor/view_choice.h"
 #include "probe/probe_description.h"
 
 #include <algorithm>
@@ -63,11 +64,22 @@ void drawProfileSection(EditorState& state) {
     ImGui::TextWrapped("grey: map texel - bias; below the orange line = shadowed");
 }
 
+// Which light and view the report's numbers describe: the view chosen, or (all views) the one holding the pixel and,
+// in a cascade's blend band, the cascade it is mixed with.
+std::string describedView(const PixelProbeReport& r) {
+    std::string text = "numbers of " + r.viewName;
+    if (r.viewChosen) return text + " (the view chosen above)";
+    text += " (all views: the one holding this pixel";
+    for (const PixelProbeReport& next : r.blend) text += ", blended with " + next.cascade;
+    return text + ")";
+}
+
 }  // namespace
 
 void drawProbePanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
-    const ProbeState& p = state.probe;
+    ProbeState& p = state.probe;
+    drawViewChoice(state, p.view, state.selectedLight, "probe.view");
     drawProfileSection(state);
     if (!p.report) {
         ImGui::TextWrapped("Click a pixel in the viewport (or hold P over it) to see why it is lit or shadowed: its "
@@ -88,6 +100,10 @@ void drawProbePanel(PanelContext& ctx) {
     ImGui::TextWrapped("pixel %d,%d: %s", r.x, r.y, probeSummary(r).c_str());
     ImGui::PopStyleColor();
     state.controls.recordLastItem("probe.summary");
+    if (r.viewCount >= 2) {  // a one-view light: the summary already names it
+        ImGui::TextWrapped("%s", describedView(r).c_str());
+        state.controls.recordLastItem("probe.describedView");
+    }
     if (ImGui::SmallButton("Save JSON")) ctx.actions.saveProbeJson();
     state.controls.recordLastItem("probe.saveJson");
     if (ImGui::IsItemHovered())

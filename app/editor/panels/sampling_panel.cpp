@@ -1,8 +1,49 @@
-// Sampling: address mode with border depth, filter kind with kernel size or Poisson radius.
+// Sampling: address mode with border depth, the filter technique and the keys of the chosen one (its own list:
+// shading/filters/).
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
+
+#include <cstring>
 
 namespace shadowlab::editor {
+
+namespace {
+
+// A comfortable slider range per float key (Ctrl+click types any value the key accepts).
+struct SliderRange {
+    const char* key;
+    const char* label;
+    float lo, hi;
+    const char* format;
+    ImGuiSliderFlags flags;
+};
+constexpr SliderRange kSliders[] = {
+    {"filter.poissonRadius", "radius (texels)", 0.5f, 8.0f, "%.2f", 0},
+    {"filter.blurWidth", "blur width", 1.0f, 31.0f, "%.2f", 0},
+    {"filter.minVariance", "min variance", 0.0f, 1e-3f, "%.2e", ImGuiSliderFlags_Logarithmic},
+    {"filter.bleedReduction", "bleeding reduction", 0.0f, 0.95f, "%.2f", 0},
+    {"filter.positiveExponent", "exponent c+", 0.0f, 42.0f, "%.2f", 0},
+    {"filter.negativeExponent", "exponent c-", 0.0f, 42.0f, "%.2f", 0},
+    {"filter.momentBias", "moment bias", 0.0f, 1e-3f, "%.2e", ImGuiSliderFlags_Logarithmic},
+};
+
+void techniqueKey(EditorState& state, const char* key) {
+    for (const SliderRange& s : kSliders)
+        if (std::strcmp(s.key, key) == 0) {
+            sliderFloatField(state, key, s.label, s.lo, s.hi, s.format, s.flags);
+            return;
+        }
+    const std::string label = std::strcmp(key, "filter.kernel") == 0 ? "kernel (NxN)" : std::string(key).substr(7);
+    const SettingsField* field = findSettingsField(key);
+    if (field && field->kind == SettingsFieldKind::Float)
+        dragFloatField(state, key, label.c_str(), 0.01f);  // a new technique's key without a slider range above
+    else
+        comboField(state, key, label.c_str());  // enums and keys with a list of integers
+}
+
+}  // namespace
 
 void drawSamplingPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
@@ -11,9 +52,9 @@ void drawSamplingPanel(PanelContext& ctx) {
     if (state.settings.sampler.addressMode == AddressMode::ClampToBorder)
         sliderFloatField(state, "sampler.borderDepth", "border depth", 0.0f, 1.0f, "%.3f");
     comboField(state, "filter.kind", "filter");
-    if (state.settings.filter.kind == FilterKind::Pcf) comboField(state, "filter.kernel", "kernel (NxN)");
-    if (state.settings.filter.kind == FilterKind::Poisson)
-        sliderFloatField(state, "filter.poissonRadius", "radius (texels)", 0.5f, 8.0f, "%.2f");
+    for (const char* key : filterTechnique(state.settings.filter.kind).keys) techniqueKey(state, key);
+    for (const std::string& warning : state.stats.warnings)
+        if (warning.rfind("filter.", 0) == 0) warningText(warning);  // the technique's clamps name their key
     ImGui::PopItemWidth();
 }
 

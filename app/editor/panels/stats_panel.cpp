@@ -2,6 +2,7 @@
 // triangles, casters and shadow-map memory; a table of the shadow views (ran or skipped, why, memory, time).
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "shading/filters/filter_technique.h"
 #include "editor/view_rows.h"
 #include "shadow/shadow_map.h"
 
@@ -116,6 +117,11 @@ void drawStatsPanel(PanelContext& ctx) {
     const FrameStats& shadow = state.lastShadowPass;
     passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
     passLine("main pass", s.mainPass, s.mainPass, clock);
+    // A moments technique's own cost lines: the conversion and the blur (they run only when a view's map changed).
+    if (filterTechnique(state.settings.filter.kind).moments) {
+        passLine("moments", s.momentsPass, s.momentsPass, clock);
+        passLine("blur", s.blurPass, s.blurPass, clock);
+    }
     if (s.depthBoundsPass.ran) {
         passLine("depth bounds", s.depthBoundsPass, s.depthBoundsPass, clock);
         if (s.seenDepths && s.seenDepths->farthest >= s.seenDepths->nearest)
@@ -124,8 +130,9 @@ void drawStatsPanel(PanelContext& ctx) {
     ImGui::Text("frame        %7.2f ms wall", state.lastFrameMs);
     noteText("timing: " + s.timingSource);
     ImGui::TextWrapped("triangles: %zu scene, %zu in the shadow pass", s.sceneTriangles, shadow.shadowTriangles);
-    ImGui::TextWrapped("casters: %d drawn, %d outside the light, %d alpha-tested", shadow.castersDrawn,
-                       shadow.castersSkipped, shadow.alphaTestedCasters);
+    ImGui::TextWrapped("casters: %d drawn in %d draw calls, %d outside the light, %d alpha-tested",
+                       shadow.castersDrawn, shadow.shadowDrawCalls, shadow.castersSkipped, shadow.alphaTestedCasters);
+    if (s.sceneUpload.ran) noteText("scene: " + s.sceneUpload.reason);
     ImGui::TextWrapped("shadow map: %d² %s, %.1f MiB", s.shadowMapResolution, depthFormatName(s.shadowMapFormat),
                        double(s.shadowMapBytes) / (1024.0 * 1024.0));
     noteText("frames rendered " + std::to_string(state.renderedFrames) + ", idle frames (no pass) " +

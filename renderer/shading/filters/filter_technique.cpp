@@ -1,13 +1,43 @@
 #include "shading/filters/filter_technique.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace shadowlab {
 
+const std::vector<const FilterTechnique*>& filterTechniques() {
+    static const std::vector<const FilterTechnique*> table = {
+        &pointFilter(), &hardware2x2Filter(), &pcfFilter(), &poissonFilter(),
+        &vsmFilter(),   &evsm2Filter(),       &evsm4Filter(), &msmFilter(),
+    };
+    return table;
+}
+
 const FilterTechnique& filterTechnique(FilterKind kind) {
-    for (const FilterTechnique* technique : {&pointFilter(), &hardware2x2Filter(), &pcfFilter(), &poissonFilter()})
+    for (const FilterTechnique* technique : filterTechniques())
         if (technique->kind == kind) return *technique;
     throw std::logic_error("no filter technique for FilterKind " + std::to_string(int(kind)));
 }
+
+double blurTexels(const FilterSettings& filter, double texelWorldSize, bool* clamped) {
+    double texels = filter.blurWidth;
+    if (filter.blurUnit == BlurUnit::World) texels = texelWorldSize > 0.0 ? filter.blurWidth / texelWorldSize : 1.0;
+    if (clamped) *clamped = texels > kMaxBlurTexels;
+    return std::clamp(texels, 1.0, kMaxBlurTexels);
+}
+
+std::vector<float> blurWeights(double widthTexels) {
+    const double half = (std::max(widthTexels, 1.0) - 1.0) / 2.0;  // taps beyond the centre, fractional
+    const int r = int(std::ceil(half - 1e-9));
+    std::vector<float> w(std::size_t(2 * r + 1), 1.0f);
+    if (r > 0 && half < double(r)) w.front() = w.back() = float(half - double(r - 1));
+    float sum = 0.0f;
+    for (float v : w) sum += v;
+    for (float& v : w) v /= sum;
+    return w;
+}
+
+float maxWarpExponent(int momentBits) { return momentBits == 16 ? 5.54f : 42.0f; }
 
 }  // namespace shadowlab

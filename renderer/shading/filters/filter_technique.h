@@ -1,15 +1,38 @@
 #pragma once
-// A shadow filter technique, in one place: how its comparisons are filtered by the sampler, the taps it reads
-// (main.frag.glsl gets them as #defines, the pixel probe recomputes S from the same list), the uniform that scales
-// them, and how far from the lookup it reads (the accuracy metrics' k). One file per technique under filters/;
-// adding one is that file, a FilterKind value, its key name and a line in filter_technique.cpp's table.
+// A shadow filter technique, in one place: the map storage it reads (depth, or 2 / 4 moments), the passes it needs
+// after the shadow pass (moments and blur), its GLSL lookup file, its CPU mirror (the pixel probe recomputes S with
+// it), its keys (the editor shows them only while it is chosen; sweep and tuner vary them through the key table) and
+// how far from the lookup it reads (the accuracy metrics' k). One file per technique under filters/; adding one is
+// that file, its GLSL file, a FilterKind value and a line in filter_technique.cpp's table (the filter.kind key's
+// names come from that table).
 #include "settings/settings.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 
+#include <string>
 #include <vector>
 
 namespace shadowlab {
+
+// A moments technique: its storage, its encoding (the moments pass) and its lookup, in GLSL (its own file under
+// shaders/shadow/techniques/: encodeMoments, momentShadow) and mirrored here in float for the probe.
+struct MomentTechnique {
+    int channels = 2;          // 2 (RG) or 4 (RGBA)
+    bool unorm16 = false;      // 16-bit storage is unsigned normalized (MSM's optimized quantization), else half float
+    const char* glslFile;      // "shadow/techniques/vsm.glsl"
+    // uTechnique, the one vec4 its GLSL reads (exponents, min variance, bleeding reduction, moment bias...), from the
+    // settings after the technique's clamps.
+    glm::vec4 (*uniforms)(const FilterSettings& filter);
+    // The moments of one texel's depth z (in [0, 1], near 0: reversed-Z maps are flipped first), as stored.
+    glm::vec4 (*encode)(float z, const glm::vec4& uniforms);
+    // The shadow factor of a receiver at depth z given the filtered stored moments.
+    float (*shadow)(const glm::vec4& moments, float z, const glm::vec4& uniforms);
+    // The lookup in words (mean, variance, the bound...) for the probe.
+    std::string (*explain)(const glm::vec4& moments, float z, const glm::vec4& uniforms);
+    // What the settings ask for that the storage cannot hold, each naming its key and what is used instead ("" none).
+    std::vector<std::string> (*clamps)(const FilterSettings& filter) = nullptr;
+};
 
 struct FilterTechnique {
     FilterKind kind;
@@ -27,14 +50,36 @@ struct FilterTechnique {
     // Whether shadow.receiverPlaneBias applies: taps away from the lookup (PCF, Poisson) compare the receiver plane's
     // depth there. A single centred tap has nothing to tilt.
     bool receiverPlane = false;
+    // Its keys besides filter.kind (the editor shows them only while it is chosen).
+    std::vector<const char*> keys = {};
+    // Set for a moments technique: the map is converted to moments and blurred after the shadow pass.
+    const MomentTechnique* moments = nullptr;
 };
 
+// The table: every technique, in filter.kind's order.
+const std::vector<const FilterTechnique*>& filterTechniques();
 const FilterTechnique& filterTechnique(FilterKind kind);
+
+// The moments techniques' blur width in a view's texels (filter.blurUnit world: divided by the view's texel world
+// size), within [1, kMaxBlurTexels]; `clamped` says when the width asked for was beyond it.
+inline constexpr double kMaxBlurTexels = 63.0;
+double blurTexels(const FilterSettings& filter, double texelWorldSize, bool* clamped = nullptr);
+// The box blur's weights for a width in texels: taps -R..R, the outermost pair weighted by the width's fraction
+// (so the width is continuous), normalized. The moments pass (GLSL) and its CPU mirror use these numbers.
+std::vector<float> blurWeights(double widthTexels);
+
+// The largest exponent c whose warped second moment exp(2c) a moments storage holds: fp16's max 65504 (ln 11.09)
+// gives 5.54, fp32's 3.4e38 (ln 88.7) 44.3, of which the usual 42 is used.
+float maxWarpExponent(int momentBits);
 
 // The techniques, one per file.
 const FilterTechnique& pointFilter();
 const FilterTechnique& hardware2x2Filter();
 const FilterTechnique& pcfFilter();
 const FilterTechnique& poissonFilter();
+const FilterTechnique& vsmFilter();
+const FilterTechnique& evsm2Filter();
+const FilterTechnique& evsm4Filter();
+const FilterTechnique& msmFilter();
 
 }  // namespace shadowlab

@@ -16,7 +16,7 @@ const FilterTechnique& pcfFilter() {
         [](const FilterSettings&) { return 1.0f; },
         [](const FilterSettings& filter) { return double(filter.kernel - 1) / 2.0; },
         [](const FilterSettings& filter) { return filter.kernel / 2; },
-        /*receiverPlane=*/true};
+        /*receiverPlane=*/true, {"filter.kernel"}};
     return technique;
 }
 

@@ -13,7 +13,7 @@ const FilterTechnique& poissonFilter() {
         [](const FilterSettings& filter) { return filter.poissonRadius; },
         // One more texel: each tap's bilinear comparison reads the next texel too.
         [](const FilterSettings& filter) { return double(filter.poissonRadius) + 1.0; },
-        /*gridRadius=*/nullptr, /*receiverPlane=*/true};
+        /*gridRadius=*/nullptr, /*receiverPlane=*/true, {"filter.poissonRadius"}};
     return technique;
 }
 

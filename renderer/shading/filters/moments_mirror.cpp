@@ -1,0 +1,50 @@
+#include "shading/filters/moments_mirror.h"
+
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowlab {
+
+glm::vec4 storedMoments(const glm::vec4& value, const MomentTechnique& technique, int momentBits) {
+    glm::vec4 out = value;
+    for (int c = 0; c < 4; ++c) {
+        if (c >= technique.channels) out[c] = 0.0f;  // RG storage reads back 0 in the missing channels
+        else if (momentBits == 32) continue;
+        else if (technique.unorm16) out[c] = std::round(std::clamp(value[c], 0.0f, 1.0f) * 65535.0f) / 65535.0f;
+        else out[c] = glm::unpackHalf1x16(glm::packHalf1x16(value[c]));
+    }
+    return out;
+}
+
+std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resolution, bool reversedZ,
+                                      const FilterSettings& filter, double blurWidthTexels) {
+    const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
+    const glm::vec4 uniforms = technique.uniforms(filter);
+    const int bits = filter.momentBits;
+    std::vector<glm::vec4> moments(depth.size());
+    for (std::size_t i = 0; i < depth.size(); ++i)
+        moments[i] = storedMoments(technique.encode(reversedZ ? 1.0f - depth[i] : depth[i], uniforms), technique, bits);
+    const std::vector<float> weights = blurWeights(blurWidthTexels);
+    const int r = int(weights.size() / 2);
+    if (r == 0) return moments;
+    const auto at = [resolution](int x, int y) { return std::size_t(y) * std::size_t(resolution) + std::size_t(x); };
+    std::vector<glm::vec4> pass(moments.size());
+    for (int dir = 0; dir < 2; ++dir) {
+        for (int y = 0; y < resolution; ++y)
+            for (int x = 0; x < resolution; ++x) {
+                glm::vec4 sum(0.0f);
+                for (int i = -r; i <= r; ++i) {
+                    const int sx = dir == 0 ? std::clamp(x + i, 0, resolution - 1) : x;
+                    const int sy = dir == 1 ? std::clamp(y + i, 0, resolution - 1) : y;
+                    sum += weights[std::size_t(std::abs(i) + r)] * moments[at(sx, sy)];
+                }
+                pass[at(x, y)] = storedMoments(sum, technique, bits);
+            }
+        std::swap(moments, pass);
+    }
+    return moments;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,241 @@
+#include "shadow/moments_pass.h"
+
+#include "gl/gl_errors.h"
+#include "gl/program.h"
+#include "shading/filters/filter_technique.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+
+namespace shadowlab {
+
+namespace {
+
+std::uint64_t nextStorageGeneration() {
+    static std::uint64_t generation = 0;
+    return ++generation;
+}
+
+const char* imageFormatName(GLenum format) {
+    switch (format) {
+        case GL_RG16F: return "rg16f";
+        case GL_RG32F: return "rg32f";
+        case GL_RGBA16F: return "rgba16f";
+        case GL_RGBA16: return "rgba16";
+        default: return "rgba32f";
+    }
+}
+
+std::string joined(const std::vector<std::string>& items) {
+    std::string out;
+    for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+    return out;
+}
+
+}  // namespace
+
+GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits) {
+    const MomentTechnique& m = *technique.moments;
+    if (momentBits == 16) return m.channels == 2 ? GL_RG16F : m.unorm16 ? GL_RGBA16 : GL_RGBA16F;
+    return m.channels == 2 ? GL_RG32F : GL_RGBA32F;
+}
+
+struct MomentsPass::Storage {
+    gl::Texture texture;    // GL_TEXTURE_2D_ARRAY or GL_TEXTURE_CUBE_MAP_ARRAY of moments
+    gl::Texture depthView;  // the depth array seen as 2D layers (a cube-map array's faces too), for texelFetch
+    GLuint depthTexture = 0;
+    std::uint64_t depthGeneration = 0;
+    GLenum format = 0;
+    int resolution = 0, layers = 0;
+    std::uint64_t generation = 0;
+};
+
+MomentsPass::MomentsPass() = default;
+MomentsPass::~MomentsPass() = default;
+
+void MomentsPass::release() {
+    storage_.clear();
+    current_.clear();
+    temp_.reset();
+    tempResolution_ = 0;
+}
+
+GLuint MomentsPass::texture(const MapGroup& group) const {
+    const auto it = storage_.find(group);
+    return it == storage_.end() ? 0 : it->second.texture.id();
+}
+
+void MomentsPass::configureSampler(const FilterSettings& filter, const SamplerSettings& settings) {
+    if (!sampler_) sampler_ = gl::createSampler();
+    const GLuint s = sampler_.id();
+    GLint wrap = GL_CLAMP_TO_BORDER;
+    if (settings.addressMode == AddressMode::Wrap) wrap = GL_REPEAT;
+    if (settings.addressMode == AddressMode::ClampToEdge) wrap = GL_CLAMP_TO_EDGE;
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
+    glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
+    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    // Outside the map: the moments of the border depth (sampler.borderDepth, in the near-0 convention moments use).
+    const MomentTechnique& m = *filterTechnique(filter.kind).moments;
+    const glm::vec4 border = m.encode(settings.borderDepth, m.uniforms(filter));
+    glSamplerParameterfv(s, GL_TEXTURE_BORDER_COLOR, &border.x);
+}
+
+MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<MapGroup, ShadowMapArray>& arrays,
+                                   const std::vector<MomentsView>& views, PassTimer& timer) {
+    MomentsPassResult result;
+    lastConverted_ = 0;
+    const FilterTechnique& technique = filterTechnique(filter.kind);
+    const MomentTechnique& m = *technique.moments;
+    if (m.clamps) result.warnings = m.clamps(filter);
+    const GLenum format = momentInternalFormat(technique, filter.momentBits);
+    const glm::vec4 uniforms = m.uniforms(filter);
+
+    // Storage: one moments array per depth array, the same size and layers; unused groups are freed.
+    for (auto it = storage_.begin(); it != storage_.end();)
+        it = arrays.count(it->first) ? std::next(it) : storage_.erase(it);
+    for (const auto& [group, array] : arrays) {
+        Storage& s = storage_[group];
+        if (!s.texture || s.format != format || s.resolution != array.resolution() || s.layers != array.layers()) {
+            gl::Texture texture = gl::createTexture(group.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY);
+            glTextureStorage3D(texture.id(), 1, format, array.resolution(), array.resolution(), array.layers());
+            s.texture = std::move(texture);
+            s.format = format;
+            s.resolution = array.resolution();
+            s.layers = array.layers();
+            s.generation = nextStorageGeneration();
+        }
+        if (!s.depthView || s.depthTexture != array.texture() || s.depthGeneration != array.generation()) {
+            GLuint id = 0;
+            glGenTextures(1, &id);  // a view needs a name that was never bound
+            gl::Texture view(id);
+            glTextureView(view.id(), GL_TEXTURE_2D_ARRAY, array.texture(), depthInternalFormat(array.format()), 0, 1, 0,
+                          GLuint(array.layers()));
+            s.depthView = std::move(view);
+            s.depthTexture = array.texture();
+            s.depthGeneration = array.generation();
+        }
+    }
+
+    // Which views need new moments: drawn this frame, or computed from other settings or storage.
+    struct Work {
+        const MomentsView* view;
+        double blurTexels;
+        bool settingsChanged;
+    };
+    std::vector<Work> work;
+    std::vector<std::string> clampedBlur;
+    for (const MomentsView& v : views) {
+        const auto s = storage_.find(v.group);
+        if (s == storage_.end()) continue;
+        bool clamped = false;
+        const double width = blurTexels(filter, v.texelWorldSize, &clamped);
+        if (clamped) clampedBlur.push_back(v.name);
+        const Inputs inputs{filter.kind, filter.momentBits, width, uniforms, s->second.generation, v.layer};
+        const auto it = current_.find(v.id);
+        const bool current = it != current_.end() && it->second == inputs;
+        if (v.rendered || !current) work.push_back({&v, width, !current && !v.rendered});
+        current_[v.id] = inputs;
+    }
+    if (!clampedBlur.empty())
+        result.warnings.push_back("filter.blurWidth: wider than " + std::to_string(int(kMaxBlurTexels)) +
+                                  " texels in " + joined(clampedBlur) + "; " + std::to_string(int(kMaxBlurTexels)) +
+                                  " texels are used");
+    if (work.empty()) {
+        result.moments = {false, "no view was re-rendered and the moments settings are unchanged", std::nullopt};
+        result.blur = {false, result.moments.reason, std::nullopt};
+        return result;
+    }
+
+    // Programs: the conversion per technique and storage, the blur per storage format.
+    auto& convert = convertPrograms_[{filter.kind, int(format)}];
+    if (!convert)
+        convert = gl::buildProgram({{GL_COMPUTE_SHADER, "moments.comp.glsl", {}}},
+                                   {"CONVERT", std::string("MOMENT_FORMAT ") + imageFormatName(format)},
+                                   {{"alias:technique", m.glslFile}});
+    auto& blur = blurPrograms_[int(format)];
+    if (!blur) blur = gl::buildProgram({{GL_COMPUTE_SHADER, "moments.comp.glsl", {}}},
+                                       {std::string("MOMENT_FORMAT ") + imageFormatName(format)});
+
+    std::vector<std::string> reasons;
+    bool anyBlur = false;
+    timer.begin(TimedPass::Moments);
+    glUseProgram(convert.id());
+    glUniform4fv(glGetUniformLocation(convert.id(), "uTechnique"), 1, &uniforms.x);
+    glUniform1i(glGetUniformLocation(convert.id(), "uDepth"), 0);
+    for (const Work& w : work) {
+        const MomentsView& v = *w.view;
+        const Storage& s = storage_.at(v.group);
+        glBindTextureUnit(0, s.depthView.id());
+        glBindSampler(0, 0);
+        glUniform1i(glGetUniformLocation(convert.id(), "uLayer"), v.layer);
+        glUniform1i(glGetUniformLocation(convert.id(), "uReversedZ"), v.group.reversedZ ? 1 : 0);
+        glUniform1i(glGetUniformLocation(convert.id(), "uSize"), s.resolution);
+        glBindImageTexture(0, s.texture.id(), 0, GL_FALSE, v.layer, GL_WRITE_ONLY, format);
+        glDispatchCompute(GLuint((s.resolution + 7) / 8), GLuint((s.resolution + 7) / 8), 1);
+        reasons.push_back(v.name + (w.settingsChanged ? " (moments settings changed)" : " (map re-rendered)"));
+        anyBlur = anyBlur || w.blurTexels > 1.0;
+        ++lastConverted_;
+    }
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    timer.end(TimedPass::Moments);
+    result.moments = {true, joined(reasons), timer.latestMilliseconds(TimedPass::Moments)};
+
+    if (!anyBlur) {
+        result.blur = {false, "filter.blurWidth is 1 texel: no blur", std::nullopt};
+        return result;
+    }
+    timer.begin(TimedPass::Blur);
+    glUseProgram(blur.id());
+    for (const Work& w : work) {
+        const std::vector<float> weights = blurWeights(w.blurTexels);
+        const int r = int(weights.size() / 2);
+        if (r == 0) continue;
+        const MomentsView& v = *w.view;
+        const Storage& s = storage_.at(v.group);
+        if (!temp_ || tempResolution_ != s.resolution || tempFormat_ != format) {
+            temp_ = gl::createTexture(GL_TEXTURE_2D);
+            glTextureStorage2D(temp_.id(), 1, format, s.resolution, s.resolution);
+            tempResolution_ = s.resolution;
+            tempFormat_ = format;
+        }
+        glUniform1fv(glGetUniformLocation(blur.id(), "uWeights"), GLsizei(r + 1), weights.data() + r);
+        glUniform1i(glGetUniformLocation(blur.id(), "uRadius"), r);
+        glUniform1i(glGetUniformLocation(blur.id(), "uSize"), s.resolution);
+        const GLuint groups = GLuint((s.resolution + 7) / 8);
+        // Horizontal: the layer into the temporary; vertical: back into the layer.
+        glBindImageTexture(1, s.texture.id(), 0, GL_FALSE, v.layer, GL_READ_ONLY, format);
+        glBindImageTexture(0, temp_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+        glUniform2i(glGetUniformLocation(blur.id(), "uDirection"), 1, 0);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glBindImageTexture(1, temp_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, format);
+        glBindImageTexture(0, s.texture.id(), 0, GL_FALSE, v.layer, GL_WRITE_ONLY, format);
+        glUniform2i(glGetUniformLocation(blur.id(), "uDirection"), 0, 1);
+        glDispatchCompute(groups, groups, 1);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    timer.end(TimedPass::Blur);
+    char width[64];
+    std::snprintf(width, sizeof width, "%g", double(filter.blurWidth));
+    result.blur = {true,
+                   std::string("filter.blurWidth ") + width +
+                       (filter.blurUnit == BlurUnit::World ? " world units" : " texels") + ": " + joined(reasons),
+                   timer.latestMilliseconds(TimedPass::Blur)};
+    glUseProgram(0);
+    return result;
+}
+
+std::vector<glm::vec4> MomentsPass::read(const MapGroup& group, int layer, int x0, int y0, int w, int h) const {
+    std::vector<glm::vec4> texels(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)));
+    const auto it = storage_.find(group);
+    if (it == storage_.end() || texels.empty()) return texels;
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTextureSubImage(it->second.texture.id(), 0, x0, y0, layer, w, h, 1, GL_RGBA, GL_FLOAT,
+                         GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
+    return texels;
+}
+
+}  // namespace shadowlab

@@ -1,0 +1,89 @@
+#pragma once
+// The moments pass of a moments technique (VSM, EVSM, MSM; shading/filters/): after the shadow pass, each view whose
+// depth map changed (or whose moments settings changed) is converted to the technique's moments and blurred by a
+// separable box of filter.blurWidth, into moments storage of its own, one array per map group (2D layers, cascades,
+// point lights' cube faces). Nothing runs for a depth technique, and nothing for views whose moments are current.
+// Compute shaders: shaders/moments.comp.glsl; its CPU mirror: shading/filters/moments_mirror.h.
+#include "frame/frame_stats.h"
+#include "gl/gl_objects.h"
+#include "settings/settings.h"
+#include "shadow/shadow_map.h"
+#include "timing/pass_timer.h"
+#include "views/map_group.h"
+#include "views/shadow_view.h"
+
+#include <glm/vec4.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace shadowlab {
+
+struct FilterTechnique;
+
+// A view the main pass reads this frame: where its depth is and whether the shadow pass just wrote it.
+struct MomentsView {
+    ShadowViewId id;
+    std::string name;        // "light 0 cascade:1", for the pass's reason
+    MapGroup group;
+    int layer = 0;           // its layer in the group's array (a cube face: 6 x cube + face)
+    bool rendered = false;   // the shadow pass drew (or cleared) it this frame
+    double texelWorldSize = 0.0;  // for filter.blurUnit world
+};
+
+struct MomentsPassResult {
+    PassStats moments;  // the conversion
+    PassStats blur;
+    std::vector<std::string> warnings;  // clamps (EVSM exponents, a blur beyond its widest)
+};
+
+class MomentsPass {
+public:
+    // Needs a current GL 4.5 context; programs are built on first use.
+    MomentsPass();
+    ~MomentsPass();
+
+    // Brings every view's moments up to date for `filter` (a moments technique). `arrays`: the depth arrays by group.
+    MomentsPassResult run(const FilterSettings& filter, const std::map<MapGroup, ShadowMapArray>& arrays,
+                          const std::vector<MomentsView>& views, PassTimer& timer);
+    // Frees the storage (a depth technique is chosen).
+    void release();
+
+    // The moments array of a group (2D array or cube-map array), 0 when none.
+    GLuint texture(const MapGroup& group) const;
+    // The sampler moments are read through: bilinear, the address mode's wrap, the border depth's moments outside.
+    GLuint sampler() const { return sampler_.id(); }
+    void configureSampler(const FilterSettings& filter, const SamplerSettings& sampler);
+
+    // Texels [x0, x0+w) x [y0, y0+h) of a view's moments as stored (row 0 = bottom), read back from the GPU.
+    std::vector<glm::vec4> read(const MapGroup& group, int layer, int x0, int y0, int w, int h) const;
+    // How many views the last run converted (tests: nothing runs when nothing changed).
+    int lastConverted() const { return lastConverted_; }
+
+private:
+    struct Storage;
+    struct Inputs {
+        FilterKind kind;
+        int bits;
+        double blurTexels;
+        glm::vec4 uniforms;
+        std::uint64_t storage;  // the moments array's allocation
+        int layer;
+        bool operator==(const Inputs&) const = default;
+    };
+    std::map<MapGroup, Storage> storage_;
+    std::map<ShadowViewId, Inputs> current_;  // what each view's moments were computed from
+    std::map<std::pair<FilterKind, int>, gl::Program> convertPrograms_;
+    std::map<int, gl::Program> blurPrograms_;  // by GL internal format
+    gl::Texture temp_;  // one layer's horizontal blur
+    int tempResolution_ = 0;
+    GLenum tempFormat_ = 0;
+    gl::Sampler sampler_;
+    int lastConverted_ = 0;
+};
+
+// The storage's GL internal format for a technique at filter.momentBits.
+GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits);
+
+}  // namespace shadowlab

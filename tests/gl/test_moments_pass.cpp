@@ -1,0 +1,137 @@
+// Issue 21: the moments pass of the moments techniques (renderer/shadow/moments_pass.*): it runs only for a technique
+// that needs it and only for views whose map (or moments settings) changed; what it stores equals its CPU mirror
+// (shading/filters/moments_mirror.h) for every technique and precision; EVSM's largest exponents store no Inf/NaN; a
+// point light's cube faces get moments too (the room's pillar shadow under VSM).
+#include "gl_fixture.h"
+
+#include "shading/filters/filter_technique.h"
+#include "shading/filters/moments_mirror.h"
+
+#include <cmath>
+
+namespace shadowlab::test {
+namespace {
+
+class MomentsPassTest : public GlTest {};
+
+Settings withTechnique(Settings s, FilterKind kind, int bits = 32, int resolution = 256) {
+    s.filter.kind = kind;
+    s.filter.momentBits = bits;
+    s.lights[0].shadow.resolution = resolution;
+    return s;
+}
+
+TEST_F(MomentsPassTest, RunsOnlyForAMomentsTechniqueAndOnlyWhenAViewChanged) {
+    const Scene scene = loadBuiltin("textbook");
+    Renderer renderer;
+    Settings s = withTechnique(topDownShadowView(loadShippedPreset("default")), FilterKind::Pcf);
+    View v = renderView(renderer, scene, s, 160, 120);
+    EXPECT_TRUE(v.stats.shadowPass.ran);
+    EXPECT_FALSE(v.stats.momentsPass.ran) << v.stats.momentsPass.reason;
+    EXPECT_FALSE(v.stats.blurPass.ran);
+    EXPECT_NE(v.stats.momentsPass.reason.find("filter.kind pcf compares depth"), std::string::npos);
+
+    // Switching to VSM: the map is not re-rendered (its depth did not change), its moments are made.
+    s.filter.kind = FilterKind::Vsm;
+    v = renderView(renderer, scene, s, 160, 120);
+    EXPECT_TRUE(v.stats.momentsPass.ran);
+    EXPECT_TRUE(v.stats.blurPass.ran);
+    EXPECT_NE(v.stats.momentsPass.reason.find("moments settings changed"), std::string::npos) << v.stats.momentsPass.reason;
+
+    // The same frame again: no view re-rendered, no moments pass, no blur.
+    v = renderView(renderer, scene, s, 160, 120);
+    EXPECT_FALSE(v.stats.shadowPass.ran);
+    EXPECT_FALSE(v.stats.momentsPass.ran) << v.stats.momentsPass.reason;
+    EXPECT_FALSE(v.stats.blurPass.ran);
+
+    // A new blur width redoes the moments, not the shadow pass; a light move redoes both.
+    s.filter.blurWidth = 9.0f;
+    v = renderView(renderer, scene, s, 160, 120);
+    EXPECT_FALSE(v.stats.shadowPass.ran);
+    EXPECT_TRUE(v.stats.momentsPass.ran);
+    s.lights[0].direction.x += 0.05f;
+    v = renderView(renderer, scene, s, 160, 120);
+    EXPECT_TRUE(v.stats.shadowPass.ran);
+    EXPECT_TRUE(v.stats.momentsPass.ran);
+    EXPECT_NE(v.stats.momentsPass.reason.find("map re-rendered"), std::string::npos) << v.stats.momentsPass.reason;
+    // Width 1: moments, no blur.
+    s.filter.blurWidth = 1.0f;
+    v = renderView(renderer, scene, s, 160, 120);
+    EXPECT_TRUE(v.stats.momentsPass.ran);
+    EXPECT_FALSE(v.stats.blurPass.ran);
+}
+
+TEST_F(MomentsPassTest, StoredMomentsEqualTheCpuMirrorForEveryTechniqueAndPrecision) {
+    const Scene scene = loadBuiltin("textbook");
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
+        for (int bits : {16, 32})
+            for (bool reversed : {false, true}) {
+                Settings s = withTechnique(loadShippedPreset("default"), kind, bits, 128);
+                s.lights[0].shadow.reversedZ = reversed;
+                s.filter.blurWidth = 4.5f;  // fractional ends
+                s.filter.positiveExponent = 30.0f;  // clamped at 16 bits
+                Renderer renderer;
+                const View v = renderView(renderer, scene, s, 64, 48);
+                ASSERT_TRUE(v.stats.ok) << v.stats.error;
+                const FilterTechnique& t = filterTechnique(kind);
+                SCOPED_TRACE(std::string(t.name) + " " + std::to_string(bits) + (reversed ? " reversed-Z" : ""));
+                const ShadowMap& map = renderer.shadowMap();
+                const std::vector<glm::vec4> gpu = renderer.viewMoments(ShadowViewId{0}, 0, 0, 128, 128);
+                const std::vector<glm::vec4> cpu = momentsOfDepth(map.readDepth(), 128, reversed, s.filter, 4.5);
+                ASSERT_EQ(gpu.size(), cpu.size());
+                int off = 0;
+                double worst = 0.0;
+                for (std::size_t i = 0; i < cpu.size(); ++i)
+                    for (int c = 0; c < t.moments->channels; ++c) {
+                        // One storage step (fp16: 2^-10 relative, unorm16: 2 / 65535) plus float rounding.
+                        const double scale = std::max(std::abs(double(cpu[i][c])), 1e-3);
+                        const double d = std::abs(double(gpu[i][c]) - double(cpu[i][c])) / scale;
+                        worst = std::max(worst, d);
+                        off += d > (bits == 16 ? 3e-3 : 1e-4) && std::abs(gpu[i][c] - cpu[i][c]) > 4.0f / 65535.0f;
+                    }
+                EXPECT_EQ(off, 0) << "worst relative difference " << worst;
+                bool anyFinite = true;
+                for (const glm::vec4& m : gpu) anyFinite = anyFinite && std::isfinite(m.x) && std::isfinite(m.y);
+                EXPECT_TRUE(anyFinite);
+            }
+}
+
+TEST_F(MomentsPassTest, EvsmAtTheLargestExponentStoresNoInfOrNan) {
+    const Scene scene = loadBuiltin("textbook");
+    for (int bits : {16, 32}) {
+        Settings s = withTechnique(loadShippedPreset("default"), FilterKind::Evsm4, bits, 128);
+        s.filter.positiveExponent = s.filter.negativeExponent = 42.0f;  // clamped to 5.54 at 16 bits
+        Renderer renderer;
+        const View v = renderView(renderer, scene, s, 64, 48);
+        ASSERT_TRUE(v.stats.ok) << v.stats.error;
+        bool warned = false;
+        for (const std::string& w : v.stats.warnings) warned = warned || w.rfind("filter.positiveExponent 42", 0) == 0;
+        EXPECT_EQ(warned, bits == 16) << bits;
+        int nonFinite = 0;
+        for (const glm::vec4& m : renderer.viewMoments(ShadowViewId{0}, 0, 0, 128, 128))
+            for (int c = 0; c < 4; ++c) nonFinite += !std::isfinite(m[c]);
+        EXPECT_EQ(nonFinite, 0) << bits << " bits";
+        EXPECT_TRUE(v.stats.momentsPass.ran);
+    }
+}
+
+TEST_F(MomentsPassTest, PointLightsCubeFacesGetMomentsToo) {
+    Renderer renderer;
+    const Scene room = loadBuiltin("room");
+    Settings settings = topDownShadowView(loadShippedPreset("room"));
+    settings.filter.kind = FilterKind::Vsm;
+    settings.filter.blurWidth = 3.0f;
+    const View view = renderView(renderer, room, settings, 320, 240);
+    saveView(view, "room-pillar-shadow-vsm");
+    ASSERT_TRUE(view.stats.ok) << view.stats.error;
+    EXPECT_TRUE(view.stats.momentsPass.ran);
+    // The pillar's wedge (test_room_point_shadow.cpp's hand computation) across the -y, +x and +z faces.
+    EXPECT_LT(view.meanRedAround({2.5, 0.0, 2.5}, 1), 60.0);
+    EXPECT_LT(view.meanRedAround({4.2, 0.0, 3.2}, 1), 60.0);
+    EXPECT_LT(view.meanRedAround({3.2, 0.0, 4.2}, 1), 60.0);
+    EXPECT_GT(view.meanRedAround({4.5, 0.0, 1.5}, 1), 200.0);
+    EXPECT_GT(view.meanRedAround({-3.0, 0.0, 3.0}, 1), 200.0);
+}
+
+}  // namespace
+}  // namespace shadowlab::test
