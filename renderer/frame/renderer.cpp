@@ -291,6 +291,9 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
             const ShadowPassCounts counts = renderView(p, light, state, casterDraws, staticCasters);
             timer_.end(timed);
             if (p.cache == CacheState::StaticPlusDynamic) entry.texelsRedrawn = std::size_t(p.rect.area());
+            if (p.cache == CacheState::Scrolled)
+                for (const TexelRect& strip : exposedStrips(p.scroll, state.map.resolution()))
+                    entry.texelsRedrawn += std::size_t(strip.area());
             entry.ran = true;
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
@@ -456,7 +459,7 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
     const LightSpace& space = p.view.space;
     const bool clamp = light.depthClampApplies();
     // Without its cached depth (a map the GPU refused to allocate) the view is drawn whole, every caster.
-    const bool cacheMissing = p.cache == CacheState::StaticPlusDynamic &&
+    const bool cacheMissing = (p.cache == CacheState::StaticPlusDynamic || p.cache == CacheState::Scrolled) &&
                               (!state.staticDepth.valid() || state.staticDepth.resolution() != state.map.resolution() ||
                                state.staticDepth.format() != state.map.format());
     if (!p.fromStaticCache || cacheMissing ||
@@ -474,11 +477,54 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
             if (keep(d)) selection.draws.push_back(d);
         return selection;
     };
-    // Copies the cached static depth into the view's layer (a rectangle of it, or all).
-    auto copyCache = [&](const TexelRect& r) {
-        glCopyImageSubData(state.staticDepth.texture(), GL_TEXTURE_2D, 0, r.x0, r.y0, 0, state.map.texture(),
-                           GL_TEXTURE_2D, 0, r.x0, r.y0, 0, r.x1 - r.x0, r.y1 - r.y0, 1);
+    // Copies rectangle `r` of one map to (x, y) of another (the cached static depth and the view's layer).
+    auto copy = [](const ShadowMap& from, const TexelRect& r, const ShadowMap& to, int x, int y) {
+        glCopyImageSubData(from.texture(), GL_TEXTURE_2D, 0, r.x0, r.y0, 0, to.texture(), GL_TEXTURE_2D, 0, x, y, 0,
+                           r.x1 - r.x0, r.y1 - r.y0, 1);
     };
+    auto copyCache = [&](const TexelRect& r) { copy(state.staticDepth, r, state.map, r.x0, r.y0); };
+    const TexelRect whole{0, 0, state.map.resolution(), state.map.resolution()};
+    auto add = [](ShadowPassCounts& sum, const ShadowPassCounts& c) {
+        sum.castersDrawn += c.castersDrawn;
+        sum.alphaTestedCasters += c.alphaTestedCasters;
+        sum.trianglesDrawn += c.trianglesDrawn;
+        sum.drawCalls += c.drawCalls;
+    };
+    // A stable cascade's static casters go in pages of the light's texel grid (views/cascade_scroll.h), so a scrolled
+    // map stores what a whole one does, bit for bit; `region`'s texels of `into` get them.
+    const std::vector<CascadePage> allPages =
+        p.view.kind == ShadowViewKind::Cascade && light.projection.cascadeFit == CascadeFit::Stable
+            ? cascadePages(space, whole)
+            : std::vector<CascadePage>{};
+    const bool paged = !allPages.empty() && pageScratch_.ensure(allPages.front().space.resolution, state.map.format(),
+                                                                info_.maxTextureSize).empty();
+    auto drawStatics = [&](const TexelRect& region, const ShadowMap& into) {
+        ShadowPassCounts counts;
+        for (const CascadePage& page : cascadePages(space, region)) {
+            CasterSelection statics = castersInVolume(*gpuScene_, page.space);
+            std::erase_if(statics.draws, [&](std::uint32_t d) { return staticDraw[d] == 0; });
+            statics.skipped = 0;
+            statics.scissor = page.inPage;
+            add(counts, shadowPass_->run(*gpuScene_, statics, page.space, light.shadow, clamp, pageScratch_));
+            copy(pageScratch_, page.inPage, into, page.inMap.x0, page.inMap.y0);
+        }
+        return counts;
+    };
+    if (p.cache == CacheState::Scrolled && paged) {
+        // The cached static depth moved by whole texels into the layer, the strips that came into view drawn from
+        // their pages, the result cached, the dynamic casters over it.
+        const int n = state.map.resolution();
+        const TexelRect target = scrollTarget(p.scroll, n);
+        if (!target.empty()) copy(state.staticDepth, scrollSource(p.scroll, n), state.map, target.x0, target.y0);
+        ShadowPassCounts counts;
+        counts.castersSkipped = inVolume.skipped;
+        for (const TexelRect& strip : exposedStrips(p.scroll, n)) add(counts, drawStatics(strip, state.map));
+        copy(state.map, whole, state.staticDepth, 0, 0);
+        CasterSelection dynamics = narrowed([&](std::uint32_t d) { return staticDraw[d] == 0; });
+        dynamics.clear = false;
+        add(counts, shadowPass_->run(*gpuScene_, dynamics, space, light.shadow, clamp, state.map));
+        return counts;
+    }
     if (p.cache == CacheState::StaticPlusDynamic) {
         std::vector<char> listed(staticDraw.size(), 0);
         for (std::size_t c : p.dynamicCasters) listed[casterDraws[c]] = 1;
@@ -488,18 +534,19 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
         over.clear = false;
         return shadowPass_->run(*gpuScene_, over, space, light.shadow, clamp, state.map);
     }
-    // Full: the static casters into the cached depth, a copy of it, the dynamic casters over it.
-    ShadowPassCounts counts =
-        shadowPass_->run(*gpuScene_, narrowed([&](std::uint32_t d) { return staticDraw[d] != 0; }), space,
-                         light.shadow, clamp, state.staticDepth);
-    copyCache({0, 0, state.map.resolution(), state.map.resolution()});
+    // Full (or a scroll whose page could not be allocated): the static casters into the cached depth, a copy of it,
+    // the dynamic casters over it.
+    ShadowPassCounts counts;
+    counts.castersSkipped = inVolume.skipped;
+    if (paged)
+        add(counts, drawStatics(whole, state.staticDepth));
+    else
+        counts = shadowPass_->run(*gpuScene_, narrowed([&](std::uint32_t d) { return staticDraw[d] != 0; }), space,
+                                  light.shadow, clamp, state.staticDepth);
+    copyCache(whole);
     CasterSelection dynamics = narrowed([&](std::uint32_t d) { return staticDraw[d] == 0; });
     dynamics.clear = false;
-    const ShadowPassCounts over = shadowPass_->run(*gpuScene_, dynamics, space, light.shadow, clamp, state.map);
-    counts.castersDrawn += over.castersDrawn;
-    counts.alphaTestedCasters += over.alphaTestedCasters;
-    counts.trianglesDrawn += over.trianglesDrawn;
-    counts.drawCalls += over.drawCalls;
+    add(counts, shadowPass_->run(*gpuScene_, dynamics, space, light.shadow, clamp, state.map));
     return counts;
 }
 

@@ -74,6 +74,8 @@ private:
         MapGroup group;
         ShadowMap staticDepth;  // shadow.update cachedStatic: its static casters alone (the cached depth)
     };
+    // A stable cascade's page of static casters (views/cascade_scroll.h: cascadePages), drawn before its copy.
+    ShadowMap pageScratch_;
     // Draws a view the plan renders (every caster, or through its cached static depth); its counts.
     // `casterDraws`: each caster's draw; `statics`: 1 per static caster (empty unless a light caches).
     ShadowPassCounts renderView(const PlannedView& p, const LightSettings& light, ViewState& state,

@@ -199,6 +199,18 @@ void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow
     else if (!before->holds) reason = "its map holds nothing yet (new or reallocated while unseen)";
     else reason = changeReason(*before->holds, now, p.view.kind, kept, globals);
 
+    // A stable cascade of a cachedStatic light that only followed the camera: its cached static depth scrolls when
+    // the move is whole texels of the light's grid; otherwise the reason says why it is drawn whole.
+    CascadeScroll scroll;
+    if (!reason.empty() && in.forceReason.empty() && cachedStatic && kept && before->holds->staticCache &&
+        p.view.kind == ShadowViewKind::Cascade && now.light.projection.cascadeFit == CascadeFit::Stable &&
+        changedKeys(*before->holds, now, globals).empty() && now.sceneFingerprint == before->holds->sceneFingerprint) {
+        scroll = cascadeScroll(before->holds->viewProjection, now.viewProjection, p.view.space.resolution);
+        if (scroll.shift && cascadePages(p.view.space, {0, 0, 1, 1}).empty())
+            scroll = {std::nullopt, "its centre is off its texel grid or its resolution is odd"};
+        if (!scroll.shift) reason += " (not scrolled: " + scroll.why + ")";
+    }
+
     // Only casters moved: the views they touch (before or now) draw again, by the light's policy.
     ViewMotion motion;
     if (reason.empty()) {
@@ -234,6 +246,18 @@ void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow
         p.cache = CacheState::Reused;
         p.reason = "skipped: its volume misses the camera's view";
         if (kept) p.holds = before->holds;
+        return;
+    }
+    if (scroll.shift) {
+        // Every dynamic caster is drawn over the scrolled static depth: the motion since its last draw is covered.
+        p.action = ViewAction::Render;
+        p.cache = CacheState::Scrolled;
+        p.fromStaticCache = true;
+        p.scroll = *scroll.shift;
+        p.reason = describeScroll(p.scroll, p.view.space.resolution);
+        p.holds = std::move(now);
+        p.holds->settings = requested;
+        p.holds->staticCache = true;
         return;
     }
     if (onlyMotion && cachedStatic && motion.consecutive && before->holds->staticCache) {
@@ -364,6 +388,7 @@ const char* cacheStateName(CacheState state) {
     switch (state) {
     case CacheState::Reused: return "reused";
     case CacheState::StaticPlusDynamic: return "static + dynamic";
+    case CacheState::Scrolled: return "scrolled";
     case CacheState::Full: return "full";
     }
     return "?";

@@ -9,6 +9,7 @@
 // names and carries out each view's action; the plan it carried out is the next frame's `previous`.
 #include "scene/scene.h"
 #include "settings/settings.h"
+#include "views/cascade_scroll.h"
 #include "views/caster_motion.h"
 #include "views/map_group.h"
 #include "views/shadow_view.h"
@@ -43,9 +44,10 @@ struct MapContents {
 enum class ViewAction { Render, Clear, Keep, SkipUnseen };
 
 // What a view's map got this frame, as the views table says it: reused (kept or skipped), static + dynamic (its
-// cached static depth copied within a rectangle and the moving casters drawn over it) or full (every caster drawn).
-enum class CacheState { Reused, StaticPlusDynamic, Full };
-const char* cacheStateName(CacheState state);  // "reused", "static + dynamic", "full"
+// cached static depth copied within a rectangle and the moving casters drawn over it), scrolled (a stable cascade's
+// cached static depth moved by whole texels, only the strips that came into view drawn) or full (every caster drawn).
+enum class CacheState { Reused, StaticPlusDynamic, Scrolled, Full };
+const char* cacheStateName(CacheState state);  // "reused", "static + dynamic", "scrolled", "full"
 
 struct PlannedView {
     ShadowView view;
@@ -63,6 +65,9 @@ struct PlannedView {
     bool fromStaticCache = false;
     TexelRect rect;
     std::vector<std::size_t> dynamicCasters;  // indices into PlanInputs::casters
+    // Scrolled: how far its cached static depth moves (views/cascade_scroll.h); the exposed strips get the static
+    // casters, then every dynamic caster is drawn over the whole map.
+    TexelShift scroll;
 };
 
 // "static + dynamic: car 3 moved", "full: shadow.depthBias changed", "reused: unchanged: ...": the views table's line.
