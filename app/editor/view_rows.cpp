@@ -20,6 +20,7 @@ std::vector<ViewRow> viewRows(const FrameStats& stats, const std::map<ShadowView
         row.name = v.name;
         row.cascade = v.hasView && v.kind == ShadowViewKind::Cascade ? v.index : -1;
         row.ran = v.ran;
+        row.update = v.hasView ? v.cache : "-";
         row.memory = v.hasView ? memoryText(v.memoryBytes) : "-";
         std::optional<double> ms = v.ran ? v.milliseconds : std::nullopt;
         if (!ms && v.hasView) {

@@ -32,6 +32,8 @@ struct ShadowViewStats {
     CascadeSlice slice;     // a cascade's slice of the camera's frustum
     bool ran = false;
     std::string reason;
+    std::string cache = "reused";  // what its map got: reused, static + dynamic, full (views/shadow_planner.h)
+    std::size_t texelsRedrawn = 0; // static + dynamic: the rectangle copied from its cached depth and drawn over
     std::optional<double> milliseconds;
     int resolution = 0;
     DepthFormat format = DepthFormat::D32F;

@@ -1,6 +1,6 @@
 #include "frame/gpu_scene.h"
 
-#include "scene/hash_combine.h"
+#include "scene/scene_fingerprint.h"
 
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/geometric.hpp>
@@ -47,35 +47,6 @@ void computeDrawBounds(const Bounds& box, const glm::dmat4& model, GpuDraw& draw
 
 glm::dmat4 toOriginMatrix(const glm::dvec3& origin) {
     return glm::dmat4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -origin.x, -origin.y, -origin.z, 1.0);
-}
-
-// What sameGeometry compares: the data's addresses and sizes (cheap), or its contents.
-std::size_t geometryKey(const Scene& scene, bool contents) {
-    std::size_t seed = 0;
-    auto add = [&](const auto& values) {
-        if (contents) {
-            hashContents(seed, values);
-        } else {
-            hashCombine(seed, std::hash<const void*>{}(values.data()));
-            hashCombine(seed, values.size());
-        }
-    };
-    hashCombine(seed, scene.meshes.size());
-    for (const Mesh& mesh : scene.meshes) {
-        add(mesh.positions);
-        add(mesh.normals);
-        add(mesh.uvs);
-        add(mesh.indices);
-        hashCombine(seed, std::size_t(mesh.material + 1));
-    }
-    hashCombine(seed, scene.images.size());
-    for (const Image& image : scene.images) {
-        add(image.rgba);
-        hashCombine(seed, std::size_t(image.width) << 32 | std::size_t(image.height));
-    }
-    hashCombine(seed, scene.instances.size());
-    for (const Instance& instance : scene.instances) hashCombine(seed, std::size_t(instance.mesh));
-    return seed;
 }
 
 }  // namespace
@@ -198,18 +169,18 @@ GpuScene::GpuScene(const Scene& scene, const glm::dvec3& origin) : scene_(&scene
     glVertexArrayAttribIFormat(vao, kDrawIndexAttribute, 1, GL_UNSIGNED_INT, 0);
     glVertexArrayAttribBinding(vao, kDrawIndexAttribute, 1);
 
-    geometryAddresses_ = geometryKey(scene, false);
-    geometryContent_ = geometryKey(scene, true);
+    layout_ = layoutFingerprint(scene);
+    geometry_ = shadowlab::geometryFingerprint(scene);
 }
 
 bool GpuScene::sameGeometry(const Scene& scene) const {
-    return geometryKey(scene, false) == geometryAddresses_ || geometryKey(scene, true) == geometryContent_;
+    return layoutFingerprint(scene) == layout_ || shadowlab::geometryFingerprint(scene) == geometry_;
 }
 
 const SceneUpload& GpuScene::updateTransforms(const Scene& scene, const glm::dvec3& origin) {
     scene_ = &scene;
     origin_ = origin;
-    geometryAddresses_ = geometryKey(scene, false);
+    layout_ = layoutFingerprint(scene);
     lastUpload_ = SceneUpload{};
     const glm::dmat4 toOrigin = toOriginMatrix(origin);
     // Runs of consecutive moved draws go up as one write each.
@@ -228,6 +199,7 @@ const SceneUpload& GpuScene::updateTransforms(const Scene& scene, const glm::dve
         placeDraw(scene.instances[draw.instance], toOrigin, draw);
         if (std::memcmp(&before, &draw.model, sizeof before) == 0) continue;
         ++lastUpload_.drawsMoved;
+        lastUpload_.moved.push_back(d);
         if (runEnd != d) {
             flush();
             runStart = d;

@@ -47,6 +47,7 @@ struct SceneUpload {
     std::size_t geometryBytes = 0;
     std::size_t transformBytes = 0;  // model matrices written to the transform buffer
     int drawsMoved = 0;              // draws whose model matrix changed (every draw on a geometry upload)
+    std::vector<std::size_t> moved;  // updateTransforms: those draws (indices into GpuScene::draws()), in order
     std::string describe() const;    // "geometry uploaded, N bytes ..." or "transforms updated, N bytes ..."
 };
 
@@ -64,10 +65,13 @@ public:
     const Scene& scene() const { return *scene_; }
     const glm::dvec3& origin() const { return origin_; }
 
-    // Whether `scene` has this upload's geometry: the same meshes (vertices, indices, material), images and
-    // instance -> mesh list. A cheap check of the data's addresses first (what the renderer's scene fingerprint
-    // assumes: an in-place edit calls Renderer::sceneChanged), else a hash of the contents (a posed copy of a scene).
+    // Whether `scene` has this upload's geometry, so that only its transforms may differ (scene/scene_fingerprint.h):
+    // the same meshes (vertices, indices, material), materials' depth values, images and instance -> mesh list. A
+    // cheap check of the data's addresses first (layoutFingerprint: an in-place edit calls Renderer::sceneChanged),
+    // else of the contents (geometryFingerprint: a posed copy of a scene).
     bool sameGeometry(const Scene& scene) const;
+    // geometryFingerprint of the uploaded scene: what the shadow maps' contents depend on besides the transforms.
+    std::size_t geometryFingerprint() const { return geometry_; }
     // For a scene of the same geometry (sameGeometry): takes its instance transforms relative to `origin`, updates each
     // draw's matrices, bounds and mirrored flag, and rewrites only the transform buffer's entries that changed.
     // `scene` replaces the one drawn (it must outlive this GpuScene, as the constructor's does).
@@ -89,8 +93,8 @@ private:
     std::vector<gl::Texture> imageTextures_;  // one per Scene::images entry (empty handle when invalid)
     std::vector<Bounds> meshBoxes_;           // each mesh's object-space box (finite vertices)
     std::vector<GpuDraw> draws_;
-    std::size_t geometryAddresses_ = 0;       // sameGeometry's cheap key
-    std::size_t geometryContent_ = 0;         // and its content hash
+    std::size_t layout_ = 0;                  // sameGeometry's cheap key (layoutFingerprint)
+    std::size_t geometry_ = 0;                // and its content key (geometryFingerprint)
     SceneUpload lastUpload_;
 };
 

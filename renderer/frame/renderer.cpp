@@ -4,6 +4,7 @@
 #include "gl/gl_errors.h"
 #include "light/volume_overlap.h"
 #include "scene/hash_combine.h"
+#include "scene/scene_animation.h"
 #include "scene/scene_casters.h"
 #include "settings/settings_fields.h"
 #include "shading/filters/filter_technique.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <string_view>
 
 namespace shadowlab {
 
@@ -27,29 +29,6 @@ std::string joinLines(const std::vector<std::string>& lines) {
 }
 
 }  // namespace
-
-std::size_t sceneFingerprint(const Scene& scene) {
-    std::size_t seed = std::hash<const void*>{}(&scene);
-    hashCombine(seed, scene.meshes.size());
-    for (const Mesh& mesh : scene.meshes) {
-        hashCombine(seed, std::hash<const void*>{}(mesh.positions.data()));
-        hashCombine(seed, mesh.positions.size());
-        hashCombine(seed, mesh.indices.size());
-        hashCombine(seed, std::size_t(mesh.material + 1));
-    }
-    for (const Instance& instance : scene.instances) {
-        hashCombine(seed, std::size_t(instance.mesh));
-        hashBytes(seed, instance.transform);
-    }
-    for (const Material& material : scene.materials) {
-        hashCombine(seed, std::size_t(material.alphaMode));
-        hashBytes(seed, material.alphaCutoff);
-        hashBytes(seed, material.baseColorFactor.a);
-        hashBytes(seed, material.doubleSided);
-        hashBytes(seed, material.uvTransform);
-    }
-    return seed;
-}
 
 std::vector<ShadowView> frameViewsOf(const FrameStats& stats, std::size_t light) {
     std::vector<ShadowView> views;
@@ -111,25 +90,77 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     stats.lightSource = describeLightSource(requested, scene);
     stats.lightCount = settings.lights.size();
 
-    const std::size_t fingerprint = sceneFingerprint(scene);
-    if (!gpuScene_ || &gpuScene_->scene() != &scene || gpuSceneFingerprint_ != fingerprint) {
-        // Every matrix is built relative to the render origin in double precision. Only transforms changed (an
-        // animation step, a posed copy of the scene): the transform buffer is updated, the geometry stays.
-        const glm::dvec3 origin = renderOriginOf(scene.bounds);
-        if (gpuScene_ && gpuScene_->sameGeometry(scene))
-            gpuScene_->updateTransforms(scene, origin);
-        else
-            gpuScene_ = std::make_unique<GpuScene>(scene, origin);
-        gpuSceneFingerprint_ = fingerprint;
-        const SceneUpload& upload = gpuScene_->lastUpload();
-        stats.sceneUpload = {true, upload.describe(), std::nullopt};
-        stats.geometryBytesUploaded = upload.geometryBytes;
-        stats.transformBytesUploaded = upload.transformBytes;
+    // The geometry is uploaded once. Only transforms changed (an animation step, in place or a posed copy:
+    // GpuScene::sameGeometry): the transform buffer is updated and the draws that moved dirty only the views they
+    // touch (the planner's CasterMotion).
+    const std::size_t transforms = transformsFingerprint(scene);
+    const glm::dvec3 origin = renderOriginOf(scene.bounds);
+    std::vector<std::size_t> movedDraws;
+    bool uploaded = false;
+    if (gpuScene_ && gpuScene_->sameGeometry(scene)) {
+        if (&gpuScene_->scene() != &scene || transforms != transformsFingerprint_ || origin != gpuScene_->origin()) {
+            movedDraws = gpuScene_->updateTransforms(scene, origin).moved;
+            stats.sceneUpload = {true, gpuScene_->lastUpload().describe(), std::nullopt};
+        } else {
+            stats.sceneUpload = {false, "unchanged", std::nullopt};
+        }
     } else {
-        stats.sceneUpload = {false, "unchanged", std::nullopt};
+        // Every matrix is built relative to the render origin in double precision.
+        gpuScene_ = std::make_unique<GpuScene>(scene, origin);
+        uploaded = true;
+        stats.sceneUpload = {true, gpuScene_->lastUpload().describe(), std::nullopt};
+    }
+    // The scene as posed: its geometry and transforms (what the receivers' depths of the bias report follow).
+    std::size_t fingerprint = gpuScene_->geometryFingerprint();
+    hashCombine(fingerprint, transforms);
+    if (stats.sceneUpload.ran) {
+        stats.geometryBytesUploaded = gpuScene_->lastUpload().geometryBytes;
+        stats.transformBytesUploaded = gpuScene_->lastUpload().transformBytes;
     }
     // What casts (casters.excluded): the planner names a change of the key; the maps' contents follow it.
     gpuScene_->setCasting(castingInstances(scene, settings.casters));
+    // The casters (the draws that cast, in draw order) and what moved since the last frame. An upload after
+    // sceneChanged() knows no previous pose: a map drawn before it is stale if any transform changed meanwhile.
+    const std::vector<GpuDraw>& draws = gpuScene_->draws();
+    std::vector<CasterSphere> spheres;
+    std::vector<std::size_t> casterDraws;
+    std::vector<std::size_t> casterOf(draws.size(), std::size_t(-1));
+    for (std::size_t d = 0; d < draws.size(); ++d) {
+        if (!draws[d].casts) continue;
+        casterOf[d] = spheres.size();
+        spheres.push_back(casterSphere(draws[d]));
+        casterDraws.push_back(d);
+    }
+    motion_.moved.clear();
+    if (uploaded && transforms != transformsFingerprint_) {
+        motion_.pose += 2;
+    } else {
+        for (std::size_t d : movedDraws) {
+            if (casterOf[d] == std::size_t(-1)) continue;  // moves no shadow
+            const Instance& instance = scene.instances[draws[d].instance];
+            const bool named = instance.node >= 0 && std::size_t(instance.node) < scene.nodes.size();
+            motion_.moved.push_back({casterOf[d],
+                                     named ? scene.nodes[std::size_t(instance.node)].path
+                                           : "instance " + std::to_string(draws[d].instance),
+                                     d < drawSpheres_.size() ? drawSpheres_[d] : CasterSphere{},
+                                     spheres[casterOf[d]]});
+        }
+        if (!motion_.moved.empty()) ++motion_.pose;
+    }
+    transformsFingerprint_ = transforms;
+    drawSpheres_.resize(draws.size());
+    for (std::size_t d = 0; d < draws.size(); ++d) drawSpheres_[d] = casterSphere(draws[d]);
+    // Static casters (a cachedStatic light caches them): what no playing animation moves, or casters.static.
+    std::vector<char> staticCasters;
+    const bool anyCached = std::any_of(settings.lights.begin(), settings.lights.end(), [](const LightSettings& l) {
+        return l.shadow.update == ShadowUpdate::CachedStatic;
+    });
+    if (anyCached) {
+        std::string playError;
+        const std::vector<int> playing = chosenAnimations(scene, settings.animation.play, playError).value_or(std::vector<int>{});
+        const std::vector<char> instances = staticInstances(scene, playing, settings.casters);
+        for (std::size_t d : casterDraws) staticCasters.push_back(instances[draws[d].instance]);
+    }
     stats.renderOrigin = gpuScene_->origin();
     stats.sceneTriangles = scene.triangleCount();
     const glm::dmat4 view = camera.view(stats.renderOrigin);
@@ -174,12 +205,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
 
     // The plan: each casting light's views, grouped into map arrays by (2D or cube, resolution, format, convention),
     // each decided against what its map holds (the plan the previous frame carried out).
-    const std::vector<CasterSphere> spheres = casterSpheres(*gpuScene_);
     // Cascades follow the fit camera; what the picture's camera cannot see is still judged from the picture's camera.
     ShadowPlan plan = planShadowViews({scene, requested, stats.renderOrigin, &cascadeCamera, stats.cameraViewProjection,
-                                       spheres, fingerprint, info_.maxTextureSize,
+                                       spheres, gpuScene_->geometryFingerprint(), info_.maxTextureSize,
                                        previousPlan_ ? &*previousPlan_ : nullptr,
-                                       std::exchange(forceReason_, std::string())});
+                                       std::exchange(forceReason_, std::string()), &motion_,
+                                       anyCached ? &staticCasters : nullptr, frames_++});
     if (!plan.error.empty()) {
         stats.error = plan.error;
         return stats;  // nothing was drawn: the previous plan still says what the maps hold
@@ -246,6 +277,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         entry.format = array.format();
         entry.memoryBytes = state.map.memoryBytes();
         entry.reason = p.reason;
+        entry.cache = cacheStateName(p.cache);
         switch (p.action) {
         case ViewAction::Keep: break;
         case ViewAction::SkipUnseen: anySkippedForOtherReason = true; break;
@@ -256,9 +288,12 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         case ViewAction::Render: {
             const int timed = PassTimer::kFirstViewPass + int(v);
             timer_.begin(timed);
-            const ShadowPassCounts counts =
-                shadowPass_->run(*gpuScene_, p.view.space, light.shadow, light.depthClampApplies(), state.map);
+            const ShadowPassCounts counts = renderView(p, light, state, casterDraws, staticCasters);
             timer_.end(timed);
+            if (p.cache == CacheState::StaticPlusDynamic) entry.texelsRedrawn = std::size_t(p.rect.area());
+            if (p.cache == CacheState::Scrolled)
+                for (const TexelRect& strip : exposedStrips(p.scroll, state.map.resolution()))
+                    entry.texelsRedrawn += std::size_t(strip.area());
             entry.ran = true;
             entry.milliseconds = timer_.latestMilliseconds(timed);
             entry.castersDrawn = counts.castersDrawn;
@@ -416,6 +451,103 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
     previousPlan_ = std::move(plan);  // what each view's map now holds: the next frame's planner compares with it
     stats.ok = true;
     return stats;
+}
+
+ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings& light, ViewState& state,
+                                      const std::vector<std::size_t>& casterDraws,
+                                      const std::vector<char>& statics) {
+    const LightSpace& space = p.view.space;
+    const bool clamp = light.depthClampApplies();
+    // Without its cached depth (a map the GPU refused to allocate) the view is drawn whole, every caster.
+    const bool cacheMissing = (p.cache == CacheState::StaticPlusDynamic || p.cache == CacheState::Scrolled) &&
+                              (!state.staticDepth.valid() || state.staticDepth.resolution() != state.map.resolution() ||
+                               state.staticDepth.format() != state.map.format());
+    if (!p.fromStaticCache || cacheMissing ||
+        (p.cache == CacheState::Full &&
+         !state.staticDepth.ensure(state.map.resolution(), state.map.format(), info_.maxTextureSize).empty()))
+        return shadowPass_->run(*gpuScene_, space, light.shadow, clamp, state.map);
+    // The view's casters (castersInVolume) narrowed to the static or the dynamic ones.
+    std::vector<char> staticDraw(gpuScene_->draws().size(), 0);
+    for (std::size_t c = 0; c < casterDraws.size() && c < statics.size(); ++c) staticDraw[casterDraws[c]] = statics[c];
+    const CasterSelection inVolume = castersInVolume(*gpuScene_, space);
+    auto narrowed = [&](auto keep) {
+        CasterSelection selection;
+        selection.skipped = inVolume.skipped;
+        for (std::uint32_t d : inVolume.draws)
+            if (keep(d)) selection.draws.push_back(d);
+        return selection;
+    };
+    // Copies rectangle `r` of one map to (x, y) of another (the cached static depth and the view's layer).
+    auto copy = [](const ShadowMap& from, const TexelRect& r, const ShadowMap& to, int x, int y) {
+        glCopyImageSubData(from.texture(), GL_TEXTURE_2D, 0, r.x0, r.y0, 0, to.texture(), GL_TEXTURE_2D, 0, x, y, 0,
+                           r.x1 - r.x0, r.y1 - r.y0, 1);
+    };
+    auto copyCache = [&](const TexelRect& r) { copy(state.staticDepth, r, state.map, r.x0, r.y0); };
+    const TexelRect whole{0, 0, state.map.resolution(), state.map.resolution()};
+    auto add = [](ShadowPassCounts& sum, const ShadowPassCounts& c) {
+        sum.castersDrawn += c.castersDrawn;
+        sum.alphaTestedCasters += c.alphaTestedCasters;
+        sum.trianglesDrawn += c.trianglesDrawn;
+        sum.drawCalls += c.drawCalls;
+    };
+    // A stable cascade's static casters go in pages of the light's texel grid (views/cascade_scroll.h), so a scrolled
+    // map stores what a whole one does, bit for bit; `region`'s texels of `into` get them.
+    const std::vector<CascadePage> allPages =
+        p.view.kind == ShadowViewKind::Cascade && light.projection.cascadeFit == CascadeFit::Stable
+            ? cascadePages(space, whole)
+            : std::vector<CascadePage>{};
+    const bool paged = !allPages.empty() && pageScratch_.ensure(allPages.front().space.resolution, state.map.format(),
+                                                                info_.maxTextureSize).empty();
+    auto drawStatics = [&](const TexelRect& region, const ShadowMap& into) {
+        ShadowPassCounts counts;
+        for (const CascadePage& page : cascadePages(space, region)) {
+            CasterSelection statics = castersInVolume(*gpuScene_, page.space);
+            std::erase_if(statics.draws, [&](std::uint32_t d) { return staticDraw[d] == 0; });
+            statics.skipped = 0;
+            statics.scissor = page.inPage;
+            add(counts, shadowPass_->run(*gpuScene_, statics, page.space, light.shadow, clamp, pageScratch_));
+            copy(pageScratch_, page.inPage, into, page.inMap.x0, page.inMap.y0);
+        }
+        return counts;
+    };
+    if (p.cache == CacheState::Scrolled && paged) {
+        // The cached static depth moved by whole texels into the layer, the strips that came into view drawn from
+        // their pages, the result cached, the dynamic casters over it.
+        const int n = state.map.resolution();
+        const TexelRect target = scrollTarget(p.scroll, n);
+        if (!target.empty()) copy(state.staticDepth, scrollSource(p.scroll, n), state.map, target.x0, target.y0);
+        ShadowPassCounts counts;
+        counts.castersSkipped = inVolume.skipped;
+        for (const TexelRect& strip : exposedStrips(p.scroll, n)) add(counts, drawStatics(strip, state.map));
+        copy(state.map, whole, state.staticDepth, 0, 0);
+        CasterSelection dynamics = narrowed([&](std::uint32_t d) { return staticDraw[d] == 0; });
+        dynamics.clear = false;
+        add(counts, shadowPass_->run(*gpuScene_, dynamics, space, light.shadow, clamp, state.map));
+        return counts;
+    }
+    if (p.cache == CacheState::StaticPlusDynamic) {
+        std::vector<char> listed(staticDraw.size(), 0);
+        for (std::size_t c : p.dynamicCasters) listed[casterDraws[c]] = 1;
+        copyCache(p.rect);
+        CasterSelection over = narrowed([&](std::uint32_t d) { return listed[d] != 0; });
+        over.scissor = p.rect;
+        over.clear = false;
+        return shadowPass_->run(*gpuScene_, over, space, light.shadow, clamp, state.map);
+    }
+    // Full (or a scroll whose page could not be allocated): the static casters into the cached depth, a copy of it,
+    // the dynamic casters over it.
+    ShadowPassCounts counts;
+    counts.castersSkipped = inVolume.skipped;
+    if (paged)
+        add(counts, drawStatics(whole, state.staticDepth));
+    else
+        counts = shadowPass_->run(*gpuScene_, narrowed([&](std::uint32_t d) { return staticDraw[d] != 0; }), space,
+                                  light.shadow, clamp, state.staticDepth);
+    copyCache(whole);
+    CasterSelection dynamics = narrowed([&](std::uint32_t d) { return staticDraw[d] == 0; });
+    dynamics.clear = false;
+    add(counts, shadowPass_->run(*gpuScene_, dynamics, space, light.shadow, clamp, state.map));
+    return counts;
 }
 
 void Renderer::waitForTimings(FrameStats& stats) {

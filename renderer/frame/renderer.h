@@ -10,6 +10,7 @@
 #include "frame/frame_stats.h"
 #include "frame/gpu_scene.h"
 #include "frame/render_target.h"
+#include "scene/scene_fingerprint.h"
 #include "shading/main_pass.h"
 #include "shadow/shadow_map.h"
 #include "shadow/moments_pass.h"
@@ -69,9 +70,16 @@ public:
 
 private:
     struct ViewState {
-        ShadowMap map;  // its layer of its group's array
+        ShadowMap map;          // its layer of its group's array
         MapGroup group;
+        ShadowMap staticDepth;  // shadow.update cachedStatic: its static casters alone (the cached depth)
     };
+    // A stable cascade's page of static casters (views/cascade_scroll.h: cascadePages), drawn before its copy.
+    ShadowMap pageScratch_;
+    // Draws a view the plan renders (every caster, or through its cached static depth); its counts.
+    // `casterDraws`: each caster's draw; `statics`: 1 per static caster (empty unless a light caches).
+    ShadowPassCounts renderView(const PlannedView& p, const LightSettings& light, ViewState& state,
+                                const std::vector<std::size_t>& casterDraws, const std::vector<char>& statics);
 
     GlInfo info_;
     std::map<MapGroup, ShadowMapArray> arrays_;
@@ -90,7 +98,11 @@ private:
     MainPass mainPass_;
     PassTimer timer_;
     std::unique_ptr<GpuScene> gpuScene_;
-    std::size_t gpuSceneFingerprint_ = 0;
+    // The casters' motion: each draw's sphere last frame, the frame's moves, which casters are static.
+    std::vector<CasterSphere> drawSpheres_;
+    CasterMotion motion_;
+    std::size_t transformsFingerprint_ = 0;  // the instances' transforms as last seen
+    std::uint64_t frames_ = 0;
     std::optional<ShadowViewId> firstView_;  // the first view of the last frame (shadowMap())
     struct Receivers {
         std::size_t fingerprint = 0;
@@ -101,8 +113,5 @@ private:
     // The scene's depths in the first view's map (a cascaded light's: in each cascade's), for the bias report.
     std::vector<Receivers> receivers_;
 };
-
-// Changes whenever geometry, instances or alpha-relevant material values of the scene change.
-std::size_t sceneFingerprint(const Scene& scene);
 
 }  // namespace shadowlab

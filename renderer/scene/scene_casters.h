@@ -17,8 +17,14 @@ std::vector<char> castingNodes(const Scene& scene, const CasterSettings& casters
 // Per Scene::instances: 1 when the instance casts (an instance of no node always does).
 std::vector<char> castingInstances(const Scene& scene, const CasterSettings& casters);
 
+// Per Scene::instances: 1 when the instance is a static caster: none of the animations `chosen` (indices into
+// Scene::animations) drives its node or an ancestor, or casters.static names it (or an ancestor), unless
+// casters.dynamic does (casters.static wins where both name it). An instance of no node is static.
+std::vector<char> staticInstances(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters);
+
 // One warning per excluded path no node of the scene has ("casters.excluded: no node 'X' in scene S; ignored"):
 // a preset tuned on an older version of a file still loads.
+// The same for casters.static and casters.dynamic.
 std::vector<std::string> unknownCasterPathWarnings(const Scene& scene, const CasterSettings& casters);
 
 // A scene's geometry fingerprint combined with its casting instances: what the maps and the reference are built from

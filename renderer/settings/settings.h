@@ -20,6 +20,8 @@ enum class FilterKind { Point, Hardware2x2, Pcf, Poisson, Vsm, Evsm2, Evsm4, Msm
 // Where a moments technique's blur width is given: in each view's texels, or in world units (the same in every
 // cascade: converted by each view's texel size).
 enum class BlurUnit { Texels, World };
+// A light's shadow update policy (ShadowMapSettings::update).
+enum class ShadowUpdate { EveryFrame, OnChange, CachedStatic, EveryNthFrame };
 // What the main view shows: the lit scene, the shadow factor, the first light's depth, the cascade that holds each
 // pixel (tinted over the lit scene), or shadow-map texels per screen pixel (a log colour scale).
 enum class ViewMode { Lit, Shadow, LightDepth, Cascades, TexelDensity };
@@ -41,6 +43,11 @@ struct ShadowMapSettings {
     // at that tap, not the centre's, so wide kernels need no slope bias of their own. Directional and spot lights.
     // On by default: with it the default's slope 1 is clean on every built-in and ../shared scene (docs/accuracy.md).
     bool receiverPlaneBias = true;
+    // When the light's views render again (docs/moving-scenes.md): every frame; on change (a key, the light space or a
+    // caster in the view's volume moved); cached static (static casters rendered once into a cached depth per view,
+    // moving ones drawn over a copy of it, scissored to what they cover); every Nth frame (motion waits for it).
+    ShadowUpdate update = ShadowUpdate::OnChange;
+    int updateInterval = 4;  // everyNthFrame's N
 
     bool operator==(const ShadowMapSettings&) const = default;
 };
@@ -148,6 +155,11 @@ struct CameraSettings {
 // "City/SkyBox"); such a node's whole subtree casts none. Both the shadow maps and the reference leave them out.
 struct CasterSettings {
     std::vector<std::string> excluded;
+    // Node paths forced static (kept in a cachedStatic light's cached depth even if an animation moves them: a cache
+    // error the frame warns about) or dynamic (drawn every update though nothing animates them); by default a caster
+    // is static when none of the playing animations moves it (scene/scene_casters.h).
+    std::vector<std::string> forcedStatic;
+    std::vector<std::string> forcedDynamic;
 
     bool operator==(const CasterSettings&) const = default;
 };

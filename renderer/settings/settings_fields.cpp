@@ -434,6 +434,24 @@ std::vector<SettingsField> buildLightFields(KeyOf keyOf, LightAccess light) {
                                  "lights' cube faces (a plane does not carry across a face edge)",
                                  at([](auto& l) -> auto& { return l.shadow.receiverPlaneBias; })),
                        kVariant));  // RECEIVER_PLANE is compiled in only with a filter that takes several taps
+    // When its views render again (the planner decides from these)
+    f.push_back(tagged(enumField<ShadowUpdate>(keyOf("shadow.update"),
+                                        "When the light's views render again: everyFrame; onChange (a key, the light "
+                                        "space or a caster in the view's volume moved); cachedStatic (static casters "
+                                        "rendered once into a cached depth per view, moving ones drawn over a copy of "
+                                        "it within the rectangle they cover); everyNthFrame (what moved waits for the "
+                                        "Nth frame: shadow.updateInterval)",
+                                        {{ShadowUpdate::EveryFrame, "everyFrame"},
+                                         {ShadowUpdate::OnChange, "onChange"},
+                                         {ShadowUpdate::CachedStatic, "cachedStatic"},
+                                         {ShadowUpdate::EveryNthFrame, "everyNthFrame"}},
+                                        at([](auto& l) -> auto& { return l.shadow.update; })),
+                       kView));  // its views draw once more (cachedStatic builds its cached depth)
+    f.push_back(inUnit(intField(keyOf("shadow.updateInterval"),
+                                "everyNthFrame's N: views moved casters dirtied render on every Nth frame only", 2,
+                                60, {2, 3, 4, 6, 8, 16, 30, 60},
+                                at([](auto& l) -> auto& { return l.shadow.updateInterval; })),
+                       "frames"));
 
     // its projection
     f.push_back(tagged(boolField(keyOf("projection.autoFit"),
@@ -627,6 +645,19 @@ std::vector<SettingsField> buildGlobalFields() {
                                        "shadow maps and the accuracy reference. A path the scene lacks is a warning",
                                        10000, 4096, [](auto& s) -> auto& { return s.casters.excluded; }),
                        kView));
+    f.push_back(tagged(stringListField("casters.static",
+                                       "Scene nodes (paths, with their subtrees) forced static: a cachedStatic light "
+                                       "keeps them in its cached depth even when an animation moves them (a cache "
+                                       "error, warned about by node). By default what no playing animation moves is "
+                                       "static",
+                                       10000, 4096, [](auto& s) -> auto& { return s.casters.forcedStatic; }),
+                       kView));  // the cached static depth holds other casters
+    f.push_back(tagged(stringListField("casters.dynamic",
+                                       "Scene nodes (paths, with their subtrees) forced dynamic: a cachedStatic light "
+                                       "draws them at every update instead of caching them (casters.static wins where "
+                                       "both name a node)",
+                                       10000, 4096, [](auto& s) -> auto& { return s.casters.forcedDynamic; }),
+                       kView));
 
     // animation: which clips play and when (scene/scene_animation.h poses the scene from these)
     f.push_back(tagged(stringField("animation.play",
@@ -635,12 +666,11 @@ std::vector<SettingsField> buildGlobalFields() {
                                    "Skins and morph targets are not played",
                                    256, [](auto& s) -> auto& { return s.animation.play; }),
                        kView));
-    f.push_back(tagged(inUnit(floatField("animation.time",
+    f.push_back(inUnit(floatField("animation.time",
                                          "The time the scene is posed at: before an animation's first key or after "
                                          "its last, that key's pose holds (the editor's player loops)",
-                                         0, 1e6, [](auto& s) -> auto& { return s.animation.time; }),
-                              "seconds"),
-                       kView));
+                                  0, 1e6, [](auto& s) -> auto& { return s.animation.time; }),
+                       "seconds"));  // the posed scene's motion dirties the views it touches, not the key
 
     // the accuracy reference
     f.push_back(inUnit(intField("reference.softRays",

@@ -78,7 +78,12 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const CasterSelection& c
     if (reversed) glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glDepthFunc(reversed ? GL_GREATER : GL_LESS);
     glClearDepth(reversed ? 0.0 : 1.0);
-    glClear(GL_DEPTH_BUFFER_BIT);
+    if (casters.scissor) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(casters.scissor->x0, casters.scissor->y0, casters.scissor->x1 - casters.scissor->x0,
+                  casters.scissor->y1 - casters.scissor->y0);
+    }
+    if (casters.clear) glClear(GL_DEPTH_BUFFER_BIT);
     if (depthClamp)
         glEnable(GL_DEPTH_CLAMP);
     else
@@ -96,6 +101,7 @@ ShadowPassCounts ShadowPass::run(const GpuScene& scene, const CasterSelection& c
     counts.alphaTestedCasters = drawn.alphaTested;
     counts.trianglesDrawn = drawn.triangles;
     counts.drawCalls = drawn.drawCalls;
+    glDisable(GL_SCISSOR_TEST);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glDisable(GL_DEPTH_CLAMP);
     if (reversed) glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);

@@ -12,6 +12,7 @@
 #include "views/shadow_planner.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,10 +27,13 @@ void clearShadowMap(const ShadowMap& map, bool reversedZ);
 
 // The draws a shadow view holds, as indices into GpuScene::draws(): those that cast and whose bounding sphere meets
 // the light's volume (casterInVolume), in the scene's order. The one selection the pass and bench --planner's bare
-// draw take their casters from; a caller may narrow it (e.g. to the casters that moved) before ShadowPass::run.
+// draw take their casters from; a caller may narrow it (e.g. to a cachedStatic view's static or dynamic casters)
+// and restrict where it is drawn (docs/moving-scenes.md) before ShadowPass::run.
 struct CasterSelection {
     std::vector<std::uint32_t> draws;
-    int skipped = 0;  // casting draws outside the light's volume
+    int skipped = 0;                   // casting draws outside the light's volume
+    std::optional<TexelRect> scissor;  // only these texels are cleared and written; nullopt: all
+    bool clear = true;                 // false: draw over what the map holds (a copy of the cached static depth)
 };
 CasterSelection castersInVolume(const GpuScene& scene, const LightSpace& light);
 

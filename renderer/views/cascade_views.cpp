@@ -199,7 +199,12 @@ std::vector<ShadowView> buildCascadeViews(const ViewBuildInput& in, std::string&
         }
         // The eye on the light's side of the scene's bounding sphere, on the cascade's axis.
         const glm::dvec3 eye = basis[0] * cx + basis[1] * cy + basis[2] * (glm::dot(sceneCentre, basis[2]) + depthRadius);
-        const LightSpace space = orthoLightSpace(in.light, direction, eye, halfSize, 0.0, 2.0 * depthRadius);
+        LightSpace space = orthoLightSpace(in.light, direction, eye, halfSize, 0.0, 2.0 * depthRadius);
+        // A stable cascade's eye in light-view coordinates exactly (cx, cy, the depth), not -dot(basis, eye)
+        // rounded: as the camera moves, the depth terms stay the same numbers and x, y move by whole texels, so a
+        // moved cascade's texels are its old ones moved (the scrolling cache, views/cascade_scroll.h).
+        if (stable)
+            space.view[3] = glm::dvec4(-cx, -cy, -(glm::dot(sceneCentre, basis[2]) + depthRadius), 1.0);
         if (!allFinite(space.view) || !allFinite(space.projection) || !(halfSize > 0.0)) {
             why = "projection.fit: cascade " + std::to_string(i) + "'s matrices are not finite (check the camera, the "
                   "splits and the shadow distance)";

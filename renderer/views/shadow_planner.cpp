@@ -93,15 +93,105 @@ bool anyCasterIn(const std::vector<CasterSphere>& casters, const LightSpace& spa
     return std::any_of(casters.begin(), casters.end(), [&](const CasterSphere& c) { return casterInVolume(c, space); });
 }
 
+bool isStatic(const PlanInputs& in, std::size_t caster) {
+    return in.staticCasters && caster < in.staticCasters->size() && (*in.staticCasters)[caster];
+}
+
+// "Spinner moved", "car 1, car 2 moved", "car 1, car 2, car 3 and 4 more moved".
+std::string movedReason(const std::vector<const MovedCaster*>& moved) {
+    std::string names;
+    const std::size_t shown = std::min<std::size_t>(moved.size(), 3);
+    for (std::size_t i = 0; i < shown; ++i) names += (i ? ", " : "") + moved[i]->name;
+    if (moved.size() > shown) names += " and " + std::to_string(moved.size() - shown) + " more";
+    return names + " moved";
+}
+
+// How the casters' motion since the map was drawn touches a view whose keys, light space and geometry are unchanged.
+struct ViewMotion {
+    bool stale = false;                       // the map misses a pose: it must be drawn again
+    bool consecutive = false;                 // drawn at the previous frame's pose: `touching` is all that changed
+    std::vector<const MovedCaster*> touching; // moved casters it held before or holds now
+    std::string reason;
+};
+
+ViewMotion motionOf(const PlanInputs& in, const MapContents& held, const LightSpace& space) {
+    ViewMotion m;
+    const std::uint64_t pose = in.motion ? in.motion->pose : 0;
+    if (held.pose == pose) return m;
+    // `moved` is this frame's motion (pose - 1 to pose); a map drawn at an older pose, or at pose - 1 on a frame where
+    // nothing moves (it waited: everyNthFrame), missed a motion nobody lists any more.
+    if (!in.motion || held.pose + 1 != pose || in.motion->moved.empty()) {
+        m.stale = true;
+        m.reason = "casters moved while it was not drawn";
+        return m;
+    }
+    m.consecutive = true;
+    for (const MovedCaster& c : in.motion->moved)
+        if (casterInVolume(c.before, space) || casterInVolume(c.after, space)) m.touching.push_back(&c);
+    m.stale = !m.touching.empty();
+    if (m.stale) m.reason = movedReason(m.touching);
+    return m;
+}
+
+// A cachedStatic view where only casters moved since the previous frame: the rectangle the dynamic movers cover
+// (before and after), redrawn from the cached depth with the dynamic casters that can write in it, when that pays.
+// Static movers stay where the cache holds them (the cache error casters.static asks for), with a warning.
+void planStaticPlusDynamic(PlannedView& p, const PlanInputs& in, const ViewMotion& motion, ShadowPlan& plan) {
+    const LightSpace& space = p.view.space;
+    std::vector<const MovedCaster*> dynamicMovers;
+    for (const MovedCaster* c : motion.touching) {
+        if (!isStatic(in, c->caster)) {
+            dynamicMovers.push_back(c);
+            continue;
+        }
+        const std::string warning = "casters.static: " + c->name + " moved but is a static caster: light " +
+                                    std::to_string(p.view.light) +
+                                    "'s cached depth keeps it where it was (a cache error; list it in casters.dynamic)";
+        if (std::find(plan.warnings.begin(), plan.warnings.end(), warning) == plan.warnings.end())
+            plan.warnings.push_back(warning);
+    }
+    if (dynamicMovers.empty()) {
+        p.action = ViewAction::Keep;
+        p.cache = CacheState::Reused;
+        p.reason = "only static casters moved (" + movedReason(motion.touching) + "; its cached depth keeps them)";
+        return;
+    }
+    TexelRect rect;
+    for (const MovedCaster* c : dynamicMovers) {
+        rect.extend(casterTexels(c->before, space));
+        rect.extend(casterTexels(c->after, space));
+    }
+    std::vector<std::size_t> draw;
+    std::size_t staticInVolume = 0;
+    for (std::size_t i = 0; i < in.casters.size(); ++i) {
+        if (!casterInVolume(in.casters[i], space)) continue;
+        if (isStatic(in, i)) ++staticInVolume;
+        else if (casterTexels(in.casters[i], space).overlaps(rect)) draw.push_back(i);
+    }
+    p.action = ViewAction::Render;
+    p.reason = movedReason(dynamicMovers);
+    if (!staticPlusDynamicPays(staticInVolume)) {
+        p.cache = CacheState::Full;
+        p.reason += " (no static caster in its volume: its cached depth is empty)";
+        return;
+    }
+    p.cache = CacheState::StaticPlusDynamic;
+    p.rect = rect;
+    p.dynamicCasters = std::move(draw);
+}
+
 // Decides one view: its action, its reason and what its map holds once the frame has carried them out.
 // `layersNow`: its array's layer count this frame.
 void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow,
-            const std::shared_ptr<const Settings>& requested, GlobalKeyChanges& globals) {
+            const std::shared_ptr<const Settings>& requested, GlobalKeyChanges& globals, ShadowPlan& plan) {
     const PlannedView* before = in.previous ? in.previous->find(p.view.id()) : nullptr;
     // Its map still holds what it held: the same layer of an array that was not reallocated (the Renderer
     // reallocates an array when its layer count changes).
     const bool kept = before && before->holds && before->group == p.group && before->layer == p.layer &&
                       in.previous->layers.at(before->group) == layersNow;
+    const ShadowMapSettings& shadow = now.light.shadow;
+    const bool cachedStatic = shadow.update == ShadowUpdate::CachedStatic;
+    now.pose = in.motion ? in.motion->pose : 0;
     std::string reason;
     if (!in.forceReason.empty()) reason = in.forceReason;
     else if (!in.previous) reason = "first frame";
@@ -109,27 +199,95 @@ void decide(PlannedView& p, const PlanInputs& in, MapContents now, int layersNow
     else if (!before->holds) reason = "its map holds nothing yet (new or reallocated while unseen)";
     else reason = changeReason(*before->holds, now, p.view.kind, kept, globals);
 
+    // A stable cascade of a cachedStatic light that only followed the camera: its cached static depth scrolls when
+    // the move is whole texels of the light's grid; otherwise the reason says why it is drawn whole.
+    CascadeScroll scroll;
+    if (!reason.empty() && in.forceReason.empty() && cachedStatic && kept && before->holds->staticCache &&
+        p.view.kind == ShadowViewKind::Cascade && now.light.projection.cascadeFit == CascadeFit::Stable &&
+        changedKeys(*before->holds, now, globals).empty() && now.sceneFingerprint == before->holds->sceneFingerprint) {
+        scroll = cascadeScroll(before->holds->viewProjection, now.viewProjection, p.view.space.resolution);
+        if (scroll.shift && cascadePages(p.view.space, {0, 0, 1, 1}).empty())
+            scroll = {std::nullopt, "its centre is off its texel grid or its resolution is odd"};
+        if (!scroll.shift) reason += " (not scrolled: " + scroll.why + ")";
+    }
+
+    // Only casters moved: the views they touch (before or now) draw again, by the light's policy.
+    ViewMotion motion;
     if (reason.empty()) {
+        motion = motionOf(in, *before->holds, p.view.space);
+        if (motion.stale) reason = motion.reason;
+        else if (shadow.update == ShadowUpdate::EveryFrame) reason = "shadow.update everyFrame";
+    }
+    const bool onlyMotion = motion.stale;
+    const auto reuse = [&](std::string why, bool posedNow) {
         p.action = ViewAction::Keep;
-        p.reason = "unchanged: light, casters and shadow settings are the same";
+        p.cache = CacheState::Reused;
+        p.reason = std::move(why);
         p.holds = before->holds;
-    } else if (in.cameraViewProjection &&
-               !volumesOverlap(p.view.space.volumeViewProjection(), *in.cameraViewProjection)) {
+        if (posedNow) p.holds->pose = now.pose;
+    };
+    if (reason.empty()) {
+        reuse(motion.consecutive ? "unchanged: nothing that moved is in its volume"
+                                 : "unchanged: light, casters and shadow settings are the same",
+              true);
+        return;
+    }
+    if (onlyMotion && shadow.update == ShadowUpdate::EveryNthFrame &&
+        in.frame % std::uint64_t(std::max(shadow.updateInterval, 1)) != 0) {
+        const std::uint64_t n = std::uint64_t(std::max(shadow.updateInterval, 1));
+        reuse("waits " + std::to_string(n - in.frame % n) + " frame(s) for its update (shadow.update everyNthFrame, " +
+                  "every " + std::to_string(n) + "): " + reason,
+              false);
+        return;
+    }
+    if (in.cameraViewProjection && !volumesOverlap(p.view.space.volumeViewProjection(), *in.cameraViewProjection)) {
         // A map no visible pixel reads is rendered once the camera sees its volume.
         p.action = ViewAction::SkipUnseen;
+        p.cache = CacheState::Reused;
         p.reason = "skipped: its volume misses the camera's view";
         if (kept) p.holds = before->holds;
-    } else if (!anyCasterIn(in.casters, p.view.space)) {
+        return;
+    }
+    if (scroll.shift) {
+        // Every dynamic caster is drawn over the scrolled static depth: the motion since its last draw is covered.
+        p.action = ViewAction::Render;
+        p.cache = CacheState::Scrolled;
+        p.fromStaticCache = true;
+        p.scroll = *scroll.shift;
+        p.reason = describeScroll(p.scroll, p.view.space.resolution);
+        p.holds = std::move(now);
+        p.holds->settings = requested;
+        p.holds->staticCache = true;
+        return;
+    }
+    if (onlyMotion && cachedStatic && motion.consecutive && before->holds->staticCache) {
+        planStaticPlusDynamic(p, in, motion, plan);
+        if (p.action == ViewAction::Keep) {
+            p.holds = before->holds;
+            p.holds->pose = now.pose;
+            return;
+        }
+        p.fromStaticCache = true;
+        p.holds = std::move(now);
+        p.holds->settings = requested;
+        p.holds->staticCache = true;
+        return;
+    }
+    if (!anyCasterIn(in.casters, p.view.space)) {
         p.action = ViewAction::Clear;
+        p.cache = CacheState::Full;
         p.reason = "skipped: no caster in its volume (map cleared)";
         p.holds = std::move(now);
         p.holds->settings = requested;
-    } else {
-        p.action = ViewAction::Render;
-        p.reason = std::move(reason);
-        p.holds = std::move(now);
-        p.holds->settings = requested;
+        return;
     }
+    p.action = ViewAction::Render;
+    p.cache = CacheState::Full;
+    p.fromStaticCache = cachedStatic;
+    p.reason = std::move(reason);
+    p.holds = std::move(now);
+    p.holds->settings = requested;
+    p.holds->staticCache = cachedStatic;
 }
 
 }  // namespace
@@ -220,11 +378,25 @@ ShadowPlan planShadowViews(const PlanInputs& in) {
         MapContents now{nullptr, light, in.sceneFingerprint, p.view.space.viewProjection(),
                         p.view.kind == ShadowViewKind::Cascade && in.camera ? cascadeDepthBounds(light, *in.camera)
                                                                             : std::nullopt};
-        decide(p, in, std::move(now), plan.layers.at(p.group), requested, globals);
+        decide(p, in, std::move(now), plan.layers.at(p.group), requested, globals, plan);
         if (p.holds && !p.holds->settings) p.holds->settings = requested = std::make_shared<const Settings>(in.settings);
     }
     return plan;
 }
+
+const char* cacheStateName(CacheState state) {
+    switch (state) {
+    case CacheState::Reused: return "reused";
+    case CacheState::StaticPlusDynamic: return "static + dynamic";
+    case CacheState::Scrolled: return "scrolled";
+    case CacheState::Full: return "full";
+    }
+    return "?";
+}
+
+std::string describeUpdate(const PlannedView& view) { return std::string(cacheStateName(view.cache)) + ": " + view.reason; }
+
+bool staticPlusDynamicPays(std::size_t staticInVolume) { return staticInVolume > 0; }
 
 int viewsToRender(const ShadowPlan& plan) {
     return int(std::count_if(plan.views.begin(), plan.views.end(),

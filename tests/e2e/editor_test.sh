@@ -62,9 +62,10 @@ light.update(range=0.0, color=[1.0, 1.0, 1.0], enabled=True, castsShadows=True,
              shadow=shipped.pop("shadow"), projection=shipped.pop("projection"))
 shipped.update(schemaVersion=2, ambient=ambient, useSceneLights=scene_lights, lights=[light])
 shipped["lights"][0]["shadow"]["resolution"] = 1024
+shipped["lights"][0]["shadow"].update(update="onChange", updateInterval=4)
 # Keys newer than the schema-1 file, at their defaults: the editor saves every key.
 shipped["camera"]["sceneCamera"] = -1
-shipped["casters"] = {"excluded": []}
+shipped["casters"] = {"excluded": [], "static": [], "dynamic": []}
 shipped["animation"] = {"play": "all", "time": 0.0}
 shipped["reference"] = {"softRays": 256}
 light["size"] = 0.0

@@ -2,6 +2,7 @@
 // play, pause, loop, speed and scrubbing move animation.time, the shown scene follows it, and a saved preset records
 // the time and the animation.
 #include "editor_harness.h"
+#include "editor/view_rows.h"
 #include "settings/preset_io.h"
 
 #include <glm/geometric.hpp>
@@ -105,6 +106,36 @@ TEST_F(EditorTimeline, PlayPauseLoopSpeedAndScrubMoveTheTimeAndTheScene) {
     ASSERT_TRUE(saved.settings) << saved.errors.front();
     EXPECT_EQ(saved.settings->animation.play, "Move");
     EXPECT_FLOAT_EQ(saved.settings->animation.time, h.state().settings.animation.time);
+}
+
+// The Stats panel's views table while the scene plays: the change to shadow.update cachedStatic draws the light's view
+// in full (its cached static depth is built); with only the Spinner moving ("Spin") it is drawn static + dynamic (the
+// cached depth and the Spinner over it) and says the Spinner moved; paused, a redraw for an overlay reuses it.
+TEST_F(EditorTimeline, TheViewsTableShowsEachViewsCacheStateWithItsReason) {
+    EditorHarness& h = *harness;
+    h.click("animation.play");
+    h.click("animation.play=Spin");
+    h.click("shadow.update");
+    h.click("shadow.update=cachedStatic");
+    ASSERT_EQ(h.state().settings.lights[0].shadow.update, ShadowUpdate::CachedStatic);
+    ASSERT_TRUE(h.reveal("stats.views"));
+    auto firstRow = [&] {
+        const std::vector<ViewRow> rows = viewRows(h.state().stats, h.state().viewMilliseconds);
+        return rows.empty() ? ViewRow{} : rows.front();
+    };
+    h.settle();
+    EXPECT_EQ(firstRow().update, "full");
+    EXPECT_EQ(firstRow().why, "shadow.update changed");
+    h.click("timeline.play");
+    play(0.5);
+    EXPECT_EQ(firstRow().update, "static + dynamic") << firstRow().why;
+    EXPECT_EQ(firstRow().why, "Spinner moved");
+    h.saveWindow("views_table_static_dynamic");
+    h.click("timeline.play");  // pause
+    h.settle();
+    h.click("viewport.frustum");  // a redraw that changes no shadow
+    h.frame(2);
+    EXPECT_EQ(firstRow().update, "reused") << firstRow().why;
 }
 
 }  // namespace shadowlab::editor::test

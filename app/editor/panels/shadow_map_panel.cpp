@@ -110,6 +110,10 @@ void drawShadowMapPanel(PanelContext& ctx) {
     ImGui::Separator();
     comboField(state, key("shadow.cullMode").c_str(), "cull (shadow pass)");
     checkboxField(state, key("shadow.reversedZ").c_str(), "Reversed-Z (near 1, far 0)");
+    ImGui::Separator();
+    comboField(state, key("shadow.update").c_str(), "update (moving scenes)");
+    if (state.settings.lights[state.selectedLight].shadow.update == ShadowUpdate::EveryNthFrame)
+        comboField(state, key("shadow.updateInterval").c_str(), "every N frames");
     ImGui::PopItemWidth();
 }
 

@@ -43,8 +43,8 @@ void plot(const char* label, const std::deque<float>& values, ImVec2 size) {
     ImGui::PlotLines("##plot", v.data(), int(v.size()), 0, overlay, 0.0f, top, size);
 }
 
-// One row per shadow view of the frame (each cube face, each cascade marked with its colour): whether it rendered, its
-// map's memory and its time, with the planner's reason on the line below, wrapped at the panel's edge. Columns are as
+// One row per shadow view of the frame (each cube face, each cascade marked with its colour): what its map got (reused,
+// static + dynamic, full), its map's memory and its time, with the planner's reason on the line below, wrapped at the panel's edge. Columns are as
 // wide as their widest cell and the reason has the panel's whole width, so nothing is cut in a narrow sidebar (a table
 // gave the reason a sliver beside cascade names).
 void viewsTable(EditorState& state) {
@@ -56,7 +56,7 @@ void viewsTable(EditorState& state) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const char* msHeader = "ms";  // CPU or GPU: the timing line above says which (the column stays narrow)
     const float swatch = ImGui::GetTextLineHeight() * 0.8f + style.ItemInnerSpacing.x;  // cascadeSwatch's width
-    float nameW = ImGui::CalcTextSize("view").x, passW = ImGui::CalcTextSize("skipped").x;
+    float nameW = ImGui::CalcTextSize("view").x, passW = ImGui::CalcTextSize("static + dynamic").x;
     float memoryW = ImGui::CalcTextSize("memory").x, msW = ImGui::CalcTextSize(msHeader).x;
     for (const ViewRow& row : rows) {
         nameW = std::max(nameW, (row.cascade >= 0 ? swatch : 0.0f) + ImGui::CalcTextSize(row.name.c_str()).x);
@@ -69,7 +69,7 @@ void viewsTable(EditorState& state) {
     ImGui::BeginGroup();
     ImGui::TextDisabled("view");
     ImGui::SameLine(xPass);
-    ImGui::TextDisabled("pass");
+    ImGui::TextDisabled("update");
     ImGui::SameLine(xMemory);
     ImGui::TextDisabled("memory");
     ImGui::SameLine(xMs);
@@ -81,9 +81,9 @@ void viewsTable(EditorState& state) {
         state.controls.recordLastItem("stats.view=" + row.name);
         ImGui::SameLine(xPass);
         if (row.ran)
-            ImGui::TextUnformatted("ran");
+            ImGui::TextUnformatted(row.update.c_str());
         else
-            ImGui::TextDisabled("skipped");
+            ImGui::TextDisabled("%s", row.update.c_str());
         ImGui::SameLine(xMemory);
         ImGui::TextUnformatted(row.memory.c_str());
         ImGui::SameLine(xMs);
