@@ -205,7 +205,7 @@ int main(int argc, char** argv) {
                          "shadow.update draws them and measuring the last frame (shadow.update axes then matter)")
         ->check(CLI::Range(2, 1000))
         ->type_name("K");
-    sweepCmd->add_option("--step", sweep.step, "with --play: seconds per frame (default 1/30)");
+    sweepCmd->add_option("--step", sweep.step, "with --play: seconds per frame (default 1/30)")->type_name("SECONDS");
     sweepCmd->add_option("--json", sweep.json, "write every point's numbers and settings as JSON");
     sweepCmd->add_option("--csv", sweep.csv, "write every point's numbers and settings as CSV");
     sweepCmd->add_option("--chart", sweep.chart, "write the chart (cost vs wrong pixels, the front, the preset) as PNG");

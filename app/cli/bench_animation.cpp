@@ -131,22 +131,29 @@ bool BenchAnimationOptions::requested(const CLI::App& bench) const {
 }
 
 void addBenchAnimationOptions(CLI::App& bench, BenchAnimationOptions& o) {
-    bench.add_option("--animation", o.animation,
+    CLI::Option* animation = bench.add_option("--animation", o.animation,
                      "play the scene's animation (animation.play: a name or index; alone: the settings' choice) and "
                      "time each frame's shadow pass with the lights' shadow.update against every view re-rendered")
         ->expected(0, 1)
         ->type_name("[NAME|INDEX]");
-    bench.add_option("--step", o.step, "with --animation: seconds per frame (default 1/30)");
+    bench.add_option("--step", o.step, "with --animation: seconds per frame (default 1/30)")
+        ->type_name("SECONDS")
+        ->needs(animation);
     bench.add_option("--time", o.time, "with --animation: the first frame's animation.time (default: the settings')")
-        ->type_name("SECONDS");
-    bench.add_flag("--cache-error", o.cacheError,
-                   "with --animation: each shadow.update policy's frames against the exact reference and against a "
-                   "full re-render (the cache error), beside the ms it saves");
+        ->type_name("SECONDS")
+        ->needs(animation);
+    CLI::Option* cacheError =
+        bench.add_flag("--cache-error", o.cacheError,
+                       "with --animation: each shadow.update policy's frames against the exact reference and against "
+                       "a full re-render (the cache error), beside the ms it saves")
+            ->needs(animation);
     bench.add_option("--intervals", o.intervals, "with --cache-error: everyNthFrame's N values")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
+        ->check(CLI::Range(1, 1000))
+        ->needs(cacheError);
     bench.add_option("--light", o.light, "with --cache-error: the light measured (default: the only casting one)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::NonNegativeNumber)
+        ->needs(cacheError);
 }
 
 int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o) {

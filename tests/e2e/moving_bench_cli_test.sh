@@ -97,4 +97,5 @@ PY
 expect_error no-animation "has no animation to play" "$SHADOWLAB" bench --scene builtin:textbook --width 64 \
   --height 36 --animation --frames 2
 expect_error bad-step "--step 'x': not a finite number" "$SHADOWLAB" bench "${boxes[@]}" --animation Spin --step x
+expect_error cache-error-alone "cache-error requires --animation" "$SHADOWLAB" bench --scene builtin:textbook --cache-error
 finish
