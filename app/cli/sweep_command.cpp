@@ -165,8 +165,8 @@ int runSweep(const SweepOptions& options) {
                   << "x" << result.height
                   << (result.playFrames > 0
                           ? ", each point played " + std::to_string(result.playFrames) + " frames of " +
-                                std::to_string(result.playStep) +
-                                " s from its animation.time: shadow ms = median of frames 1.." +
+                                nlohmann::json(result.playStep).dump() +
+                                " s from its animation.time: shadow ms = mean of frames 1.." +
                                 std::to_string(result.playFrames - 1) + " as its shadow.update drew them, measured at "
                                 "frame " + std::to_string(result.playFrames - 1) + "\n"
                           : ", median of " + std::to_string(result.frames) + " frames per point, shadow pass forced\n")

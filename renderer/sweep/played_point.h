@@ -5,8 +5,8 @@
 // point's own: frame 0 draws every view (the cache fills), then the point's policy decides what each frame redraws,
 // and frame K-1 is measured against the exact reference at its time. For everyNthFrame with N dividing K (--play 8
 // and N = 2, 4, 8) frame K-1 is the last before an update: N-1 frames of motion stale, the most the
-// policy lets a map lag. The shadow ms is the median of frames 1..K-1 as drawn (not forced): what the policy costs
-// per frame while the scene moves (wall ms per frame: frames 0..K-2, the last is mostly the measurement). Needs a
+// policy lets a map lag. The shadow ms is the mean of frames 1..K-1 as drawn (not forced): what the policy costs
+// per frame while the scene moves, everyNthFrame's update frames spread over the frames between (wall ms per frame: frames 0..K-2, the last is mostly the measurement). Needs a
 // current GL 4.5 context.
 #include "accuracy/accuracy_meter.h"
 #include "frame/timed_frames.h"
@@ -17,7 +17,7 @@ namespace shadowlab {
 
 struct PlayedPoint {
     std::string error;          // "" unless a frame failed or the animation cannot play
-    TimedFrames timed;          // medians over frames 1..K-1 as drawn; .last = frame K-1's stats
+    TimedFrames timed;          // means over frames 1..K-1 as drawn (min: the fastest); .last = frame K-1's stats
     AccuracyReport report;      // frame K-1 against the reference at its time
     double measuredTime = 0.0;  // animation.time of frame K-1
     double viewsRenderedPerFrame = 0.0;  // frames 1..K-1
