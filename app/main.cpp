@@ -1,5 +1,6 @@
 // shadowlab: the command line. Each subcommand lives in app/cli; the renderer does the work.
 #include "cli/animation_options.h"
+#include "cli/bench_animation.h"
 #include "cli/bench_command.h"
 #include "cli/bench_lights.h"
 #include "cli/bench_planner.h"
@@ -84,6 +85,8 @@ int main(int argc, char** argv) {
                        "builtin:city-traffic)")
         ->excludes(benchLights)
         ->excludes(benchPlanner);
+    cli::BenchAnimationOptions benchAnimation;
+    cli::addBenchAnimationOptions(*benchCmd, benchAnimation);
 
     editor_window::EditOptions edit;
     CLI::App* editCmd = app.add_subcommand("edit", "Open the editor window (the default with no command)");
@@ -210,6 +213,12 @@ int main(int argc, char** argv) {
     sweepCmd->add_option("--height", sweep.height, "view height")->capture_default_str();
     sweepCmd->add_option("--frames", sweep.frames, "timed frames per point (median)")->capture_default_str()->check(
         CLI::Range(1, 100000));
+    sweepCmd->add_option("--play", sweep.play,
+                         "play each point's animation K frames from its animation.time, timing the shadow pass as its "
+                         "shadow.update draws them and measuring the last frame (shadow.update axes then matter)")
+        ->check(CLI::Range(2, 1000))
+        ->type_name("K");
+    sweepCmd->add_option("--step", sweep.step, "with --play: seconds per frame (default 1/30)")->type_name("SECONDS");
     sweepCmd->add_option("--json", sweep.json, "write every point's numbers and settings as JSON");
     sweepCmd->add_option("--csv", sweep.csv, "write every point's numbers and settings as CSV");
     sweepCmd->add_option("--chart", sweep.chart, "write the chart (cost vs wrong pixels, the front, the preset) as PNG");
@@ -276,6 +285,7 @@ int main(int argc, char** argv) {
     }
 
     if (*renderCmd) return cli::runRender(render);
+    if (*benchCmd && benchAnimation.requested(*benchCmd)) return cli::runBenchAnimation(bench, benchAnimation);
     if (*benchCmd)
         return bench.referenceUpdate ? cli::runBenchReferenceUpdate(bench)
                : bench.planner       ? cli::runBenchPlanner(bench)

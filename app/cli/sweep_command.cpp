@@ -1,6 +1,8 @@
 #include "cli/sweep_command.h"
 
+#include "accuracy/motion.h"
 #include "cli/command_input.h"
+#include "cli/measure_motion.h"
 #include "cli/progress.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
@@ -93,6 +95,17 @@ int runSweep(const SweepOptions& options) {
         return 2;
     }
     if (options.frames < 1) return fail("--frames must be at least 1");
+    // --play K --step S: points evaluated along their animation (sweep/played_point.h).
+    std::optional<double> playStep;
+    if (!options.step.empty()) {
+        std::string error;
+        if (options.play == 0) return fail("--step: with --play K only (the seconds between played frames)");
+        playStep = parseFiniteOption(options.step, "--step", error);
+        if (!playStep) return fail(error);
+        if (*playStep < 0.0 || *playStep > kMaxAnimationStepSeconds)
+            return fail("--step " + options.step + ": seconds per frame in [0, " +
+                        std::to_string(int(kMaxAnimationStepSeconds)) + "]");
+    }
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkOutputs({{options.json, "--json"}, {options.csv, "--csv"}, {options.chart, "--chart"}},
@@ -118,6 +131,8 @@ int runSweep(const SweepOptions& options) {
         run.width = options.width;
         run.height = options.height;
         run.frames = options.frames;
+        run.playFrames = options.play;
+        if (!options.step.empty()) run.playStep = *playStep;
         // Each finished point is in the files at once: a point that fails later, or a kill, loses none before it.
         std::string writeError;
         run.onResult = [&](const SweepResult& soFar) {
@@ -161,7 +176,14 @@ int runSweep(const SweepOptions& options) {
 
         const bool cpu = result.softwareRasterizer();
         std::cout << "sweep: " << scene.name << " (" << result.triangles << " triangles), view " << result.width
-                  << "x" << result.height << ", median of " << result.frames << " frames per point, shadow pass forced\n"
+                  << "x" << result.height
+                  << (result.playFrames > 0
+                          ? ", each point played " + std::to_string(result.playFrames) + " frames of " +
+                                nlohmann::json(result.playStep).dump() +
+                                " s from its animation.time: shadow ms = mean of frames 1.." +
+                                std::to_string(result.playFrames - 1) + " as its shadow.update drew them, measured at "
+                                "frame " + std::to_string(result.playFrames - 1) + "\n"
+                          : ", median of " + std::to_string(result.frames) + " frames per point, shadow pass forced\n")
                   << "gl: " << result.glRenderer << "\ntimes: " << result.timingSource
                   << (cpu ? " -- CPU time of a software rasterizer, not GPU time" : "") << "\n";
         std::size_t labelWidth = 5;

@@ -18,6 +18,8 @@ struct SweepOptions {
     std::string json, csv, chart;   // optional outputs
     int chartWidth = 1200;
     int chartHeight = 700;
+    int play = 0;      // --play K: each point plays K frames of its animation (played_point.h); 0 = not played
+    std::string step;  // --step S with --play, seconds per frame as typed ("" = 1/30)
 };
 
 // 0 on success; 2 for a bad axis, key, value or option (before any work); 1 when the work failed.

@@ -172,6 +172,8 @@ MismatchCause AccuracyReport::mainCause() const {
 
 struct AccuracyMeter::Impl {
     Renderer renderer;
+    Renderer* toolRenderer = nullptr;  // setToolRenderer: draws the tool frame instead of `renderer`
+    FrameStats lastToolFrame;
     RenderTarget toolTarget;
     GBufferPass gbuffer;
 
@@ -230,7 +232,9 @@ struct AccuracyMeter::Impl {
         // The shadow camera sees through the same view (this target's aspect).
         const std::optional<FitCamera> fit =
             shadowCamera ? std::optional<FitCamera>(FitCamera{*shadowCamera, double(width) / height}) : std::nullopt;
-        return renderer.render(drawn, toolSettings, camera, toolTarget, fit ? &*fit : nullptr);
+        lastToolFrame = (toolRenderer ? *toolRenderer : renderer)
+                            .render(drawn, toolSettings, camera, toolTarget, fit ? &*fit : nullptr);
+        return lastToolFrame;
     }
 
     // The true boundary in this light space's texels (rebuilt when the map's size or projection changed).
@@ -258,6 +262,22 @@ AccuracyMeter::~AccuracyMeter() = default;
 void AccuracyMeter::sceneChanged() {
     impl_->dropScene();
     impl_->renderer.sceneChanged();
+}
+
+void AccuracyMeter::setToolRenderer(Renderer* renderer) { impl_->toolRenderer = renderer; }
+
+const FrameStats& AccuracyMeter::lastToolFrame() const { return impl_->lastToolFrame; }
+
+FrameStats AccuracyMeter::drawToolFrame(const Scene& scene, const Settings& given, const Camera& camera, int width,
+                                        int height) {
+    std::string error;
+    const std::optional<Settings> settings = measuredSettings(given, scene, width, height, error);
+    if (!settings) {
+        FrameStats failed;
+        failed.error = error;
+        return failed;
+    }
+    return impl_->renderToolFrame(scene, *settings, camera, width, height);
 }
 
 AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given, const Camera& camera, int width,

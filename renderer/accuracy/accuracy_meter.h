@@ -8,6 +8,7 @@
 #include "accuracy/mismatch_cause.h"
 #include "accuracy/soft_metrics.h"
 #include "frame/camera.h"
+#include "frame/frame_stats.h"
 #include "scene/scene.h"
 #include "settings/settings.h"
 
@@ -21,6 +22,8 @@
 #include <vector>
 
 namespace shadowlab {
+
+class Renderer;
 
 // Shared between the measuring thread and a UI: how far it got, what it is doing, and a cancel request.
 struct AccuracyProgress {
@@ -204,6 +207,16 @@ public:
 
     // Drops every cache (BVH, reference) — call after editing the scene in place.
     void sceneChanged();
+
+    // Playing an animation under several shadow.update policies (bench --animation --cache-error, sweep --play):
+    // the tool frame is drawn by `renderer` (null: the meter's own), so each policy keeps its own maps and cached
+    // depths from frame to frame while all share one reference per pose. The caller keeps it alive while it is set.
+    void setToolRenderer(Renderer* renderer);
+    // Draws the tool frame measure() would draw (its settings, size, renderer) without measuring it: a played frame
+    // between two measured ones. Its stats; the caller's renderer waits for their timings.
+    FrameStats drawToolFrame(const Scene& scene, const Settings& settings, const Camera& camera, int width, int height);
+    // The stats of the last tool frame (measure(), remeasure() or drawToolFrame()).
+    const FrameStats& lastToolFrame() const;
 
 private:
     struct Impl;

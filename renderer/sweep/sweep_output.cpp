@@ -31,7 +31,7 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
     nlohmann::json values = nlohmann::json::object();
     for (std::size_t a = 0; a < result.axes.size() && a < p.values.size(); ++a) values[result.axes[a].key] = p.values[a];
     const AccuracyNumbers& n = p.accuracy;
-    return {{"label", p.label},
+    nlohmann::json point = {{"label", p.label},
             {"values", values},
             {"shadowPassMs", p.shadowMs},
             {"momentsPassMs", p.momentsMs},
@@ -63,6 +63,11 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
             {"warnings", p.warnings},
             {"error", p.error},
             {"settings", presetToJson(p.settings)}};
+    if (result.playFrames > 0) {
+        point["playedTime"] = p.playedTime;
+        point["viewsRenderedPerFrame"] = p.viewsRenderedPerFrame;
+    }
+    return point;
 }
 
 std::string csvField(const std::string& text) {
@@ -105,6 +110,7 @@ nlohmann::json sweepToJson(const SweepResult& result) {
                           {"frontError", sweepErrorName(sweepSoftError(result))},
                           {"referenceMs", result.referenceMs},
                           {"wallMs", result.wallMs}};
+    if (result.playFrames > 0) doc["play"] = {{"frames", result.playFrames}, {"step", result.playStep}};
     if (result.presetPoint < result.points.size())
         doc["presetPoint"] = result.presetPoint;
     else if (result.preset)

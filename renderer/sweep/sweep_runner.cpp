@@ -5,6 +5,7 @@
 #include "scene/scene_animation.h"
 #include "settings/settings_fields.h"
 #include "sweep/pareto_front.h"
+#include "sweep/played_point.h"
 
 #include <algorithm>
 #include <chrono>
@@ -78,6 +79,8 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
     result.width = options.width;
     result.height = options.height;
     result.frames = options.frames;
+    result.playFrames = options.playFrames;
+    result.playStep = options.playFrames > 0 ? options.playStep : 0.0;
     result.triangles = scene.triangleCount();
     auto fail = [&](std::string error) {
         result.ok = false;
@@ -100,6 +103,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
                             std::to_string(point.settings.lights[i].shadow.resolution) +
                             " is above this GPU's GL_MAX_TEXTURE_SIZE " + std::to_string(info.maxTextureSize));
     AccuracyMeter meter;
+    std::optional<Scene> playedScene;  // sweep --play: the copy the points are posed on (alive as long as the meter)
     std::unique_ptr<BareDepthDraw> bare;
     std::vector<std::optional<SweepPointResult>> measured(plan.points.size());  // by plan index
 
@@ -140,7 +144,18 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         const Camera camera = options.camera && point.settings.camera == base.camera
                                   ? *options.camera
                                   : cameraFor(point.settings.camera, *posed, aspect);
-        const TimedFrames timed = timeFrames(renderer, *posed, point.settings, camera, target, options.frames);
+        // Played (sweep --play): timed along the animation and measured at its last frame, by the point's policy.
+        std::optional<PlayedPoint> played;
+        if (options.playFrames > 0) {
+            if (!playedScene) playedScene = scene;
+            played = playPoint(meter, *playedScene, point.settings, camera, options.width, options.height,
+                               options.playFrames, options.playStep, progress);
+            if (!played->error.empty()) return played->error;
+            r.playedTime = played->measuredTime;
+            r.viewsRenderedPerFrame = played->viewsRenderedPerFrame;
+        }
+        const TimedFrames timed =
+            played ? played->timed : timeFrames(renderer, *posed, point.settings, camera, target, options.frames);
         if (!timed.ok) return timed.error;
         result.timingSource = timed.timingSource;
         r.warnings = timed.last.warnings;
@@ -180,7 +195,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         if (progress) progress->setStage("measuring " + r.label);
         const auto measureStart = Clock::now();
         const AccuracyReport report =
-            meter.measure(*posed, point.settings, camera, options.width, options.height, progress);
+            played ? played->report : meter.measure(*posed, point.settings, camera, options.width, options.height, progress);
         if (report.cancelled) return std::nullopt;
         if (!report.ok) return report.error;
         r.measureMs = msSince(measureStart);

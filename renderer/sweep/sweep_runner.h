@@ -46,6 +46,9 @@ struct SweepPointResult {
     bool referenceReused = false;     // the reference came from the sweep's cache
     double measureMs = 0.0;
     bool onFront = false;
+    // sweep --play (played_point.h): the animation.time frame K-1 was measured at, the views drawn per frame.
+    double playedTime = 0.0;
+    double viewsRenderedPerFrame = 0.0;
 
     std::string error;  // not empty: the point failed, and why; its numbers are unset, it is on no front or chart
     bool failed() const { return !error.empty(); }
@@ -65,6 +68,8 @@ struct SweepResult {
     std::string glRenderer;
     std::size_t triangles = 0;
     int width = 0, height = 0, frames = 0;
+    int playFrames = 0;     // sweep --play K (0: not played)
+    double playStep = 0.0;  // its seconds per frame
     double referenceMs = 0.0;  // the reference's work (G-buffer, BVH, shadow rays), summed over its computations
     int references = 0;        // how often it was computed: once, unless an axis moves the light or the camera
     double wallMs = 0.0;       // the whole sweep
@@ -79,6 +84,10 @@ struct SweepRunOptions {
     // The view to time and measure (the editor's orbit camera); unset: each point's camera settings (auto-framed
     // unless they say otherwise). A point whose camera.* keys differ from the base's always uses its own.
     std::optional<Camera> camera;
+    // > 0: each point plays this many frames of its animation, `playStep` seconds apart, from its animation.time,
+    // and is timed along them and measured at the last (played_point.h), so shadow.update axes matter.
+    int playFrames = 0;
+    double playStep = 1.0 / 30.0;
     // Called after each point (a failed one too) with the sweep so far: the finished points in plan order, the
     // front among them. The CLI rewrites its JSON and CSV from it, so a point that fails later loses nothing.
     std::function<void(const SweepResult& soFar)> onResult;
