@@ -109,6 +109,9 @@ int main(int argc, char** argv) {
     measureCmd->add_option("--overlay", measure.overlay, "write the error overlay as PNG");
     measureCmd->add_option("--cause-overlay", measure.causeOverlay,
                            "write the overlay coloured by cause (why each mismatched pixel is wrong) as PNG");
+    measureCmd->add_option("--soft-overlay", measure.softOverlay,
+                           "one light with a size: write its light bleeding (cyan) and over-darkening (orange) against "
+                           "the soft reference as PNG");
     measureCmd->add_option("--light", measure.light,
                            "measure only light N (default: every shadow-casting light, then the whole picture; the "
                            "overlays show the union, each pixel coloured by its worst light)")

@@ -1,7 +1,10 @@
 #version 450 core
 // The shadow map as a picture: stored depth (or a spot light's linear depth) stretched over uRange to black..white,
-// texels no caster wrote (depth 1) in blue, a checkerboard outside the map, and a texel grid when zoomed in.
+// texels no caster wrote (depth 1) in blue, a checkerboard outside the map, and a texel grid when zoomed in. Or, with
+// uChannel k > 0, the k-th stored moment of a moments technique's layer stretched over uRange (no "no caster" there).
 layout(binding = 0) uniform sampler2D uDepth;  // read with a sampler without comparison
+layout(binding = 1) uniform sampler2D uMoments;  // the view's moments layer (uChannel > 0)
+uniform int uChannel;      // 0: depth; 1..4: that moment
 
 uniform vec2 uUvMin;       // map uv at the view's bottom-left corner
 uniform vec2 uUvMax;       // ... and top-right
@@ -31,12 +34,15 @@ void main() {
         outColor = vec4(vec3(((check.x + check.y) & 1) == 0 ? 0.10 : 0.14), 1.0);
         return;
     }
-    ivec2 size = textureSize(uDepth, 0);
+    ivec2 size = uChannel > 0 ? textureSize(uMoments, 0) : textureSize(uDepth, 0);
     vec2 texelPos = uv * vec2(size);
-    float stored = texelFetch(uDepth, min(ivec2(texelPos), size - 1), 0).r;
-    if (uReversedZ) stored = 1.0 - stored;
     vec3 color;
-    if (stored >= 1.0) {
+    float stored = uChannel > 0 ? 0.0 : texelFetch(uDepth, min(ivec2(texelPos), size - 1), 0).r;
+    if (uReversedZ) stored = 1.0 - stored;
+    if (uChannel > 0) {
+        float moment = texelFetch(uMoments, min(ivec2(texelPos), size - 1), 0)[uChannel - 1];
+        color = vec3(clamp((moment - uRange.x) / max(uRange.y - uRange.x, 1e-12), 0.0, 1.0));
+    } else if (stored >= 1.0) {
         color = kNoCaster;
     } else {
         float shown = uLinearize ? linearDepth(stored) : stored;

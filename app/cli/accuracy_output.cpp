@@ -90,7 +90,7 @@ void printAccuracy(std::ostream& out, const AccuracyReport& r) {
     printSoftAccuracy(out, r.soft);
 }
 
-std::string legendText(OverlayKind kind) { return legendText(kind == OverlayKind::Error ? errorLegend() : causeLegend()); }
+std::string legendText(OverlayKind kind) { return legendText(overlayLegend(kind)); }
 
 std::string legendText(const std::vector<LegendEntry>& legend) {
     std::string text;

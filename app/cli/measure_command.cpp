@@ -27,12 +27,14 @@ int runMeasure(const MeasureOptions& options) {
     if (!settings) return 2;
     if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
     // The pictures' limits first: they hold on any machine, the memory check depends on this one.
-    for (const NamedPath& overlay : {NamedPath{options.overlay, "--overlay"}, NamedPath{options.causeOverlay, "--cause-overlay"}})
+    for (const NamedPath& overlay : {NamedPath{options.overlay, "--overlay"}, NamedPath{options.causeOverlay, "--cause-overlay"},
+                                     NamedPath{options.softOverlay, "--soft-overlay"}})
         if (std::string error = checkPictureOutput(overlay, {options.width, options.height, 4, 4, true, {}}); !error.empty())
             return fail(error);
     if (std::string error = checkMeasureMemory(options.width, options.height); !error.empty()) return fail(error);
     if (std::string error = checkOutputs({{options.json, "--json"}, {options.overlay, "--overlay"},
-                                          {options.causeOverlay, "--cause-overlay"}},
+                                          {options.causeOverlay, "--cause-overlay"},
+                                          {options.softOverlay, "--soft-overlay"}},
                                          {{options.scene, "--scene"}, {options.preset, "--preset"}});
         !error.empty())
         return fail(error);
@@ -87,6 +89,23 @@ int runMeasure(const MeasureOptions& options) {
             if (std::string error = writePng(path, many.width, many.height, 4, rgba.data(), false); !error.empty())
                 return fail(error);
             std::cout << "wrote " << path << " (" << which << ": " << legendText(kind) << "; the rest dimmed)\n";
+        }
+        if (!options.softOverlay.empty()) {
+            // One light against its own soft reference: the union of several lights' soft V has no meaning.
+            if (many.lights.size() != 1)
+                return fail("--soft-overlay colours one light against its soft reference; " +
+                            std::to_string(many.lights.size()) + " lights were measured: choose one with --light N");
+            const LightAccuracy& light = many.lights.front();
+            const std::string label = lightLabel(light.index, light.type);
+            if (light.report.softOverlayRgba.empty())
+                return fail("--soft-overlay: " + label + " has no size (lights." + std::to_string(light.index) +
+                            ".size is 0), so there is no soft reference to compare with");
+            if (std::string error = writePng(options.softOverlay, many.width, many.height, 4,
+                                             light.report.softOverlayRgba.data(), false);
+                !error.empty())
+                return fail(error);
+            std::cout << "wrote " << options.softOverlay << " (" << label << ": " << legendText(OverlayKind::Soft)
+                      << "; the rest dimmed): " << softOverlayCounts(light.report.soft) << "\n";
         }
         // The live path re-measures light 0 from the meter's cached reference: make it light 0's again.
         if (options.remeasureBench > 0 && many.lights.back().index != 0 &&

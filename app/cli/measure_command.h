@@ -18,6 +18,7 @@ struct MeasureOptions {
     std::string json;     // optional
     std::string overlay;       // optional PNG: red acne, blue leak, yellow true boundary
     std::string causeOverlay;  // optional PNG: every mismatched pixel in its cause's colour
+    std::string softOverlay;   // optional PNG: one light with a size: bleeding and over-darkening against the soft V
     int light = -1;            // --light N: only light N (index into the effective lights); -1 = every casting one
     int remeasureBench = 0;    // > 0: time that many live re-measures after a bias change (remeasure_bench.h)
     // Flicker (measure_motion.h): empty motion = an ordinary measurement; the others need --motion.

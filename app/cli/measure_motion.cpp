@@ -79,6 +79,7 @@ int runMeasureMotion(const MeasureOptions& options) {
         return fail(std::string("--motion ") + motionName(*kind) + " needs --step S (" + motionInfo(*kind).unit +
                     " per frame)");
     if (!options.causeOverlay.empty()) return fail("--cause-overlay: not with --motion (flicker has its own --overlay)");
+    if (!options.softOverlay.empty()) return fail("--soft-overlay: not with --motion (flicker has its own --overlay)");
     if (options.remeasureBench > 0) return fail("--remeasure-bench: not with --motion");
     Motion motion;
     motion.kind = *kind;

@@ -27,9 +27,10 @@ nlohmann::json frameJson(const StaleBoundsFrame& f) {
 
 int runMeasureStaleBounds(const MeasureOptions& options) {
     if (wantsMotion(options)) return fail("--stale-bounds: not with --motion (each measures its own frames)");
-    if (!options.overlay.empty() || !options.causeOverlay.empty() || options.remeasureBench > 0 || options.light >= 0)
+    if (!options.overlay.empty() || !options.causeOverlay.empty() || !options.softOverlay.empty() ||
+        options.remeasureBench > 0 || options.light >= 0)
         return fail("--stale-bounds measures light 0 in two frames of its own: not with --overlay, --cause-overlay, "
-                    "--remeasure-bench or --light");
+                    "--soft-overlay, --remeasure-bench or --light");
     std::string error;
     const std::optional<double> degrees = parseFiniteOption(options.staleBounds, "--stale-bounds", error);
     if (!degrees) return fail(error);

@@ -40,7 +40,7 @@ struct AccuracyState {
     // finished), and a full measure (causes, overlay) once the view has been still for kAutoDelaySeconds.
     bool autoMeasure = false;
     bool showOverlay = false;   // the viewport shows the overlay (an editor view mode, never saved in presets)
-    OverlayKind overlayKind = OverlayKind::Error;  // coloured by error (acne / leak) or by cause
+    OverlayKind overlayKind = OverlayKind::Error;  // coloured by error (acne / leak), by cause, or soft (bleeding...)
     static constexpr double kAutoDelaySeconds = 0.5;
 
     // The running job (if any).
@@ -88,6 +88,11 @@ struct AccuracyState {
     gl::Texture overlayTexture;
     int overlayWidth = 0, overlayHeight = 0;
     OverlayKind uploadedKind = OverlayKind::Error;
+    // The texture holds uploadedKind's picture of the newest full measurement (false after one without that picture:
+    // the soft overlay of a light with no size).
+    bool overlayUploaded = false;
+    // The viewport shows the overlay picture chosen (it then hides the rendered view).
+    bool overlayShown() const { return showOverlay && overlayTexture && overlayUploaded && uploadedKind == overlayKind; }
 };
 
 }  // namespace shadowlab::editor

@@ -37,12 +37,6 @@ double secondsNow() {
     return duration<double>(steady_clock::now() - start).count();
 }
 
-bool sameOptions(const ShadowMapViewOptions& a, const ShadowMapViewOptions& b) {
-    return a.contrast == b.contrast && a.manualMin == b.manualMin && a.manualMax == b.manualMax &&
-           a.linearize == b.linearize && a.visible.min == b.visible.min && a.visible.max == b.visible.max &&
-           a.texelGrid == b.texelGrid;
-}
-
 bool isGltfPath(const std::string& path) {
     std::string ext = fs::path(path).extension().string();
     for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
@@ -289,7 +283,7 @@ void Editor::renderViewport() {
     RenderKey key = renderKey();
     // The accuracy overlay hides the main view: a camera move or resize alone then needs no pass (the overlay says
     // it is stale); a settings or scene change still renders, so the shadow map, its viewer and Stats follow the edit.
-    const bool overlayHidesView = state_.accuracy.showOverlay && bool(state_.accuracy.overlayTexture);
+    const bool overlayHidesView = state_.accuracy.overlayShown();
     const bool unchanged = lastRendered_ && (overlayHidesView ? lastRendered_->settings == key.settings &&
                                                                       lastRendered_->scene == key.scene
                                                                 : *lastRendered_ == key);
@@ -344,7 +338,8 @@ void Editor::renderViewport() {
     const float shadowMs = stats.shadowPass.ran && stats.shadowPass.milliseconds ? float(*stats.shadowPass.milliseconds)
                                                                                  : 0.0f;
     state_.history.push(float(state_.lastFrameMs), shadowMs);
-    mapPictureStale_ = mapPictureStale_ || stats.shadowPass.ran || stats.shadowMapReallocated;
+    mapPictureStale_ = mapPictureStale_ || stats.shadowPass.ran || stats.shadowMapReallocated ||
+                       stats.momentsPass.ran || stats.blurPass.ran;
     if (stats.shadowPass.ran) state_.lastShadowPass = stats;
     state_.stats = std::move(stats);
     state_.haveStats = true;
@@ -359,12 +354,15 @@ void Editor::renderMapPicture(bool mapRedrawn) {
     const ShadowViewStats* view = state_.shownView();
     const ShadowMap* map = view ? renderer_->viewMap({view->light, view->kind, view->index}) : nullptr;
     if (v.width < 8 || v.height < 8 || !map || !map->valid()) return;
+    const ShadowViewId id{view->light, view->kind, view->index};
+    const MomentsLayer moments = renderer_->viewMomentsLayer(id);
+    if (!moments.texture) v.options.channel = 0;  // a depth technique now: its depth is all there is
     const std::pair<std::size_t, int> shown{view->light, view->face};
     const bool changed = mapPictureStale_ || v.width != lastMapWidth_ || v.height != lastMapHeight_ ||
-                         !sameOptions(v.options, lastMapOptions_) || v.texture == 0 || shown != lastMapView_;
+                         !(v.options == lastMapOptions_) || v.texture == 0 || shown != lastMapView_;
     if (changed) {
         v.error = mapView_->render(*map, view->space, mapPictureStale_ || shown != lastMapView_, v.options, v.width,
-                                   v.height);
+                                   v.height, &moments);
         if (v.error.empty()) {
             v.texture = mapView_->texture();
             v.textureWidth = mapView_->width();
@@ -379,7 +377,12 @@ void Editor::renderMapPicture(bool mapRedrawn) {
         mapPictureStale_ = false;
     }
     v.hoverDepth.reset();
+    v.hoverMoments.reset();
     if (v.hoverTexel) v.hoverDepth = mapView_->depthAt(*map, v.hoverTexel->x, v.hoverTexel->y);
+    if (v.hoverTexel && moments.texture)
+        if (const std::vector<glm::vec4> m = renderer_->viewMoments(id, v.hoverTexel->x, v.hoverTexel->y, 1, 1);
+            m.size() == 1)
+            v.hoverMoments = m[0];
 }
 
 void Editor::takeScreenshot() {
@@ -396,7 +399,7 @@ void Editor::takeScreenshot() {
     // carries B's preset (the one being edited; --preset shot.png loads it) and A's under its own keyword.
     const RenderTarget& a = abRenderer_.target();
     const bool split = state_.ab.active && state_.ab.haveStatsA && a.width() == target_.width() &&
-                       a.height() == target_.height() && !(state_.accuracy.showOverlay && state_.accuracy.overlayTexture);
+                       a.height() == target_.height() && !state_.accuracy.overlayShown();
     ScreenshotResult result;
     if (split) {
         Settings settingsA = abSettingsA(state_);

@@ -32,14 +32,14 @@ void Editor::renderAbView() {
     const int w = int(viewportRect_.z), h = int(viewportRect_.w);
     if (w < 16 || h < 16 || target_.width() != w || target_.height() != h) return;
     rememberMeasurement(state_.ab, state_.accuracy);
-    if (state_.accuracy.showOverlay && state_.accuracy.overlayTexture) return;  // the overlay hides both views
+    if (state_.accuracy.overlayShown()) return;  // the overlay hides both views
     abRenderer_.render(state_, previewed(abSettingsA(state_)), orbit_->toCamera(), w, h,
                        state_.showLightFrustum ? frustum_.get() : nullptr);
 }
 
 bool Editor::abViewDue() const {
     if (!state_.ab.active || !state_.scene || !orbit_) return false;
-    if (state_.accuracy.showOverlay && state_.accuracy.overlayTexture) return false;
+    if (state_.accuracy.overlayShown()) return false;
     const int w = int(viewportRect_.z), h = int(viewportRect_.w);
     if (w < 16 || h < 16 || target_.width() != w || target_.height() != h) return false;  // B renders first
     return abRenderer_.due(state_, previewed(abSettingsA(state_)), orbit_->toCamera(), w, h, state_.showLightFrustum);

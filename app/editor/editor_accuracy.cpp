@@ -268,10 +268,16 @@ void Editor::uploadAccuracyOverlay() {
     }
     // Row 0 of the picture is the view's top; it lands in the texture's row 0, which the UI maps to v = 0 (top).
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    const std::vector<std::uint8_t>& rgba = a.overlayKind == OverlayKind::Cause ? r.causeOverlayRgba : r.overlayRgba;
-    if (rgba.size() != r.overlayRgba.size()) return;
+    const std::vector<std::uint8_t>& rgba = a.overlayKind == OverlayKind::Cause  ? r.causeOverlayRgba
+                                            : a.overlayKind == OverlayKind::Soft ? r.softOverlayRgba
+                                                                                 : r.overlayRgba;
+    if (rgba.size() != r.overlayRgba.size()) {
+        a.overlayUploaded = false;  // the texture holds another picture: not shown as this one
+        return;
+    }
     glTextureSubImage2D(a.overlayTexture.id(), 0, 0, 0, r.width, r.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
     a.uploadedKind = a.overlayKind;
+    a.overlayUploaded = true;
 }
 
 std::optional<double> Editor::secondsUntilNextFrame() const {

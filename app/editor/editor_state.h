@@ -60,6 +60,7 @@ struct MapViewerState {
     int width = 0, height = 0;              // picture size the panel asks for (0 = panel hidden)
     std::optional<glm::ivec2> hoverTexel;   // set by the panel; the editor reads the stored depth there
     std::optional<float> hoverDepth;
+    std::optional<glm::vec4> hoverMoments;  // a moments technique: the stored moments there
     unsigned texture = 0;                   // GL texture of the newest picture (0 = none)
     int textureWidth = 0, textureHeight = 0;
     ShownDepthRange shown;
@@ -70,6 +71,7 @@ struct MapViewerState {
     ShadowViewKind kind = ShadowViewKind::Single;  // with `index`: a cube face or a cascade
     int index = 0;
     std::string error;                      // why the newest picture could not be made
+    std::string shownLabel;                 // a moments technique: which light, view and channel, and the range
 };
 
 // The Timeline panel's player. The time and the animation played are settings (animation.time, animation.play);

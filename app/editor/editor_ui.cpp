@@ -32,9 +32,12 @@ bool beginCentredModal(const char* title, bool& open) {
 }
 
 constexpr float kStatusHeight = 26.0f;
-// The view combo's two editor-only choices (the accuracy overlays); the second is its longest label.
+// The view combo's editor-only choices (the accuracy overlays); the second is its longest label.
 constexpr const char* kOverlay = "accuracy overlay";
 constexpr const char* kCauseOverlay = "accuracy overlay by cause";
+constexpr const char* kSoftOverlay = "soft overlay";
+constexpr std::pair<const char*, OverlayKind> kOverlayChoices[] = {
+    {kOverlay, OverlayKind::Error}, {kCauseOverlay, OverlayKind::Cause}, {kSoftOverlay, OverlayKind::Soft}};
 
 }  // namespace
 
@@ -185,7 +188,7 @@ void Editor::drawViewport() {
         ImDrawList* draw = ImGui::GetWindowDrawList();
         const AccuracyState& a = state_.accuracy;
         const ImVec2 imageEnd(imagePos.x + imageSize.x, imagePos.y + imageSize.y);
-        if (a.showOverlay && a.overlayTexture) {
+        if (a.overlayShown()) {
             // The overlay's row 0 is the view's top, and so is its texture's row 0.
             draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(a.overlayTexture.id())), imagePos,
                            imageEnd, ImVec2(0, 0), ImVec2(1, 1));
@@ -313,7 +316,9 @@ void Editor::viewModeCombo() {
     AccuracyState& a = state_.accuracy;
     const SettingsField* field = findSettingsField("view");
     const std::string current = field->get(state_.settings).get<std::string>();
-    const char* shown = !a.showOverlay ? current.c_str() : a.overlayKind == OverlayKind::Cause ? kCauseOverlay : kOverlay;
+    const char* shown = current.c_str();
+    for (const auto& [label, kind] : kOverlayChoices)
+        if (a.showOverlay && a.overlayKind == kind) shown = label;
     if (ImGui::BeginCombo("##view", shown)) {
         for (const std::string& choice : field->choices) {
             const bool selected = !a.showOverlay && choice == current;
@@ -323,7 +328,7 @@ void Editor::viewModeCombo() {
             }
             state_.controls.recordLastItem("view=" + choice);
         }
-        for (const auto& [label, kind] : {std::pair{kOverlay, OverlayKind::Error}, std::pair{kCauseOverlay, OverlayKind::Cause}}) {
+        for (const auto& [label, kind] : kOverlayChoices) {
             if (ImGui::Selectable(label, a.showOverlay && a.overlayKind == kind)) {
                 a.showOverlay = true;
                 a.overlayKind = kind;
@@ -338,7 +343,8 @@ void Editor::viewModeCombo() {
         ImGui::SetTooltip("What the viewport shows: the lit scene, the shadow factor, the light's depth, the cascade "
                           "holding each pixel, the map's texels per screen pixel, or the accuracy overlay of the newest "
                           "measurement (red acne, blue leak, yellow true boundary; or each wrong pixel coloured by its "
-                          "cause)");
+                          "cause; or, for a light with a size, cyan light bleeding and orange over-darkening against "
+                          "the soft reference)");
     showFieldError(state_, "view");
 }
 
@@ -369,53 +375,69 @@ void Editor::drawCascadeLegend(ImVec2 imagePos, ImVec2 imageSize) {
 
 void Editor::drawOverlayNotes(ImVec2 imagePos, ImVec2 imageSize) {
     const AccuracyState& a = state_.accuracy;
+    const bool shown = a.overlayShown();
     std::string note;
-    if (!a.overlayTexture)
-        note = a.running ? "accuracy overlay: measuring..."
-                         : "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
+    const bool fullReport = a.report && a.report->ok && !a.report->live;
+    if (!shown && a.running)
+        note = "accuracy overlay: measuring...";
+    else if (!a.overlayTexture)
+        note = "accuracy overlay: no measurement yet (Measure in the Accuracy panel)";
+    else if (!shown && a.overlayKind == OverlayKind::Soft && fullReport)
+        note = "soft overlay: the measured light has no size, so there is no soft reference to compare with (set "
+               "its size in the Light panel, then Measure)";
+    else if (!shown)
+        note = "this overlay comes with the next full measure (Measure in the Accuracy panel)";
     else if (!a.stale.empty())
         note = "Stale: " + a.stale;
     else if (a.report && a.report->live)
         note = "live numbers in the Accuracy panel; this overlay is the last full measure (again once the view is still)";
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const float pad = 6.0f;
-    if (!note.empty()) {
-        const ImVec2 size = ImGui::CalcTextSize(note.c_str(), nullptr, false, imageSize.x - 4 * pad);
-        const ImVec2 at(imagePos.x + pad, imagePos.y + pad);
+    // A dark box with text, wrapped to the view's width.
+    const auto textBox = [&](ImVec2 at, const std::string& text, ImU32 colour, const char* control) {
+        const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, imageSize.x - 4 * pad);
         draw->AddRectFilled(at, ImVec2(at.x + size.x + 2 * pad, at.y + size.y + 2 * pad), IM_COL32(0, 0, 0, 190), 3.0f);
-        draw->AddText(nullptr, 0.0f, ImVec2(at.x + pad, at.y + pad), IM_COL32(255, 190, 80, 255), note.c_str(), nullptr,
+        draw->AddText(nullptr, 0.0f, ImVec2(at.x + pad, at.y + pad), colour, text.c_str(), nullptr,
                       imageSize.x - 4 * pad);
+        state_.controls.record(control, ControlRect{at.x, at.y, size.x + 2 * pad, size.y + 2 * pad});
+    };
+    if (!note.empty())
+        textBox(ImVec2(imagePos.x + pad, imagePos.y + pad), note, IM_COL32(255, 190, 80, 255), "viewport.overlayNote");
+    if (!shown) return;
+    // The legend, bottom left, wrapping onto more lines when the view is narrow.
+    const std::vector<LegendEntry>& keys = overlayLegend(a.uploadedKind);
+    const float h = ImGui::GetTextLineHeight();
+    const float maxX = imagePos.x + imageSize.x - pad;
+    std::vector<std::pair<ImVec2, const LegendEntry*>> placed;
+    float x = imagePos.x + 2 * pad, y = 0.0f, right = x;
+    for (const LegendEntry& k : keys) {
+        const float w = h + ImGui::CalcTextSize(k.name).x + 16.0f;
+        if (x + w > maxX && !placed.empty()) {
+            x = imagePos.x + 2 * pad;
+            y += h + 2.0f;
+        }
+        placed.push_back({ImVec2(x, y), &k});
+        x += w;
+        right = std::max(right, x);
     }
-    if (a.overlayTexture) {
-        // The legend, bottom left.
-        // The legend, bottom left, wrapping onto more lines when the view is narrow.
-        const std::vector<LegendEntry>& keys = a.uploadedKind == OverlayKind::Cause ? causeLegend() : errorLegend();
-        const float h = ImGui::GetTextLineHeight();
-        const float maxX = imagePos.x + imageSize.x - pad;
-        std::vector<std::pair<ImVec2, const LegendEntry*>> placed;
-        float x = imagePos.x + 2 * pad, y = 0.0f, right = x;
-        for (const LegendEntry& k : keys) {
-            const float w = h + ImGui::CalcTextSize(k.name).x + 16.0f;
-            if (x + w > maxX && !placed.empty()) {
-                x = imagePos.x + 2 * pad;
-                y += h + 2.0f;
-            }
-            placed.push_back({ImVec2(x, y), &k});
-            x += w;
-            right = std::max(right, x);
-        }
-        const float top = imagePos.y + imageSize.y - pad - (y + h) - pad;
-        draw->AddRectFilled(ImVec2(imagePos.x + pad, top - pad * 0.5f), ImVec2(right + pad, top + y + h + pad * 0.5f),
-                            IM_COL32(0, 0, 0, 170), 3.0f);
-        for (const auto& [at, k] : placed) {
-            const ImVec2 p(at.x, top + at.y);
-            draw->AddRectFilled(ImVec2(p.x, p.y + 2), ImVec2(p.x + h - 4, p.y + h - 2),
-                                IM_COL32(k->red, k->green, k->blue, 255));
-            draw->AddText(ImVec2(p.x + h, p.y), IM_COL32(230, 230, 230, 255), k->name);
-        }
+    const float top = imagePos.y + imageSize.y - pad - (y + h) - pad;
+    draw->AddRectFilled(ImVec2(imagePos.x + pad, top - pad * 0.5f), ImVec2(right + pad, top + y + h + pad * 0.5f),
+                        IM_COL32(0, 0, 0, 170), 3.0f);
+    for (const auto& [at, k] : placed) {
+        const ImVec2 p(at.x, top + at.y);
+        draw->AddRectFilled(ImVec2(p.x, p.y + 2), ImVec2(p.x + h - 4, p.y + h - 2), IM_COL32(k->red, k->green, k->blue, 255));
+        draw->AddText(ImVec2(p.x + h, p.y), IM_COL32(230, 230, 230, 255), k->name);
+    }
+    state_.controls.record("viewport.legend", ControlRect{imagePos.x + pad, top - pad * 0.5f, right - imagePos.x,
+                                                          y + h + pad});
+    // The soft overlay's counts (its coloured pixels are what they count: soft_metrics.h's SoftMark) above the legend.
+    if (a.uploadedKind == OverlayKind::Soft && a.report) {
+        const std::string counts = softOverlayCounts(a.report->soft);
+        const float height = ImGui::CalcTextSize(counts.c_str(), nullptr, false, imageSize.x - 4 * pad).y + 2 * pad;
+        textBox(ImVec2(imagePos.x + pad, top - pad - height), counts, IM_COL32(230, 230, 230, 255),
+                "viewport.softCounts");
     }
 }
-
 void Editor::drawStatusBar() {
     const ImVec2 size = ImGui::GetWindowSize();
     ImGui::SetCursorPos(ImVec2(8, size.y - kStatusHeight + 4));

@@ -510,6 +510,10 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         (kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba) =
             makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
                         boundary, settings.ambient);
+    if (disc.soft())
+        report.softOverlayRgba = makeSoftOverlay(width, height, m.visibility.classes, shadowFactor,
+                                                 m.visibility.lambert, m.soft.visibility, metrics.measured,
+                                                 settings.ambient);
     report.pixelClass = m.visibility.classes;
     report.pixelShadow = shadowFactor;
     report.pixelLambert = m.visibility.lambert;

@@ -167,6 +167,7 @@ struct AccuracyReport : AccuracyNumbers {
     // and for a live remeasure (the GPU counter counts the hard numbers only).
     SoftAccuracy soft;
     std::vector<float> pixelSoftVisibility;  // the soft V per pixel, row 0 = TOP (empty for a hard light)
+    std::vector<std::uint8_t> softOverlayRgba;  // the soft overlay (accuracy_overlay.h), RGBA8; empty for a hard light
 
     // Shadow views the tool frame's planner rendered (0: every map was reused; flicker.h checks it under camera motion).
     std::size_t shadowViewsRendered = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace shadowlab {
 
@@ -12,6 +13,9 @@ constexpr LegendEntry kAcneNearEdge{"acne within k", 120, 45, 45};
 constexpr LegendEntry kLeak{"leak", 50, 110, 255};
 constexpr LegendEntry kLeakNearEdge{"leak within k", 40, 60, 125};
 constexpr LegendEntry kBoundary{"true boundary", 255, 220, 0};
+constexpr LegendEntry kBleeding{"light bleeding (V = 0, lit)", 40, 230, 230};
+constexpr LegendEntry kOverDarkened{"over-darkening (V = 1, darkened)", 255, 130, 0};
+constexpr LegendEntry kPenumbra{"true penumbra (0 < V < 1)", 150, 110, 200};
 
 }  // namespace
 
@@ -31,6 +35,20 @@ const std::vector<LegendEntry>& causeLegend() {
         return l;
     }();
     return legend;
+}
+
+const std::vector<LegendEntry>& softLegend() {
+    static const std::vector<LegendEntry> legend = {kBleeding, kOverDarkened, kPenumbra};
+    return legend;
+}
+
+const std::vector<LegendEntry>& overlayLegend(OverlayKind kind) {
+    switch (kind) {
+        case OverlayKind::Cause: return causeLegend();
+        case OverlayKind::Soft: return softLegend();
+        case OverlayKind::Error: break;
+    }
+    return errorLegend();
 }
 
 OverlayRgb shadedColour(const LegendEntry& entry, float lambert) {
@@ -103,6 +121,39 @@ std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, c
         if (boundary.onBoundary(i) && !counted) put(i, kBoundary);
     }
     return rgba;
+}
+
+std::vector<std::uint8_t> makeSoftOverlay(int width, int height, const std::vector<PixelClass>& classes,
+                                          const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
+                                          const std::vector<float>& visibility,
+                                          const std::vector<std::uint8_t>& measured, float ambient) {
+    std::vector<std::uint8_t> rgba = dimmedPicture(width, height, classes, shadowFactor, lambert, ambient);
+    const std::size_t count = std::size_t(width) * std::size_t(height);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (!measured[i]) continue;
+        const float v = visibility[i];
+        const SoftMark mark = softMark(v, shadowFactor[i]);
+        const LegendEntry* entry = mark == SoftMark::Bleeding       ? &kBleeding
+                                   : mark == SoftMark::OverDarkened ? &kOverDarkened
+                                   : v > 0.0f && v < 1.0f           ? &kPenumbra
+                                                                    : nullptr;
+        if (!entry) continue;
+        const OverlayRgb c = shadedColour(*entry, lambert[i]);
+        rgba[i * 4] = c.red;
+        rgba[i * 4 + 1] = c.green;
+        rgba[i * 4 + 2] = c.blue;
+    }
+    return rgba;
+}
+
+std::string softOverlayCounts(const SoftAccuracy& soft) {
+    const SoftCounts& c = soft.counts;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "light bleeding %zu of %zu umbra pixels (%.2f %%), over-darkening %zu of %zu fully lit pixels "
+                  "(%.2f %%)",
+                  c.bleeding, c.umbra, soft.bleedingPercent, c.overDarkened, c.fullyLit, soft.overDarkeningPercent);
+    return text;
 }
 
 }  // namespace shadowlab

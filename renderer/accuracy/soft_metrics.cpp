@@ -113,6 +113,12 @@ double median(std::vector<double> values) { return percentile(values, 50); }
 
 }  // namespace
 
+SoftMark softMark(double v, double s) {
+    if (v == 0.0 && s > kVisibleStep) return SoftMark::Bleeding;
+    if (v == 1.0 && s < kLitBelow) return SoftMark::OverDarkened;
+    return SoftMark::None;
+}
+
 SoftAccuracy computeSoftMetrics(const SoftMetricsInput& in) {
     SoftAccuracy out;
     out.measured = true;
@@ -126,15 +132,15 @@ SoftAccuracy computeSoftMetrics(const SoftMetricsInput& in) {
         const double error = std::abs(s - v);
         errorSum += error;
         if (error >= kWrongError) ++c.wrong;
-        if (v == 0.0) {
+        if (v == 0.0)
             ++c.umbra;
-            if (s > kVisibleStep) ++c.bleeding;
-        } else if (v == 1.0) {
+        else if (v == 1.0)
             ++c.fullyLit;
-            if (s < kLitBelow) ++c.overDarkened;
-        } else {
+        else
             ++c.penumbra;
-        }
+        const SoftMark mark = softMark(v, s);
+        c.bleeding += mark == SoftMark::Bleeding;
+        c.overDarkened += mark == SoftMark::OverDarkened;
     }
     const auto percent = [](std::size_t part, std::size_t whole) {
         return whole ? 100.0 * double(part) / double(whole) : 0.0;

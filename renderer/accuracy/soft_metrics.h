@@ -84,6 +84,11 @@ struct SoftMetricsInput {
     std::function<double(std::size_t)> worldPerTexel;     // shadow-map texel size at pixel i (world units)
 };
 
+// One pixel's verdict against the soft reference: bleeding (V = 0, S > e), over-darkened (V = 1, S < 1 - e) or
+// neither. computeSoftMetrics counts these; the soft overlay (accuracy_overlay.h) colours them.
+enum class SoftMark : std::uint8_t { None, Bleeding, OverDarkened };
+SoftMark softMark(double visibility, double shadowFactor);
+
 // The numbers (SoftAccuracy's light, size, rays and cost are left for the caller).
 SoftAccuracy computeSoftMetrics(const SoftMetricsInput& input);
 

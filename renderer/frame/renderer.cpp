@@ -574,6 +574,12 @@ void Renderer::waitForTimings(FrameStats& stats) {
     if (stats.blurPass.ran) stats.blurPass.milliseconds = timer_.latestMilliseconds(TimedPass::Blur, true);
 }
 
+MomentsLayer Renderer::viewMomentsLayer(const ShadowViewId& view) const {
+    const auto it = views_.find(view);
+    if (!momentsPass_ || it == views_.end()) return {};
+    return momentsPass_->layer(it->second.group, it->second.map.layer());
+}
+
 std::vector<glm::vec4> Renderer::viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const {
     const auto it = views_.find(view);
     if (!momentsPass_ || it == views_.end() || !momentsPass_->texture(it->second.group)) return {};

@@ -67,6 +67,8 @@ public:
     // A moments technique's stored moments of a view of the last frame, texels [x0, x0+w) x [y0, y0+h) (row 0 =
     // bottom; a cube face's layer); empty when the frame used a depth technique or the view is unknown.
     std::vector<glm::vec4> viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const;
+    // Where that view's moments are stored (texture 0: a depth technique or an unknown view).
+    MomentsLayer viewMomentsLayer(const ShadowViewId& view) const;
 
 private:
     struct ViewState {

@@ -26,6 +26,7 @@ DepthRangeReduction::DepthRangeReduction()
     : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "depth_range.comp.glsl"}},
                                 {"BLOCK " + std::to_string(kTexelsPerInvocation)})),
       reversedZ_(glGetUniformLocation(program_.id(), "uReversedZ")),
+      channel_(glGetUniformLocation(program_.id(), "uChannel")),
       rawSampler_(gl::createSampler()),
       buffer_(gl::createBuffer()) {
     glSamplerParameteri(rawSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -36,11 +37,13 @@ DepthRangeReduction::DepthRangeReduction()
     glNamedBufferStorage(buffer_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-void DepthRangeReduction::dispatch(GLuint texture, int width, int height, bool reversedZ) {
+void DepthRangeReduction::dispatch(GLuint texture, int width, int height, bool reversedZ, int channel) {
     const GLuint start[2] = {kNothingBits, 0u};
     glNamedBufferSubData(buffer_.id(), 0, sizeof start, start);
     glUseProgram(program_.id());
     glUniform1i(reversedZ_, reversedZ ? 1 : 0);
+    glUniform1i(channel_, channel);
+    channelPending_ = channel >= 0;
     glBindTextureUnit(kDepthUnit, texture);
     glBindSampler(kDepthUnit, rawSampler_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_.id());
@@ -59,6 +62,8 @@ std::optional<WrittenDepths> DepthRangeReduction::read() {
     GLuint result[2] = {kNothingBits, 0u};
     glGetNamedBufferSubData(buffer_.id(), 0, sizeof result, result);
     if (result[0] == kNothingBits) return std::nullopt;
+    if (channelPending_)  // ordered bits back to float bits (depth_range.comp.glsl: orderedBits)
+        for (GLuint& bits : result) bits = (bits & 0x80000000u) ? bits & 0x7FFFFFFFu : ~bits;
     return WrittenDepths{fromBits(result[0]), fromBits(result[1])};
 }
 

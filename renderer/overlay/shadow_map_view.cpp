@@ -9,6 +9,13 @@ namespace shadowlab {
 namespace {
 
 constexpr GLuint kDepthUnit = 0;
+constexpr GLuint kMomentsUnit = 1;
+
+int momentChannels(GLenum format) { return format == GL_RG16F || format == GL_RG32F ? 2 : 4; }
+
+bool sameLayer(const MomentsLayer& a, const MomentsLayer& b) {
+    return a.texture == b.texture && a.layer == b.layer && a.generation == b.generation;
+}
 
 }  // namespace
 
@@ -40,6 +47,7 @@ ShadowMapView::ShadowMapView()
     uniforms_.nearFar = glGetUniformLocation(program, "uNearFar");
     uniforms_.gridTexelPixels = glGetUniformLocation(program, "uGridTexelPixels");
     uniforms_.reversedZ = glGetUniformLocation(program, "uReversedZ");
+    uniforms_.channel = glGetUniformLocation(program, "uChannel");
 }
 
 void ShadowMapView::measureWrittenRange(const ShadowMap& map, bool reversedZ) {
@@ -53,29 +61,74 @@ void ShadowMapView::measureWrittenRange(const ShadowMap& map, bool reversedZ) {
     }
     measuredGeneration_ = map.generation();
     measuredReversedZ_ = reversedZ;
+    measuredChannel_ = 0;
     rangeStale_ = false;
 }
 
+void ShadowMapView::measureChannelRange(int channel) {
+    rangeReduction_.dispatch(momentsView_.id(), momentsViewOf_.resolution, momentsViewOf_.resolution, false,
+                             channel - 1);
+    if (const std::optional<WrittenDepths> range = rangeReduction_.read()) {
+        writtenMin_ = range->min;
+        writtenMax_ = range->max;
+    } else {
+        writtenMin_.reset();
+        writtenMax_.reset();
+    }
+    measuredChannel_ = channel;
+    measuredMoments_ = momentsViewOf_;
+    rangeStale_ = false;
+}
+
+void ShadowMapView::viewMomentsLayer(const MomentsLayer& layer) {
+    if (momentsView_ && sameLayer(momentsViewOf_, layer)) return;
+    GLuint id = 0;
+    glGenTextures(1, &id);  // a view needs a name that was never bound
+    gl::Texture view(id);
+    glTextureView(view.id(), GL_TEXTURE_2D, layer.texture, layer.format, 0, 1, GLuint(layer.layer), 1);
+    momentsView_ = std::move(view);
+    momentsViewOf_ = layer;
+}
+
 std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light, bool mapRedrawn,
-                                  const ShadowMapViewOptions& options, int width, int height) {
+                                  const ShadowMapViewOptions& options, int width, int height,
+                                  const MomentsLayer* moments) {
     if (!map.valid()) return "no shadow map yet: render a frame first";
+    const int channel = options.channel;
+    if (channel > 0) {
+        if (!moments || !moments->texture)
+            return "moment " + std::to_string(channel) + ": the frame's filter stores no moments (filter.kind is a "
+                   "depth technique)";
+        if (channel > momentChannels(moments->format))
+            return "moment " + std::to_string(channel) + ": this technique stores " +
+                   std::to_string(momentChannels(moments->format)) + " moments";
+        viewMomentsLayer(*moments);
+    }
     if (options.contrast == DepthContrast::Manual && !(options.manualMin < options.manualMax))
         return "manual contrast: min (" + std::to_string(options.manualMin) + ") must be below max (" +
                std::to_string(options.manualMax) + ")";
     if (std::string error = target_.resize(width, height); !error.empty()) return "shadow map view: " + error;
 
-    const Inputs inputs{options, width, height, map.texture(), map.generation(), light.perspective,
-                        light.nearPlane, light.farPlane, light.reversedZ};
+    const MomentsLayer shownMoments = channel > 0 ? *moments : MomentsLayer{};
+    const Inputs inputs{options,          width,           height,          map.texture(),
+                        map.generation(), light.perspective, light.nearPlane, light.farPlane,
+                        light.reversedZ,  shownMoments.texture, shownMoments.layer, shownMoments.generation};
     redrawn_ = mapRedrawn || !drawn_ || !(*drawn_ == inputs);
     if (!redrawn_) return {};
 
-    if (mapRedrawn || measuredGeneration_ != map.generation() || measuredReversedZ_ != light.reversedZ)
+    if (mapRedrawn || measuredGeneration_ != map.generation() || measuredReversedZ_ != light.reversedZ ||
+        measuredChannel_ != channel || (channel > 0 && !sameLayer(measuredMoments_, shownMoments)))
         rangeStale_ = true;
-    const bool linearize = options.linearize && light.perspective;
+    const bool linearize = options.linearize && light.perspective && channel == 0;
     ShownDepthRange shown;
     switch (options.contrast) {
         case DepthContrast::Auto: {
-            if (rangeStale_) measureWrittenRange(map, light.reversedZ);  // only when the map changed
+            if (rangeStale_) {  // only when the map changed
+                if (channel > 0)
+                    measureChannelRange(channel);
+                else
+                    measureWrittenRange(map, light.reversedZ);
+            }
             shown.anyCaster = writtenMin_.has_value();
             if (shown.anyCaster) {
                 shown.min = float(linearize ? linearLightDepth(light, *writtenMin_) : *writtenMin_);
@@ -107,12 +160,19 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
     glUniform2f(u.nearFar, float(light.nearPlane), float(light.farPlane));
     glUniform1i(u.reversedZ, light.reversedZ ? 1 : 0);
     glUniform1f(u.gridTexelPixels, gridShown_ ? float(pixelsPerTexel) : 0.0f);
+    glUniform1i(u.channel, channel);
     glBindTextureUnit(kDepthUnit, map.texture());
     glBindSampler(kDepthUnit, rawSampler_.id());
+    if (channel > 0) {
+        glBindTextureUnit(kMomentsUnit, momentsView_.id());
+        glBindSampler(kMomentsUnit, rawSampler_.id());
+    }
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
     glBindSampler(kDepthUnit, 0);
+    glBindSampler(kMomentsUnit, 0);
+    glBindTextureUnit(kMomentsUnit, 0);
     glUseProgram(0);
     glEnable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -66,6 +66,13 @@ GLuint MomentsPass::texture(const MapGroup& group) const {
     return it == storage_.end() ? 0 : it->second.texture.id();
 }
 
+MomentsLayer MomentsPass::layer(const MapGroup& group, int layer) const {
+    const auto it = storage_.find(group);
+    if (it == storage_.end() || !it->second.texture) return {};
+    const Storage& s = it->second;
+    return {s.texture.id(), s.format, layer, s.resolution, s.generation};
+}
+
 void MomentsPass::configureSampler(const FilterSettings& filter, const SamplerSettings& settings) {
     if (!sampler_) sampler_ = gl::createSampler();
     const GLuint s = sampler_.id();

@@ -22,6 +22,15 @@ namespace shadowlab {
 
 struct FilterTechnique;
 
+// Where a view's moments are stored: its layer of a group's moments array (the map viewer shows them).
+struct MomentsLayer {
+    GLuint texture = 0;  // GL_TEXTURE_2D_ARRAY, or GL_TEXTURE_CUBE_MAP_ARRAY (layer = 6 x cube + face)
+    GLenum format = 0;   // its GL internal format
+    int layer = 0;
+    int resolution = 0;
+    std::uint64_t generation = 0;  // changes with the allocation
+};
+
 // A view the main pass reads this frame: where its depth is and whether the shadow pass just wrote it.
 struct MomentsView {
     ShadowViewId id;
@@ -52,6 +61,8 @@ public:
 
     // The moments array of a group (2D array or cube-map array), 0 when none.
     GLuint texture(const MapGroup& group) const;
+    // A group's storage with `layer` filled in (texture 0 when none).
+    MomentsLayer layer(const MapGroup& group, int layer) const;
     // The sampler moments are read through: bilinear, the address mode's wrap, the border depth's moments outside.
     GLuint sampler() const { return sampler_.id(); }
     void configureSampler(const FilterSettings& filter, const SamplerSettings& sampler);

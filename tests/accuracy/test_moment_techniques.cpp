@@ -5,9 +5,12 @@
 #include "gl_fixture.h"
 #include "hardcases/hard_case_scenes.h"
 #include "reference_fixture.h"
+#include "accuracy/accuracy_overlay.h"
+#include "image/image_io.h"
 #include "shading/filters/filter_technique.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <cstdio>
 
 namespace shadowlab::test {
@@ -170,6 +173,47 @@ TEST_F(MomentTechniquesAccuracy, TuneEvsmAt16BitsNeverProposesAnExponentAboveThe
                 result.path.size(), double(result.closest.filter.positiveExponent),
                 double(result.closest.filter.negativeExponent), double(result.closest.filter.minVariance),
                 double(result.closest.filter.bleedReduction), result.report.acnePercent, result.report.meanError);
+}
+
+// The soft overlay on case 21 under a sun of 4 degrees (its umbra well inside the slabs' shadows, its penumbra wider
+// than PCF 3x3's reach): cyan marks VSM's bleeding under A's edge, exactly the pixels the soft numbers count; the
+// bleeding reduction 0.3 leaves fewer, PCF none.
+std::size_t softOverlayPixels(const AccuracyReport& r, const LegendEntry& entry) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i * 4 < r.softOverlayRgba.size(); ++i) n += isShadeOf(entry, &r.softOverlayRgba[i * 4]);
+    return n;
+}
+
+TEST_F(MomentTechniquesAccuracy, HardCase21SoftOverlayMarksVsmsBleedingFewerWithTheReductionNoneWithPcf) {
+    const Scene scene = overlappingCasters();
+    AccuracyMeter meter;
+    Settings s = overlappingCastersView();
+    s.lights[0].size = 4.0f;
+    s.reference.softRays = 64;
+    const LegendEntry& bleeding = softLegend()[0];
+    std::size_t marked[3] = {0, 0, 0};
+    const char* names[3] = {"case21-soft-vsm-no-reduction", "case21-soft-vsm-reduction-0.3", "case21-soft-pcf3"};
+    for (int k = 0; k < 3; ++k) {
+        if (k == 1) s.filter.bleedReduction = 0.3f;
+        if (k == 2) s.filter.kind = FilterKind::Pcf;
+        const Camera camera = cameraFor(s.camera, scene, double(kWidth) / kHeight);
+        const AccuracyReport r = meter.measure(scene, s, camera, kWidth, kHeight);
+        ASSERT_TRUE(r.ok) << r.error;
+        ASSERT_TRUE(r.soft.measured);
+        ASSERT_EQ(r.softOverlayRgba.size(), std::size_t(kWidth) * kHeight * 4);
+        const std::filesystem::path dir = std::filesystem::path(SHADOWLAB_TEST_OUTPUT) / "accuracy";
+        std::filesystem::create_directories(dir);
+        const std::string path = (dir / names[k]).string() + ".png";
+        EXPECT_EQ(writePng(path, kWidth, kHeight, 4, r.softOverlayRgba.data(), false), "");
+        marked[k] = softOverlayPixels(r, bleeding);
+        EXPECT_EQ(marked[k], r.soft.counts.bleeding) << names[k] << ": the overlay marks what the numbers count";
+        EXPECT_EQ(softOverlayPixels(r, softLegend()[1]), r.soft.counts.overDarkened) << names[k];
+        std::printf("%-32s %s; %zu penumbra pixels\n", names[k], softOverlayCounts(r.soft).c_str(),
+                    r.soft.counts.penumbra);
+    }
+    EXPECT_GT(marked[0], 500u) << "VSM bleeds under A's edge";
+    EXPECT_LT(marked[1], marked[0] / 2);
+    EXPECT_EQ(marked[2], 0u) << "PCF does not bleed";
 }
 
 }  // namespace

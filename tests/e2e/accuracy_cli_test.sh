@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # End-to-end: `shadowlab measure` and `shadowlab tune`, headless. Checks exit codes, the printed numbers (metrics
-# version 2, causes, the coarse-map warning), the JSON, both overlay PNGs, that a tuned preset loads back and measures
+# version 2, causes, the coarse-map warning), the JSON, the overlay PNGs (the soft one of a light with a size), that a tuned preset loads back and measures
 # within the acne limit (tune --light 1: light 1 measured again), that tune writes nothing when no setting reaches
 # the limit, that --remeasure-bench's GPU and CPU paths agree, and that bad input is refused.
 # Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
@@ -35,7 +35,7 @@ done
 # A light of size > 0: its soft numbers (version 3) after its hard ones, naming the light, in the text and the JSON;
 # a hard light (the acne run above) has none.
 expect_ok measure-soft "$SHADOWLAB" measure --scene builtin:textbook --preset default --width 320 --height 180 \
-  --set lights.0.size=3 --set reference.softRays=64 --json soft.json
+  --set lights.0.size=3 --set reference.softRays=64 --json soft.json --soft-overlay soft.png
 grep -q "soft light lights.0 (size 3.000 degrees angular diameter, 64 rays per pixel), metrics version 3" \
   measure-soft.out && pass "measure names the soft light" || fail "no soft block: $(tail -12 measure-soft.out)"
 for word in "bleeding" "over-darkening" "penumbra width error"; do
@@ -50,6 +50,13 @@ sys.exit(0 if ok else 1)
 PY
 python3 -c "import json,sys; sys.exit('soft' in json.load(open('acne.json'))['lights'][0])" \
   && pass "a hard light has no soft numbers" || fail "acne.json has soft numbers for a hard light"
+# The soft overlay: its PNG, legend and counts; a hard light has no soft reference to colour against.
+[ "$(png_size soft.png)" = "320 180" ] && pass "soft overlay is 320x180" || fail "soft overlay: $(png_size soft.png)"
+grep -q "wrote soft.png (lights.0 (directional): #28e6e6 = light bleeding (V = 0, lit), .*: light bleeding [0-9]* of [0-9]* umbra pixels" \
+  measure-soft.out && pass "measure prints the soft overlay's legend and counts" \
+  || fail "soft overlay line: $(grep soft.png measure-soft.out)"
+expect_error soft-overlay-hard "has no size" "$SHADOWLAB" measure --scene builtin:textbook --preset default \
+  --width 320 --height 180 --soft-overlay hard-soft.png
 
 # Issue 9, observation 3: the roof's leak is named as a culled caster, with its remedy.
 expect_ok measure-roof "$SHADOWLAB" measure --scene builtin:roof --preset default --width 320 --height 180 \

@@ -5,7 +5,9 @@
 #include "settings/settings_fields.h"
 #include "shading/filters/filter_technique.h"
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 
 namespace shadowlab::editor {
 
@@ -29,13 +31,23 @@ constexpr SliderRange kSliders[] = {
     {"filter.momentBias", "moment bias", 0.0f, 1e-3f, "%.2e", ImGuiSliderFlags_Logarithmic},
 };
 
-void techniqueKey(EditorState& state, const char* key) {
+const SliderRange* sliderOf(const char* key) {
     for (const SliderRange& s : kSliders)
-        if (std::strcmp(s.key, key) == 0) {
-            sliderFloatField(state, key, s.label, s.lo, s.hi, s.format, s.flags);
-            return;
-        }
-    const std::string label = std::strcmp(key, "filter.kernel") == 0 ? "kernel (NxN)" : std::string(key).substr(7);
+        if (std::strcmp(s.key, key) == 0) return &s;
+    return nullptr;
+}
+
+std::string keyLabel(const char* key) {
+    if (const SliderRange* s = sliderOf(key)) return s->label;
+    return std::strcmp(key, "filter.kernel") == 0 ? "kernel (NxN)" : std::string(key).substr(7);
+}
+
+void techniqueKey(EditorState& state, const char* key) {
+    if (const SliderRange* s = sliderOf(key)) {
+        sliderFloatField(state, key, s->label, s->lo, s->hi, s->format, s->flags);
+        return;
+    }
+    const std::string label = keyLabel(key);
     const SettingsField* field = findSettingsField(key);
     if (field && field->kind == SettingsFieldKind::Float)
         dragFloatField(state, key, label.c_str(), 0.01f);  // a new technique's key without a slider range above
@@ -47,12 +59,17 @@ void techniqueKey(EditorState& state, const char* key) {
 
 void drawSamplingPanel(PanelContext& ctx) {
     EditorState& state = ctx.state;
-    ImGui::PushItemWidth(-120.0f);
+    // The fields leave room for the widest label shown (a moments technique's "bleeding reduction" is wider than
+    // the depth techniques' labels).
+    const std::vector<const char*>& keys = filterTechnique(state.settings.filter.kind).keys;
+    float labels = std::max(ImGui::CalcTextSize("address mode").x, ImGui::CalcTextSize("border depth").x);
+    for (const char* key : keys) labels = std::max(labels, ImGui::CalcTextSize(keyLabel(key).c_str()).x);
+    ImGui::PushItemWidth(-std::max(120.0f, labels + ImGui::GetStyle().ItemInnerSpacing.x + 2.0f));
     comboField(state, "sampler.addressMode", "address mode");
     if (state.settings.sampler.addressMode == AddressMode::ClampToBorder)
         sliderFloatField(state, "sampler.borderDepth", "border depth", 0.0f, 1.0f, "%.3f");
     comboField(state, "filter.kind", "filter");
-    for (const char* key : filterTechnique(state.settings.filter.kind).keys) techniqueKey(state, key);
+    for (const char* key : filterTechnique(state.settings.filter.kind).keys) techniqueKey(state, key);  // read again: the combo may have just changed it
     for (const std::string& warning : state.stats.warnings)
         if (warning.rfind("filter.", 0) == 0) warningText(warning);  // the technique's clamps name their key
     ImGui::PopItemWidth();

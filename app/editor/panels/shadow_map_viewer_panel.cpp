@@ -1,7 +1,10 @@
 // Shadow map viewer: the depth map as a picture with contrast / linearization, wheel zoom about the cursor, drag
-// to pan, a texel grid when zoomed in, and the texel and stored depth under the cursor.
+// to pan, a texel grid when zoomed in, and the texel and stored depth under the cursor. Under a moments technique
+// it shows either the depth or one stored moment (after the blur), the line under the choice naming the light, the
+// view and the range shown.
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "shading/filters/filter_technique.h"
 
 #include <algorithm>
 #include <cmath>
@@ -96,6 +99,49 @@ void viewPicker(EditorState& state) {
         ImGui::SetTooltip("Which shadow view to show: a light's map, one cube face of a point light or one cascade");
 }
 
+// What the picture shows: the depth, or (a moments technique) one of its stored moments.
+void channelChoice(MapViewerState& v, const FilterSettings& filter, EditorState& state) {
+    const FilterTechnique& technique = filterTechnique(filter.kind);
+    if (!technique.moments) {
+        v.options.channel = 0;
+        return;
+    }
+    const int channels = technique.moments->channels;
+    v.options.channel = std::min(v.options.channel, channels);
+    const auto name = [](int channel) { return channel == 0 ? std::string("depth") : "moment " + std::to_string(channel); };
+    ImGui::TextUnformatted("show");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::BeginCombo("##channel", name(v.options.channel).c_str())) {
+        for (int c = 0; c <= channels; ++c) {
+            if (ImGui::Selectable(name(c).c_str(), c == v.options.channel)) v.options.channel = c;
+            state.controls.recordLastItem("viewer.channel=" + name(c));
+        }
+        ImGui::EndCombo();
+    }
+    state.controls.recordLastItem("viewer.channel");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The view's depth map, or one of the %d moments %s stores (after the blur; "
+                          "docs/techniques.md says what each holds)",
+                          channels, technique.name);
+}
+
+// "light 0 cascade:1: moment 2 of vsm (32-bit, blur 5 texels), black 0.012 .. white 0.98": which light and view,
+// what is shown and the range stretched to black..white.
+std::string shownLabel(const ShadowViewStats& view, const MapViewerState& v, const FilterSettings& filter) {
+    char text[256];
+    if (v.options.channel == 0) {
+        std::snprintf(text, sizeof text, "%s: depth, black %.4g .. white %.4g", view.name.c_str(), double(v.shown.min),
+                      double(v.shown.max));
+    } else {
+        std::snprintf(text, sizeof text, "%s: moment %d of %s (%d-bit, blur %g %s), black %.4g .. white %.4g",
+                      view.name.c_str(), v.options.channel, filterTechnique(filter.kind).name, filter.momentBits,
+                      double(filter.blurWidth), filter.blurUnit == BlurUnit::World ? "world units" : "texels",
+                      double(v.shown.min), double(v.shown.max));
+    }
+    return text;
+}
+
 }  // namespace
 
 void drawShadowMapViewerPanel(PanelContext& ctx) {
@@ -115,7 +161,15 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
         noteText(slice);
         state.controls.recordLastItem("viewer.cascadeSlice");
     }
-    const bool spot = shown->space.perspective;
+    const FilterSettings& filter = state.settings.filter;
+    channelChoice(v, filter, state);
+    v.shownLabel.clear();
+    if (filterTechnique(filter.kind).moments) {
+        v.shownLabel = shownLabel(*shown, v, filter);
+        noteText(v.shownLabel);
+        state.controls.recordLastItem("viewer.shownLabel");
+    }
+    const bool spot = shown->space.perspective && v.options.channel == 0;
     contrastControls(v, spot, state);
     ImGui::Checkbox("texel grid", &v.options.texelGrid);
     ImGui::SameLine();
@@ -172,6 +226,10 @@ void drawShadowMapViewerPanel(PanelContext& ctx) {
 
     if (!v.error.empty()) {
         errorText(v.error);
+    } else if (v.hoverTexel && v.options.channel > 0 && v.hoverMoments) {
+        ImGui::Text("texel (%d, %d): moments %.5g, %.5g, %.5g, %.5g", v.hoverTexel->x, v.hoverTexel->y,
+                    double(v.hoverMoments->x), double(v.hoverMoments->y), double(v.hoverMoments->z),
+                    double(v.hoverMoments->w));
     } else if (v.hoverTexel && v.hoverDepth) {
         ImGui::Text("texel (%d, %d): depth %.6f%s", v.hoverTexel->x, v.hoverTexel->y, double(*v.hoverDepth),
                     *v.hoverDepth >= 1.0f ? " (no caster)" : "");
