@@ -80,33 +80,48 @@ glm::dvec2 stratifiedDiscPoint(int k, int n, std::uint64_t seed) {
     return concentric((double(k - first) + ju) / double(cells), (double(row) + jv) / double(rows));
 }
 
-float softVisibilityAt(const EmbreeScene& bvh, const ReferenceLight& light, const SoftLight& disc,
-                       const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius, std::uint64_t seed) {
+SoftRays softRays(const ReferenceLight& light, const SoftLight& disc, const glm::dvec3& point,
+                  const glm::dvec3& normal, double sceneRadius, std::uint64_t seed) {
+    SoftRays rays;
     const glm::dvec3 origin = shadowRayOrigin(point, normal, sceneRadius);
+    rays.origin = glm::vec3(origin);
+    rays.tFar = light.positional() ? 1.0f - 1e-6f : std::numeric_limits<float>::infinity();  // a segment to the disc
     const glm::dvec3 axis = towardLight(light, point);  // the disc faces the point (directional: the light's axis)
     glm::dvec3 e1, e2;
     basis(axis, e1, e2);
-    int reached = 0;
+    rays.directions.reserve(std::size_t(std::max(disc.rays, 0)));
     for (int k = 0; k < disc.rays; ++k) {
         const glm::dvec2 s = stratifiedDiscPoint(k, disc.rays, seed) * disc.discRadius;
-        glm::dvec3 direction;
-        float tFar = std::numeric_limits<float>::infinity();
-        if (light.positional()) {
-            direction = light.position + e1 * s.x + e2 * s.y - origin;  // a segment to the disc's point
-            tFar = 1.0f - 1e-6f;
-        } else {
-            direction = axis + e1 * s.x + e2 * s.y;
-        }
-        if (!(glm::dot(normal, direction) > 0.0)) continue;  // below the receiver's own surface
-        if (!bvh.occluded(glm::vec3(origin), glm::vec3(direction), tFar)) ++reached;
+        const glm::dvec3 direction =
+            light.positional() ? light.position + e1 * s.x + e2 * s.y - origin : axis + e1 * s.x + e2 * s.y;
+        if (!(glm::dot(normal, direction) > 0.0)) continue;  // below the receiver's own surface: blocked
+        rays.directions.push_back(glm::vec3(direction));
     }
-    return disc.rays > 0 ? float(reached) / float(disc.rays) : 0.0f;
+    return rays;
+}
+
+float softVisibilityAt(const EmbreeScene& bvh, const ReferenceLight& light, const SoftLight& disc,
+                       const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius, std::uint64_t seed,
+                       SoftTracing tracing) {
+    if (disc.rays <= 0) return 0.0f;
+    const SoftRays rays = softRays(light, disc, point, normal, sceneRadius, seed);
+    int reached = 0;
+    if (tracing == SoftTracing::EachRay) {
+        for (const glm::vec3& direction : rays.directions)
+            reached += bvh.occluded(rays.origin, direction, rays.tFar) ? 0 : 1;
+        return float(reached) / float(disc.rays);
+    }
+    thread_local std::vector<std::uint8_t> blocked;
+    blocked.resize(rays.directions.size());
+    bvh.occluded(rays.origin, rays.directions.data(), rays.directions.size(), rays.tFar, blocked.data());
+    for (std::uint8_t b : blocked) reached += b ? 0 : 1;
+    return float(reached) / float(disc.rays);
 }
 
 SoftVisibilityResult traceSoftVisibility(const EmbreeScene& bvh, const SurfaceSamples& samples,
                                          const std::vector<PixelClass>& classes, const ReferenceLight& light,
                                          const SoftLight& disc, double sceneRadius, const std::atomic<bool>* cancel,
-                                         int threads) {
+                                         int threads, SoftTracing tracing) {
     const auto start = std::chrono::steady_clock::now();
     SoftVisibilityResult result;
     result.visibility.assign(samples.size(), 0.0f);
@@ -127,7 +142,7 @@ SoftVisibilityResult traceSoftVisibility(const EmbreeScene& bvh, const SurfaceSa
                 const std::size_t i = std::size_t(row) * std::size_t(samples.width) + std::size_t(x);
                 if (classes[i] != PixelClass::Lit && classes[i] != PixelClass::Shadowed) continue;
                 result.visibility[i] =
-                    softVisibilityAt(bvh, light, disc, samples.point[i], samples.normal[i], sceneRadius, i);
+                    softVisibilityAt(bvh, light, disc, samples.point[i], samples.normal[i], sceneRadius, i, tracing);
                 rowRays += std::size_t(disc.rays);
             }
             rays += rowRays;
