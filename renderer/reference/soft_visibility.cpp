@@ -67,17 +67,28 @@ double analyticPenumbraWidth(const ReferenceLight& light, const SoftLight& disc,
     return lightToEdge > 0.0 ? gap * 2.0 * disc.discRadius / lightToEdge : 0.0;
 }
 
+namespace {
+
+// The first cell of row j: floor(jN/r).
+int rowStart(int row, int n, int rows) { return int((std::int64_t(row) * n) / rows); }
+
+// Sample k, in row `row` of `rows` (cells first .. first + cells - 1), jittered by `seed`.
+glm::dvec2 cellPoint(int k, int row, int rows, int first, int cells, std::uint64_t seed) {
+    const std::uint64_t h = mix(seed * 0x100000001B3ull + std::uint64_t(k));
+    const double ju = unitFraction(h), jv = unitFraction(mix(h));
+    return concentric((double(k - first) + ju) / double(cells), (double(row) + jv) / double(rows));
+}
+
+}  // namespace
+
 glm::dvec2 stratifiedDiscPoint(int k, int n, std::uint64_t seed) {
     const int rows = rowsFor(n);
     // The row holding cell k: the last j with floor(jN/r) <= k.
     int row = int((std::int64_t(k) * rows) / n);
-    while (row + 1 < rows && (std::int64_t(row + 1) * n) / rows <= k) ++row;
-    while (row > 0 && (std::int64_t(row) * n) / rows > k) --row;
-    const int first = int((std::int64_t(row) * n) / rows);
-    const int cells = int((std::int64_t(row + 1) * n) / rows) - first;
-    const std::uint64_t h = mix(seed * 0x100000001B3ull + std::uint64_t(k));
-    const double ju = unitFraction(h), jv = unitFraction(mix(h));
-    return concentric((double(k - first) + ju) / double(cells), (double(row) + jv) / double(rows));
+    while (row + 1 < rows && rowStart(row + 1, n, rows) <= k) ++row;
+    while (row > 0 && rowStart(row, n, rows) > k) --row;
+    const int first = rowStart(row, n, rows);
+    return cellPoint(k, row, rows, first, rowStart(row + 1, n, rows) - first, seed);
 }
 
 SoftRays softRays(const ReferenceLight& light, const SoftLight& disc, const glm::dvec3& point,
@@ -90,8 +101,17 @@ SoftRays softRays(const ReferenceLight& light, const SoftLight& disc, const glm:
     glm::dvec3 e1, e2;
     basis(axis, e1, e2);
     rays.directions.reserve(std::size_t(std::max(disc.rays, 0)));
-    for (int k = 0; k < disc.rays; ++k) {
-        const glm::dvec2 s = stratifiedDiscPoint(k, disc.rays, seed) * disc.discRadius;
+    // stratifiedDiscPoint's samples in order, walking the rows instead of searching each sample's (the same row,
+    // first cell and cell count: the divisions of that search cost as much as the traversal of a coherent ray).
+    const int n = disc.rays, rows = rowsFor(n);
+    int row = 0, first = 0, next = rowStart(1, n, rows);
+    for (int k = 0; k < n; ++k) {
+        while (row + 1 < rows && next <= k) {
+            ++row;
+            first = next;
+            next = rowStart(row + 1, n, rows);
+        }
+        const glm::dvec2 s = cellPoint(k, row, rows, first, next - first, seed) * disc.discRadius;
         const glm::dvec3 direction =
             light.positional() ? light.position + e1 * s.x + e2 * s.y - origin : axis + e1 * s.x + e2 * s.y;
         if (!(glm::dot(normal, direction) > 0.0)) continue;  // below the receiver's own surface: blocked
