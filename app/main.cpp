@@ -5,6 +5,7 @@
 #include "cli/bench_lights.h"
 #include "cli/bench_planner.h"
 #include "cli/bench_reference_update.h"
+#include "cli/bench_soft_reference.h"
 #include "cli/check_command.h"
 #include "cli/export_command.h"
 #include "cli/hardcases_command.h"
@@ -79,12 +80,19 @@ int main(int argc, char** argv) {
                        "lights; camera moving and still), and each cascade's shadow pass against a bare depth draw of "
                        "the casters it holds (the settings' cascaded lights, else the first sun)")
         ->excludes(benchLights);
-    benchCmd->add_flag("--reference-update", bench.referenceUpdate,
+    CLI::Option* benchReferenceUpdate = benchCmd->add_flag("--reference-update", bench.referenceUpdate,
                        "the exact reference following an animation step (CPU, Embree): the top level updated after one "
                        "instance and after a whole step moved, against a full rebuild (a scene with an animation: "
                        "builtin:city-traffic)")
         ->excludes(benchLights)
         ->excludes(benchPlanner);
+    benchCmd->add_flag("--soft-reference", bench.softReference,
+                       "the soft reference's CPU time (Embree) for the first shadow-casting light at its size "
+                       "(lights.N.size > 0) and reference.softRays over the view: one query per ray against a pixel's "
+                       "rays in one stream query, and how far their V differ")
+        ->excludes(benchLights)
+        ->excludes(benchPlanner)
+        ->excludes(benchReferenceUpdate);
     cli::BenchAnimationOptions benchAnimation;
     cli::addBenchAnimationOptions(*benchCmd, benchAnimation);
 
@@ -290,7 +298,8 @@ int main(int argc, char** argv) {
     if (*renderCmd) return cli::runRender(render);
     if (*benchCmd && benchAnimation.requested(*benchCmd)) return cli::runBenchAnimation(bench, benchAnimation);
     if (*benchCmd)
-        return bench.referenceUpdate ? cli::runBenchReferenceUpdate(bench)
+        return bench.softReference     ? cli::runBenchSoftReference(bench)
+               : bench.referenceUpdate ? cli::runBenchReferenceUpdate(bench)
                : bench.planner       ? cli::runBenchPlanner(bench)
                : bench.lights ? cli::runBenchLights(bench)
                               : cli::runBench(bench);

@@ -23,6 +23,7 @@ struct BenchOptions {
     bool lights = false;  // many lights instead: per-view times, what the planner skips, main pass per light count
     bool planner = false;  // the planner's CPU time with 8 lights, each cascade's pass against a bare depth draw
     bool referenceUpdate = false;  // the exact reference's update after an animation step against a rebuild
+    bool softReference = false;    // the soft reference's trace: one query per ray against a stream query per pixel
 };
 
 int runBench(const BenchOptions& options);

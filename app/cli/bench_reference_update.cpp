@@ -41,17 +41,6 @@ std::string describe(const Timing& t, const Timing& rebuild) {
     return text;
 }
 
-// The CPU the figures were taken on (/proc/cpuinfo's first model name).
-std::string cpuName() {
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-        if (line.rfind("model name", 0) == 0) {
-            const std::size_t colon = line.find(':');
-            return colon == std::string::npos ? line : line.substr(line.find_first_not_of(' ', colon + 1));
-        }
-    return "unknown CPU";
-}
-
 // The median milliseconds of `repeats` updates of `bvh`, alternating `scene`'s instances between the poses `a` and
 // `b` (only the instances in `moved`).
 Timing timeUpdates(EmbreeScene& bvh, Scene& scene, const Scene& a, const Scene& b, const std::vector<std::size_t>& moved,
@@ -67,6 +56,16 @@ Timing timeUpdates(EmbreeScene& bvh, Scene& scene, const Scene& a, const Scene& 
 }
 
 }  // namespace
+
+std::string cpuName() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("model name", 0) == 0) {
+            const std::size_t colon = line.find(':');
+            return colon == std::string::npos ? line : line.substr(line.find_first_not_of(' ', colon + 1));
+        }
+    return "unknown CPU";
+}
 
 int runBenchReferenceUpdate(const BenchOptions& options) {
     std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);

@@ -10,8 +10,13 @@
 // (builtin:city-traffic).
 #include "cli/bench_command.h"
 
+#include <string>
+
 namespace shadowlab::cli {
 
 int runBenchReferenceUpdate(const BenchOptions& options);
+
+// The CPU the reference benches' figures were taken on (/proc/cpuinfo's first model name).
+std::string cpuName();
 
 }  // namespace shadowlab::cli

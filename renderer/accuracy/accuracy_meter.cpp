@@ -12,6 +12,7 @@
 #include "light/scene_lights.h"
 #include "reference/embree_scene.h"
 #include "reference/parallel_rows.h"
+#include "reference/pixel_vector.h"
 #include "reference/soft_visibility.h"
 #include "reference/visibility.h"
 #include "scene/scene_casters.h"
@@ -88,22 +89,27 @@ struct EdgeUnits {
 };
 
 // Texels per screen pixel over the measured pixels: the texel density view's ratio (shaders/main.frag.glsl).
-TexelDensity texelDensityOf(const std::vector<std::uint8_t>& measured, const EdgeUnits& units) {
+// The ratios per row on all cores; the three percentiles from one list (each selection only reorders it, and the
+// p-th value does not depend on the order).
+TexelDensity texelDensityOf(const std::vector<std::uint8_t>& measured, const EdgeUnits& units, int width,
+                            int height) {
+    std::vector<std::vector<double>> rows(static_cast<std::size_t>(height));
+    parallelRows(height, [&](int row) {
+        const std::size_t first = std::size_t(row) * std::size_t(width);
+        for (std::size_t i = first; i < first + std::size_t(width); ++i) {
+            if (!measured[i]) continue;
+            const double texel = units.worldPerTexel(i);
+            if (texel > 0.0) rows[std::size_t(row)].push_back(units.worldPerPixel(i) / texel);
+        }
+    });
     std::vector<double> ratios;
-    for (std::size_t i = 0; i < measured.size(); ++i) {
-        if (!measured[i]) continue;
-        const double texel = units.worldPerTexel(i);
-        if (texel > 0.0) ratios.push_back(units.worldPerPixel(i) / texel);
-    }
+    for (const std::vector<double>& row : rows) ratios.insert(ratios.end(), row.begin(), row.end());
     TexelDensity d;
     d.pixels = ratios.size();
     if (ratios.empty()) return d;
-    std::vector<double> work = ratios;
-    d.p5 = percentile(work, 5);
-    work = ratios;
-    d.median = percentile(work, 50);
-    work = ratios;
-    d.p95 = percentile(work, 95);
+    d.p5 = percentile(ratios, 5);
+    d.median = percentile(ratios, 50);
+    d.p95 = percentile(ratios, 95);
     return d;
 }
 
@@ -307,13 +313,14 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.warnings = stats.warnings;
     for (const ShadowViewStats& view : stats.views) report.shadowViewsRendered += view.ran ? 1 : 0;
     const std::size_t count = std::size_t(width) * std::size_t(height);
-    std::vector<float> frame(count * 4);
+    PixelVector<float> frame;
+    frame.resize(count * 4);  // written whole by the read-back
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(m.toolTarget.colorTexture(), 0, GL_RGBA, GL_FLOAT, GLsizei(frame.size() * sizeof(float)),
                       frame.data());
     std::vector<float> shadowFactor(count);
     std::vector<std::uint8_t> toolCovered(count);
-    for (int row = 0; row < height; ++row) {
+    parallelRows(height, [&](int row) {
         const std::size_t src = std::size_t(height - 1 - row) * std::size_t(width);
         const std::size_t dst = std::size_t(row) * std::size_t(width);
         for (std::size_t x = 0; x < std::size_t(width); ++x) {
@@ -322,7 +329,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
             // The shadow view writes grey; the clear colour is not grey.
             toolCovered[dst + x] = px[0] == px[1] && px[1] == px[2] ? 1 : 0;
         }
-    }
+    });
     report.cost.toolFrameMs = msSince(t);
     if (cancelled(progress)) return stop();
 
@@ -428,12 +435,18 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     const double k = report.kTexels;
     ShadowBoundary& boundary = *m.boundary;
     // The pixels whose distance and cause the metrics need (the visibly wrong ones), on all cores first.
+    // Per row on all cores; joined in row order, the list is in pixel order as before.
+    std::vector<std::vector<std::size_t>> mismatchedRows(static_cast<std::size_t>(height));
+    parallelRows(height, [&](int row) {
+        const std::size_t first = std::size_t(row) * std::size_t(width);
+        for (std::size_t i = first; i < first + std::size_t(width); ++i) {
+            const PixelClass c = m.visibility.classes[i];
+            if (!isScored(c) || !toolCovered[i] || !std::isfinite(shadowFactor[i])) continue;
+            if (visiblyWrong(isLit(c), shadowFactor[i])) mismatchedRows[std::size_t(row)].push_back(i);
+        }
+    });
     std::vector<std::size_t> mismatched;
-    for (std::size_t i = 0; i < count; ++i) {
-        const PixelClass c = m.visibility.classes[i];
-        if (!isScored(c) || !toolCovered[i] || !std::isfinite(shadowFactor[i])) continue;
-        if (visiblyWrong(isLit(c), shadowFactor[i])) mismatched.push_back(i);
-    }
+    for (const std::vector<std::size_t>& row : mismatchedRows) mismatched.insert(mismatched.end(), row.begin(), row.end());
     const std::size_t probedBefore = boundary.probedPixels();
     const auto probeStart = Clock::now();
     boundary.prepare(mismatched, k);
@@ -471,9 +484,9 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     input.cause = [&](std::size_t i, double) { return causes[i]; };
     input.worldPerTexel = [&](std::size_t i) { return units.worldPerTexel(i); };
     input.worldPerPixel = [&](std::size_t i) { return units.worldPerPixel(i); };
-    const MetricsResult metrics = computeMetrics(input);
+    MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
-    report.texelDensity = texelDensityOf(metrics.measured, units);
+    report.texelDensity = texelDensityOf(metrics.measured, units, width, height);
     if (disc.soft()) {
         SoftMetricsInput softInput;
         softInput.width = width;
@@ -495,13 +508,22 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         report.soft.rays = disc.rays;
         report.pixelSoftVisibility = m.soft.visibility;
     }
+    // Per row on all cores (a shadowed pixel's distance is a nearest-point query), the counts summed after.
     report.pixelOnBoundary.assign(count, 0);
-    for (std::size_t i = 0; i < count; ++i) {
-        report.pixelOnBoundary[i] = boundary.onBoundary(i) ? 1 : 0;
-        report.counts.boundaryPixels += report.pixelOnBoundary[i];
-        const PixelClass c = m.visibility.classes[i];
-        if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
-            ++report.counts.shadowedNearEdge;
+    std::vector<std::size_t> boundaryPixels(std::size_t(height), 0), shadowedNearEdge(std::size_t(height), 0);
+    parallelRows(height, [&](int row) {
+        const std::size_t first = std::size_t(row) * std::size_t(width);
+        for (std::size_t i = first; i < first + std::size_t(width); ++i) {
+            report.pixelOnBoundary[i] = boundary.onBoundary(i) ? 1 : 0;
+            boundaryPixels[std::size_t(row)] += report.pixelOnBoundary[i];
+            const PixelClass c = m.visibility.classes[i];
+            if (isScored(c) && !isLit(c) && toolCovered[i] && boundary.visibleDistance(i) <= k)
+                ++shadowedNearEdge[std::size_t(row)];
+        }
+    });
+    for (int row = 0; row < height; ++row) {
+        report.counts.boundaryPixels += boundaryPixels[std::size_t(row)];
+        report.counts.shadowedNearEdge += shadowedNearEdge[std::size_t(row)];
     }
     report.coarseMapWarning = coarseMapWarning(report);
     report.width = width;
@@ -515,15 +537,18 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
                                                  m.visibility.lambert, m.soft.visibility, metrics.measured,
                                                  settings.ambient);
     report.pixelClass = m.visibility.classes;
-    report.pixelShadow = shadowFactor;
+    report.pixelShadow = std::move(shadowFactor);
     report.pixelLambert = m.visibility.lambert;
-    report.pixelCause = metrics.causes;
-    report.pixelMark = metrics.marks;
-    report.pixelMeasured = metrics.measured;
+    report.pixelCause = std::move(metrics.causes);  // the overlays above were the last to read them
+    report.pixelMark = std::move(metrics.marks);
+    report.pixelMeasured = std::move(metrics.measured);
     if (const std::vector<ShadowView> cascades = frameCascades(stats); !cascades.empty()) {
         std::vector<std::int8_t> cascadeOf(count, -1);
-        for (std::size_t i = 0; i < count; ++i)
-            if (report.pixelMeasured[i]) cascadeOf[i] = std::int8_t(selectView(cascades, m.samples.point[i]).view);
+        parallelRows(height, [&](int row) {
+            const std::size_t first = std::size_t(row) * std::size_t(width);
+            for (std::size_t i = first; i < first + std::size_t(width); ++i)
+                if (report.pixelMeasured[i]) cascadeOf[i] = std::int8_t(selectView(cascades, m.samples.point[i]).view);
+        });
         std::vector<double> texelWorld;
         for (const ShadowView& c : cascades) texelWorld.push_back(c.space.texelWorldSize);
         report.cascades = cascadeAccuracy(report, cascadeOf, texelWorld);

@@ -1,5 +1,7 @@
 #include "accuracy/accuracy_overlay.h"
 
+#include "reference/parallel_rows.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,22 +77,24 @@ std::vector<std::uint8_t> dimmedPicture(int width, int height, const std::vector
                                         float ambient) {
     const std::size_t count = std::size_t(width) * std::size_t(height);
     std::vector<std::uint8_t> rgba(count * 4, 255);
-    for (std::size_t i = 0; i < count; ++i) {
-        std::uint8_t grey[3] = {20, 22, 26};
-        if (classes[i] != PixelClass::Background) {
-            const float s = std::isfinite(shadowFactor[i]) ? std::clamp(shadowFactor[i], 0.0f, 1.0f) : 0.0f;
-            const float light = ambient + (1.0f - ambient) * s * lambert[i];
-            grey[0] = grey[1] = grey[2] = std::uint8_t(45.0f + 95.0f * std::clamp(light, 0.0f, 1.0f));
+    parallelRows(height, [&](int row) {
+        const std::size_t first = std::size_t(row) * std::size_t(width);
+        for (std::size_t i = first; i < first + std::size_t(width); ++i) {
+            std::uint8_t grey[3] = {20, 22, 26};
+            if (classes[i] != PixelClass::Background) {
+                const float s = std::isfinite(shadowFactor[i]) ? std::clamp(shadowFactor[i], 0.0f, 1.0f) : 0.0f;
+                const float light = ambient + (1.0f - ambient) * s * lambert[i];
+                grey[0] = grey[1] = grey[2] = std::uint8_t(45.0f + 95.0f * std::clamp(light, 0.0f, 1.0f));
+            }
+            std::copy(grey, grey + 3, &rgba[i * 4]);
         }
-        std::copy(grey, grey + 3, &rgba[i * 4]);
-    }
+    });
     return rgba;
 }
 
 std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, const std::vector<PixelClass>& classes,
                                       const std::vector<float>& shadowFactor, const std::vector<float>& lambert,
                                       const MetricsResult& metrics, const ShadowBoundary& boundary, float ambient) {
-    const std::size_t count = std::size_t(width) * std::size_t(height);
     std::vector<std::uint8_t> rgba = dimmedPicture(width, height, classes, shadowFactor, lambert, ambient);
     auto put = [&](std::size_t i, const LegendEntry& e) {
         rgba[i * 4] = e.red;
@@ -101,25 +105,28 @@ std::vector<std::uint8_t> makeOverlay(OverlayKind kind, int width, int height, c
         const OverlayRgb c = shadedColour(e, lambert[i]);
         put(i, {"", c.red, c.green, c.blue});
     };
-    for (std::size_t i = 0; i < count; ++i) {
-        if (classes[i] == PixelClass::Background) continue;
-        const PixelMark mark = metrics.marks[i];
-        bool counted = mark == PixelMark::Acne || mark == PixelMark::Leak;
-        if (kind == OverlayKind::Cause && metrics.causes[i] != MismatchCause::None) {
-            const CauseInfo& info = causeInfo(metrics.causes[i]);
-            shade(i, {"", info.red, info.green, info.blue});
-            counted = metrics.causes[i] != MismatchCause::NearEdge;
-        } else {
-            switch (mark) {
-                case PixelMark::Acne: shade(i, kAcne); break;
-                case PixelMark::AcneNearEdge: shade(i, kAcneNearEdge); break;
-                case PixelMark::Leak: shade(i, kLeak); break;
-                case PixelMark::LeakNearEdge: shade(i, kLeakNearEdge); break;
-                case PixelMark::None: break;  // the dimmed picture
+    parallelRows(height, [&](int row) {
+        const std::size_t first = std::size_t(row) * std::size_t(width);
+        for (std::size_t i = first; i < first + std::size_t(width); ++i) {
+            if (classes[i] == PixelClass::Background) continue;
+            const PixelMark mark = metrics.marks[i];
+            bool counted = mark == PixelMark::Acne || mark == PixelMark::Leak;
+            if (kind == OverlayKind::Cause && metrics.causes[i] != MismatchCause::None) {
+                const CauseInfo& info = causeInfo(metrics.causes[i]);
+                shade(i, {"", info.red, info.green, info.blue});
+                counted = metrics.causes[i] != MismatchCause::NearEdge;
+            } else {
+                switch (mark) {
+                    case PixelMark::Acne: shade(i, kAcne); break;
+                    case PixelMark::AcneNearEdge: shade(i, kAcneNearEdge); break;
+                    case PixelMark::Leak: shade(i, kLeak); break;
+                    case PixelMark::LeakNearEdge: shade(i, kLeakNearEdge); break;
+                    case PixelMark::None: break;  // the dimmed picture
+                }
             }
+            if (boundary.onBoundary(i) && !counted) put(i, kBoundary);
         }
-        if (boundary.onBoundary(i) && !counted) put(i, kBoundary);
-    }
+    });
     return rgba;
 }
 

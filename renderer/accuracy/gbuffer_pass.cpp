@@ -3,6 +3,7 @@
 #include "frame/face_culling.h"
 #include "gl/program.h"
 #include "reference/parallel_rows.h"
+#include "reference/pixel_vector.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -109,7 +110,8 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
     const std::size_t count = std::size_t(width) * std::size_t(height);
-    std::vector<GLuint> ids(count * 2);
+    PixelVector<GLuint> ids;
+    ids.resize(count * 2);  // written whole by the read-back
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glGetTextureImage(ids_.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(ids.size() * sizeof(GLuint)), ids.data());
 
@@ -120,22 +122,31 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
     const glm::dvec3 origin = gpuScene.origin();
     const glm::dmat4 toOrigin = glm::dmat4(1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -origin.x,
                                            -origin.y, -origin.z, 1.0);
+    // Each draw's model matrix once (the same product every pixel of it would form).
+    std::vector<glm::dmat4> drawModel(drawInstance.size());
+    for (std::size_t d = 0; d < drawInstance.size(); ++d)
+        drawModel[d] = toOrigin * glm::dmat4(drawInstance[d]->transform);
 
     out.width = width;
     out.height = height;
-    out.draw.assign(count, -1);
-    out.instance.assign(count, -1);
-    out.triangle.assign(count, -1);
-    out.point.assign(count, glm::dvec3(0.0));
-    out.normal.assign(count, glm::dvec3(0.0));
-    out.finite.assign(count, 0);
+    // Uninitialized (PixelVector): the rows below write every entry, on every core.
+    out.draw.resize(count);
+    out.instance.resize(count);
+    out.triangle.resize(count);
+    out.point.resize(count);
+    out.normal.resize(count);
+    out.finite.resize(count);
     const glm::dmat4 inverse = glm::inverse(viewProjection);
     parallelRows(height, [&](int rowTop) {
         const int rowGl = height - 1 - rowTop;
         for (int x = 0; x < width; ++x) {
             const std::size_t src = (std::size_t(rowGl) * std::size_t(width) + std::size_t(x)) * 2;
-            if (ids[src] == 0) continue;
             const std::size_t i = std::size_t(rowTop) * std::size_t(width) + std::size_t(x);
+            // Background until the ids say otherwise.
+            out.draw[i] = out.instance[i] = out.triangle[i] = -1;
+            out.point[i] = out.normal[i] = glm::dvec3(0.0);
+            out.finite[i] = 0;
+            if (ids[src] == 0) continue;
             const std::size_t d = ids[src] - 1;
             const std::size_t triangle = ids[src + 1];
             if (d >= drawInstance.size()) continue;
@@ -145,7 +156,7 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
             if (triangle >= mesh.triangleCount()) continue;
             out.instance[i] = std::int32_t(&instance - scene.instances.data());
             out.triangle[i] = std::int32_t(triangle);
-            const glm::dmat4 model = toOrigin * glm::dmat4(instance.transform);
+            const glm::dmat4& model = drawModel[d];
             glm::dvec3 v[3];
             for (int k = 0; k < 3; ++k)
                 v[k] = glm::dvec3(model * glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[triangle * 3 + std::size_t(k)]]), 1.0));

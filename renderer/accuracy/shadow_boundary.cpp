@@ -63,62 +63,84 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
     right_ = glm::dvec3(light.view[0][0], light.view[1][0], light.view[2][0]);
     up_ = glm::dvec3(light.view[0][1], light.view[1][1], light.view[2][1]);
 
+    // Every per-pixel buffer is set by the rows below, on every core (PixelVector: no serial initialization first).
     const std::size_t count = samples.size();
-    texel_.assign(count, glm::dvec2(std::numeric_limits<double>::quiet_NaN()));
-    onBoundary_.assign(count, 0);
-    visibleDistance_.assign(count, -1.0f);
-    probedTo_.assign(count, 0.0f);
-    flipAt_.assign(count, std::numeric_limits<float>::infinity());
+    texel_.resize(count);
+    onBoundary_.resize(count);
+    visibleDistance_.resize(count);
+    probedTo_.resize(count);
+    flipAt_.resize(count);
     point_ = probe.light.type == LightType::Point;
-    if (point_) face_.assign(count, 0);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (!hasVisibility(classes[i])) continue;
-        if (point_) {
-            const glm::dvec3 d = samples.point[i] - probe.light.position;
-            face_[i] = std::uint8_t(cubeFaceOf(d));  // the face the lookup selects
-            texel_[i] = faceTexels(d, face_[i], light.resolution);
-        } else {
-            texel_[i] = toTexels(light, samples.point[i]);
-        }
-    }
-    if (!cascades_.empty()) {
-        // Beyond the shadow distance no cascade holds a pixel: the last one's texels measure it.
-        texelScale_.assign(count, 1.0f);
-        for (std::size_t i = 0; i < count; ++i)
-            if (hasVisibility(classes[i]))
-                texelScale_[i] = float(light.texelWorldSize / texelWorldSizeAt(samples.point[i]));
-    }
-
-    std::vector<glm::dvec2> points;
-    std::array<std::vector<glm::dvec2>, 6> facePoints;
+    if (point_) face_.resize(count);
+    if (!cascades_.empty()) texelScale_.resize(count);
     const std::size_t w = std::size_t(samples.width);
-    auto consider = [&](std::size_t i, std::size_t j) {
-        if (!hasVisibility(classes[i]) || !hasVisibility(classes[j])) return;
-        if (isLit(classes[i]) == isLit(classes[j])) return;
-        if (!sameSurface(samples, i, j)) return;
-        bool kept = false;
-        if (point_) {
-            for (int f = 0; f < 6; ++f) {
-                const glm::dvec2 a = faceTexels(samples.point[i] - probe.light.position, f, light.resolution);
-                const glm::dvec2 b = faceTexels(samples.point[j] - probe.light.position, f, light.resolution);
-                if (!finite2(a) || !finite2(b)) continue;
-                facePoints[std::size_t(f)].push_back(0.5 * (a + b));
+    parallelRows(samples.height, [&](int row) {
+        for (std::size_t i = std::size_t(row) * w; i < std::size_t(row + 1) * w; ++i) {
+            texel_[i] = glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+            onBoundary_[i] = 0;
+            visibleDistance_[i] = -1.0f;  // not yet computed
+            probedTo_[i] = 0.0f;
+            flipAt_[i] = std::numeric_limits<float>::infinity();
+            if (point_) face_[i] = 0;
+            if (!cascades_.empty()) texelScale_[i] = 1.0f;
+            if (!hasVisibility(classes[i])) continue;
+            if (point_) {
+                const glm::dvec3 d = samples.point[i] - probe.light.position;
+                face_[i] = std::uint8_t(cubeFaceOf(d));  // the face the lookup selects
+                texel_[i] = faceTexels(d, face_[i], light.resolution);
+            } else {
+                texel_[i] = toTexels(light, samples.point[i]);
+            }
+            // Beyond the shadow distance no cascade holds a pixel: the last one's texels measure it.
+            if (!cascades_.empty()) texelScale_[i] = float(light.texelWorldSize / texelWorldSizeAt(samples.point[i]));
+        }
+    });
+
+    // The boundary points of each row's pairs (the pixel and its right and lower neighbours) on all cores, joined in
+    // row order; the lit pixel of each pair is marked after, as a pair may mark a pixel of the next row.
+    struct RowBoundary {
+        std::vector<glm::dvec2> points;
+        std::array<std::vector<glm::dvec2>, 6> facePoints;
+        std::vector<std::size_t> marked;
+    };
+    std::vector<RowBoundary> rows(std::size_t(std::max(samples.height, 0)));
+    parallelRows(samples.height, [&](int y) {
+        RowBoundary& out = rows[std::size_t(y)];
+        auto consider = [&](std::size_t i, std::size_t j) {
+            if (!hasVisibility(classes[i]) || !hasVisibility(classes[j])) return;
+            if (isLit(classes[i]) == isLit(classes[j])) return;
+            if (!sameSurface(samples, i, j)) return;
+            bool kept = false;
+            if (point_) {
+                for (int f = 0; f < 6; ++f) {
+                    const glm::dvec2 a = faceTexels(samples.point[i] - probe.light.position, f, light.resolution);
+                    const glm::dvec2 b = faceTexels(samples.point[j] - probe.light.position, f, light.resolution);
+                    if (!finite2(a) || !finite2(b)) continue;
+                    out.facePoints[std::size_t(f)].push_back(0.5 * (a + b));
+                    kept = true;
+                }
+            } else {
+                const glm::dvec2 mid = 0.5 * (texel_[i] + texel_[j]);
+                if (!finite2(mid)) return;
+                out.points.push_back(mid);
                 kept = true;
             }
-        } else {
-            const glm::dvec2 mid = 0.5 * (texel_[i] + texel_[j]);
-            if (!finite2(mid)) return;
-            points.push_back(mid);
-            kept = true;
-        }
-        if (kept) onBoundary_[isLit(classes[i]) ? i : j] = 1;
-    };
-    for (int y = 0; y < samples.height; ++y)
+            if (kept) out.marked.push_back(isLit(classes[i]) ? i : j);
+        };
         for (int x = 0; x < samples.width; ++x) {
             const std::size_t i = std::size_t(y) * w + std::size_t(x);
             if (x + 1 < samples.width) consider(i, i + 1);
             if (y + 1 < samples.height) consider(i, i + w);
         }
+    });
+    std::vector<glm::dvec2> points;
+    std::array<std::vector<glm::dvec2>, 6> facePoints;
+    for (const RowBoundary& row : rows) {
+        points.insert(points.end(), row.points.begin(), row.points.end());
+        for (std::size_t f = 0; f < 6; ++f)
+            facePoints[f].insert(facePoints[f].end(), row.facePoints[f].begin(), row.facePoints[f].end());
+        for (std::size_t i : row.marked) onBoundary_[i] = 1;
+    }
     tree_ = PointTree(std::move(points));
     for (std::size_t f = 0; f < 6; ++f) faceTrees_[f] = PointTree(std::move(facePoints[f]));
 }

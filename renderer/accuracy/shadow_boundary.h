@@ -15,6 +15,7 @@
 #include "light/light_space.h"
 #include "views/shadow_view.h"
 #include "reference/embree_scene.h"
+#include "reference/pixel_vector.h"
 #include "reference/surface_samples.h"
 #include "reference/visibility.h"
 
@@ -86,18 +87,18 @@ private:
     LightSpace light_;
     BoundaryProbe probe_;
     glm::dvec3 right_{1.0, 0.0, 0.0}, up_{0.0, 1.0, 0.0};  // the light's image axes in world space
-    std::vector<glm::dvec2> texel_;
-    std::vector<std::uint8_t> onBoundary_;  // the lit pixel of each boundary pair: the thin line in the overlay
-    std::vector<float> visibleDistance_;    // to the visible boundary; -1 = not yet computed
-    std::vector<float> probedTo_;           // rings probed out to this radius (texels)
-    std::vector<float> flipAt_;             // smallest probed radius where visibility flips; +inf = none yet
+    PixelVector<glm::dvec2> texel_;
+    PixelVector<std::uint8_t> onBoundary_;  // the lit pixel of each boundary pair: the thin line in the overlay
+    PixelVector<float> visibleDistance_;    // to the visible boundary; -1 = not yet computed
+    PixelVector<float> probedTo_;           // rings probed out to this radius (texels)
+    PixelVector<float> flipAt_;             // smallest probed radius where visibility flips; +inf = none yet
     std::atomic<std::size_t> probedPixels_{0};
     std::atomic<std::size_t> probeRays_{0};
     PointTree tree_;
     std::array<PointTree, 6> faceTrees_;  // point light: the boundary on each cube face's plane
-    std::vector<std::uint8_t> face_;      // point light: the face that sees each pixel
+    PixelVector<std::uint8_t> face_;      // point light: the face that sees each pixel
     std::vector<ShadowView> cascades_;    // a cascaded light's cascades
-    std::vector<float> texelScale_;       // cascades: the first cascade's texel over the holding cascade's, per pixel
+    PixelVector<float> texelScale_;       // cascades: the first cascade's texel over the holding cascade's, per pixel
     bool point_ = false;
 };
 

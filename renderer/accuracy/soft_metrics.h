@@ -22,6 +22,8 @@
 //      the edge pixel's shadow-map texel size. A profile where either field has no such crossings is not counted.
 //   5. Reported: the medians over the counted profiles of the reference's width, the technique's, and of the
 //      per-profile difference technique - reference (the penumbra width error), in world units and texels.
+#include "reference/pixel_vector.h"
+
 #include <glm/ext/vector_double3.hpp>
 
 #include <cstddef>
@@ -79,8 +81,8 @@ struct SoftMetricsInput {
     const std::vector<std::uint8_t>* measured = nullptr;  // per pixel: scored (MetricsResult::measured)
     const std::vector<float>* visibility = nullptr;       // the soft V
     const std::vector<float>* shadowFactor = nullptr;     // the tool's S
-    const std::vector<glm::dvec3>* points = nullptr;      // surface point per pixel (row 0 = top)
-    const std::vector<glm::dvec3>* normals = nullptr;     // unit geometric normal per pixel
+    const PixelVector<glm::dvec3>* points = nullptr;      // surface point per pixel (row 0 = top)
+    const PixelVector<glm::dvec3>* normals = nullptr;     // unit geometric normal per pixel
     std::function<double(std::size_t)> worldPerTexel;     // shadow-map texel size at pixel i (world units)
 };
 

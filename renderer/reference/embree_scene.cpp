@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <vector>
 
 namespace shadowlab {
 
@@ -323,6 +324,20 @@ bool EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3& direction, 
     RTCRay ray = makeRay(origin, direction, tFar);
     rtcOccluded1(static_cast<RTCScene>(scene_), &context, &ray);
     return ray.tfar == -std::numeric_limits<float>::infinity();
+}
+
+void EmbreeScene::occluded(const glm::vec3& origin, const glm::vec3* directions, std::size_t count, float tFar,
+                           std::uint8_t* blocked) const {
+    QueryContext query;
+    rtcInitIntersectContext(&query.base);
+    query.base.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    query.scene = this;
+    thread_local std::vector<RTCRay> rays;  // reused: a pixel's rays, every pixel of a row
+    rays.resize(count);
+    for (std::size_t r = 0; r < count; ++r) rays[r] = makeRay(origin, directions[r], tFar);
+    rtcOccluded1M(static_cast<RTCScene>(scene_), &query.base, rays.data(), unsigned(count), sizeof(RTCRay));
+    for (std::size_t r = 0; r < count; ++r)
+        blocked[r] = rays[r].tfar == -std::numeric_limits<float>::infinity() ? 1 : 0;
 }
 
 RayHit EmbreeScene::firstHit(const glm::vec3& origin, const glm::vec3& direction, float tFar,

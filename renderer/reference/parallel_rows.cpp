@@ -7,7 +7,17 @@
 
 namespace shadowlab {
 
-int workerCount() { return std::max(1, int(std::thread::hardware_concurrency())); }
+namespace {
+std::atomic<int> forcedWorkers{0};  // 0: every core
+}  // namespace
+
+int workerCount() {
+    const int forced = forcedWorkers.load();
+    return forced > 0 ? forced : std::max(1, int(std::thread::hardware_concurrency()));
+}
+
+ScopedWorkerCount::ScopedWorkerCount(int threads) : previous_(forcedWorkers.exchange(std::max(threads, 1))) {}
+ScopedWorkerCount::~ScopedWorkerCount() { forcedWorkers.store(previous_); }
 
 void parallelRows(int rows, const std::function<void(int row)>& work) { parallelRows(rows, work, workerCount()); }
 

@@ -67,46 +67,81 @@ double analyticPenumbraWidth(const ReferenceLight& light, const SoftLight& disc,
     return lightToEdge > 0.0 ? gap * 2.0 * disc.discRadius / lightToEdge : 0.0;
 }
 
-glm::dvec2 stratifiedDiscPoint(int k, int n, std::uint64_t seed) {
-    const int rows = rowsFor(n);
-    // The row holding cell k: the last j with floor(jN/r) <= k.
-    int row = int((std::int64_t(k) * rows) / n);
-    while (row + 1 < rows && (std::int64_t(row + 1) * n) / rows <= k) ++row;
-    while (row > 0 && (std::int64_t(row) * n) / rows > k) --row;
-    const int first = int((std::int64_t(row) * n) / rows);
-    const int cells = int((std::int64_t(row + 1) * n) / rows) - first;
+namespace {
+
+// The first cell of row j: floor(jN/r).
+int rowStart(int row, int n, int rows) { return int((std::int64_t(row) * n) / rows); }
+
+// Sample k, in row `row` of `rows` (cells first .. first + cells - 1), jittered by `seed`.
+glm::dvec2 cellPoint(int k, int row, int rows, int first, int cells, std::uint64_t seed) {
     const std::uint64_t h = mix(seed * 0x100000001B3ull + std::uint64_t(k));
     const double ju = unitFraction(h), jv = unitFraction(mix(h));
     return concentric((double(k - first) + ju) / double(cells), (double(row) + jv) / double(rows));
 }
 
-float softVisibilityAt(const EmbreeScene& bvh, const ReferenceLight& light, const SoftLight& disc,
-                       const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius, std::uint64_t seed) {
+}  // namespace
+
+glm::dvec2 stratifiedDiscPoint(int k, int n, std::uint64_t seed) {
+    const int rows = rowsFor(n);
+    // The row holding cell k: the last j with floor(jN/r) <= k.
+    int row = int((std::int64_t(k) * rows) / n);
+    while (row + 1 < rows && rowStart(row + 1, n, rows) <= k) ++row;
+    while (row > 0 && rowStart(row, n, rows) > k) --row;
+    const int first = rowStart(row, n, rows);
+    return cellPoint(k, row, rows, first, rowStart(row + 1, n, rows) - first, seed);
+}
+
+SoftRays softRays(const ReferenceLight& light, const SoftLight& disc, const glm::dvec3& point,
+                  const glm::dvec3& normal, double sceneRadius, std::uint64_t seed) {
+    SoftRays rays;
     const glm::dvec3 origin = shadowRayOrigin(point, normal, sceneRadius);
+    rays.origin = glm::vec3(origin);
+    rays.tFar = light.positional() ? 1.0f - 1e-6f : std::numeric_limits<float>::infinity();  // a segment to the disc
     const glm::dvec3 axis = towardLight(light, point);  // the disc faces the point (directional: the light's axis)
     glm::dvec3 e1, e2;
     basis(axis, e1, e2);
-    int reached = 0;
-    for (int k = 0; k < disc.rays; ++k) {
-        const glm::dvec2 s = stratifiedDiscPoint(k, disc.rays, seed) * disc.discRadius;
-        glm::dvec3 direction;
-        float tFar = std::numeric_limits<float>::infinity();
-        if (light.positional()) {
-            direction = light.position + e1 * s.x + e2 * s.y - origin;  // a segment to the disc's point
-            tFar = 1.0f - 1e-6f;
-        } else {
-            direction = axis + e1 * s.x + e2 * s.y;
+    rays.directions.reserve(std::size_t(std::max(disc.rays, 0)));
+    // stratifiedDiscPoint's samples in order, walking the rows instead of searching each sample's (the same row,
+    // first cell and cell count: the divisions of that search cost as much as the traversal of a coherent ray).
+    const int n = disc.rays, rows = rowsFor(n);
+    int row = 0, first = 0, next = rowStart(1, n, rows);
+    for (int k = 0; k < n; ++k) {
+        while (row + 1 < rows && next <= k) {
+            ++row;
+            first = next;
+            next = rowStart(row + 1, n, rows);
         }
-        if (!(glm::dot(normal, direction) > 0.0)) continue;  // below the receiver's own surface
-        if (!bvh.occluded(glm::vec3(origin), glm::vec3(direction), tFar)) ++reached;
+        const glm::dvec2 s = cellPoint(k, row, rows, first, next - first, seed) * disc.discRadius;
+        const glm::dvec3 direction =
+            light.positional() ? light.position + e1 * s.x + e2 * s.y - origin : axis + e1 * s.x + e2 * s.y;
+        if (!(glm::dot(normal, direction) > 0.0)) continue;  // below the receiver's own surface: blocked
+        rays.directions.push_back(glm::vec3(direction));
     }
-    return disc.rays > 0 ? float(reached) / float(disc.rays) : 0.0f;
+    return rays;
+}
+
+float softVisibilityAt(const EmbreeScene& bvh, const ReferenceLight& light, const SoftLight& disc,
+                       const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius, std::uint64_t seed,
+                       SoftTracing tracing) {
+    if (disc.rays <= 0) return 0.0f;
+    const SoftRays rays = softRays(light, disc, point, normal, sceneRadius, seed);
+    int reached = 0;
+    if (tracing == SoftTracing::EachRay) {
+        for (const glm::vec3& direction : rays.directions)
+            reached += bvh.occluded(rays.origin, direction, rays.tFar) ? 0 : 1;
+        return float(reached) / float(disc.rays);
+    }
+    thread_local std::vector<std::uint8_t> blocked;
+    blocked.resize(rays.directions.size());
+    bvh.occluded(rays.origin, rays.directions.data(), rays.directions.size(), rays.tFar, blocked.data());
+    for (std::uint8_t b : blocked) reached += b ? 0 : 1;
+    return float(reached) / float(disc.rays);
 }
 
 SoftVisibilityResult traceSoftVisibility(const EmbreeScene& bvh, const SurfaceSamples& samples,
                                          const std::vector<PixelClass>& classes, const ReferenceLight& light,
                                          const SoftLight& disc, double sceneRadius, const std::atomic<bool>* cancel,
-                                         int threads) {
+                                         int threads, SoftTracing tracing) {
     const auto start = std::chrono::steady_clock::now();
     SoftVisibilityResult result;
     result.visibility.assign(samples.size(), 0.0f);
@@ -127,7 +162,7 @@ SoftVisibilityResult traceSoftVisibility(const EmbreeScene& bvh, const SurfaceSa
                 const std::size_t i = std::size_t(row) * std::size_t(samples.width) + std::size_t(x);
                 if (classes[i] != PixelClass::Lit && classes[i] != PixelClass::Shadowed) continue;
                 result.visibility[i] =
-                    softVisibilityAt(bvh, light, disc, samples.point[i], samples.normal[i], sceneRadius, i);
+                    softVisibilityAt(bvh, light, disc, samples.point[i], samples.normal[i], sceneRadius, i, tracing);
                 rowRays += std::size_t(disc.rays);
             }
             rays += rowRays;

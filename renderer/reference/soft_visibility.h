@@ -17,6 +17,7 @@
 #include "settings/settings.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <atomic>
 #include <cstdint>
@@ -53,16 +54,33 @@ struct SoftVisibilityResult {
     bool cancelled = false;
 };
 
+// The rays of one point toward the disc's N stratified samples, less those that leave below its surface (n . d <= 0:
+// the receiver blocks them). All start at `origin` (shadowRayOrigin) and end at tFar (a segment to the disc's point
+// for spot / point lights, unbounded for directional).
+struct SoftRays {
+    glm::vec3 origin{0.0f};
+    float tFar = 0.0f;
+    std::vector<glm::vec3> directions;
+};
+SoftRays softRays(const ReferenceLight& light, const SoftLight& disc, const glm::dvec3& point,
+                  const glm::dvec3& normal, double sceneRadius, std::uint64_t seed);
+
+// How a point's rays are traced: together through the stream query (the default), or one rtcOccluded1 each (how the
+// reference was first traced; the bench and the tests compare the two).
+enum class SoftTracing { Stream, EachRay };
+
 // V of one point that faces the light (n . l > 0), inside a spot's cone and within range: the fraction of the disc's
-// N rays that reach the light. `seed` picks the jitter (the pixel's index in traceSoftVisibility).
+// N rays that reach the light (softRays, traced together by EmbreeScene's stream query). `seed` picks the jitter
+// (the pixel's index in traceSoftVisibility).
 float softVisibilityAt(const EmbreeScene& bvh, const ReferenceLight& light, const SoftLight& disc,
-                       const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius, std::uint64_t seed);
+                       const glm::dvec3& point, const glm::dvec3& normal, double sceneRadius, std::uint64_t seed,
+                       SoftTracing tracing = SoftTracing::Stream);
 
 // V of every pixel, from the hard verdicts `classes` of the same samples and light (traceVisibility). threads <= 0:
 // every core. cancel may be null.
 SoftVisibilityResult traceSoftVisibility(const EmbreeScene& bvh, const SurfaceSamples& samples,
                                          const std::vector<PixelClass>& classes, const ReferenceLight& light,
                                          const SoftLight& disc, double sceneRadius, const std::atomic<bool>* cancel,
-                                         int threads = 0);
+                                         int threads = 0, SoftTracing tracing = SoftTracing::Stream);
 
 }  // namespace shadowlab

@@ -48,8 +48,8 @@ SurfaceSamples floorSamples(const std::vector<glm::dvec3>& points, const std::ve
     s.draw.assign(points.size(), 0);
     s.instance.assign(points.size(), 0);
     s.triangle.assign(points.size(), 0);
-    s.point = points;
-    s.normal = normals;
+    s.point.assign(points.begin(), points.end());
+    s.normal.assign(normals.begin(), normals.end());
     s.finite.assign(points.size(), 1);
     return s;
 }

@@ -12,7 +12,7 @@ namespace {
 TEST(SoftMetrics, AConstructedPairGivesTheHandComputedNumbers) {
     constexpr int width = 40, height = 4;
     std::vector<float> v, s;
-    std::vector<glm::dvec3> points, normals;
+    PixelVector<glm::dvec3> points, normals;  // as SurfaceSamples holds them
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             v.push_back(x <= 16 ? 0.0f : x >= 24 ? 1.0f : float(x - 16) / 8.0f);  // 0.125 a pixel
@@ -69,7 +69,7 @@ TEST(SoftMetrics, AConstructedPairGivesTheHandComputedNumbers) {
 TEST(SoftMetrics, AProfileStaysOnItsSurface) {
     constexpr int width = 30, height = 1;
     std::vector<float> v;
-    std::vector<glm::dvec3> points, normals;
+    PixelVector<glm::dvec3> points, normals;  // as SurfaceSamples holds them
     for (int x = 0; x < width; ++x) {
         v.push_back(x <= 10 ? 0.0f : x >= 18 ? 1.0f : float(x - 10) / 8.0f);
         points.push_back({double(x), 0.0, 0.0});

@@ -202,6 +202,23 @@ TEST(SoftReference, SameResultOnAnyThreadCountAndEveryRun) {
               "");
 }
 
+// softRays walks the strata row by row instead of searching each sample's row: its rays are stratifiedDiscPoint's
+// samples, in order, to the bit (a sun straight down: the disc's basis is x and -z, so a ray is (s.x, 1, -s.y)).
+TEST(SoftReference, SoftRaysAreTheStratifiedSamplesInOrder) {
+    ReferenceLight sun;
+    sun.direction = {0.0, -1.0, 0.0};
+    for (int n : {64, 100, 250, 256, 1000, 1024}) {
+        const SoftLight disc{0.05, n};
+        const SoftRays rays = softRays(sun, disc, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0), kSceneRadius, 42);
+        ASSERT_EQ(rays.directions.size(), std::size_t(n));
+        for (int k = 0; k < n; ++k) {
+            const glm::dvec2 s = stratifiedDiscPoint(k, n, 42) * disc.discRadius;
+            ASSERT_EQ(rays.directions[std::size_t(k)], glm::vec3(glm::dvec3(s.x, 1.0, -s.y)))
+                << "ray " << k << " of " << n;
+        }
+    }
+}
+
 // Every sample of N lies in the unit disc, and each stratum holds one: the sample mean is the disc's centre.
 TEST(SoftReference, StratifiedPointsCoverTheDiscEvenly) {
     for (int n : {64, 100, 256, 1000, 1024}) {
