@@ -368,6 +368,7 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
             in.lightSize = lightSpread(probed);
             in.pixel = glm::uvec2(unsigned(r.x), unsigned(r.height - 1 - r.y));
             in.depthEps = depthEps;
+            in.texelEps = texelEps;
             // The search's texels, read back once around the lookup (its widest radius, and a texel of rounding).
             const int reach = int(std::ceil(settings_.filter.blockerSearchTexels)) + 2;
             const int cx = int(std::floor(r.texelCoord.x)), cy = int(std::floor(r.texelCoord.y));

@@ -53,6 +53,8 @@ struct OwnLookupInput {
     glm::uvec2 pixel{0u};        // gl_FragCoord's integer part (window x, y from the bottom)
     std::function<float(int x, int y)> storedDepth;  // a texel's stored depth
     double depthEps = 0.0;       // float rounding of the receiver's depth: a search comparison within it is uncertain
+    double texelEps = 0.0;       // and of the lookup's texel coordinate: a search tap this near a texel's edge may
+                                 // read its neighbour
 };
 
 // What the mirror found: the comparison taps it then reads (texels from the lookup, bilinear, each 1/N of S; none:

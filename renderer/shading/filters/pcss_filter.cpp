@@ -65,10 +65,26 @@ OwnLookupResult mirror(const OwnLookupInput& in, const FilterSettings& filter) {
     for (const glm::vec2& unit : disk) {
         const glm::vec2 tap = glm::clamp(in.tex + rotateTap(unit, rotation) * out.searchTexels * texel, lo, hi);
         const glm::vec2 cell(std::floor(tap.x * resolution), std::floor(tap.y * resolution));
-        const float stored = in.storedDepth(int(cell.x), int(cell.y));
-        const float receiver = in.receiver + glm::dot(in.plane, cell + 0.5f - in.tex * resolution);
-        const bool blocks = in.reversedZ ? stored > receiver : stored < receiver;
-        out.uncertain = out.uncertain || std::abs(double(stored) - double(receiver)) <= in.depthEps;
+        const auto blocksAt = [&](glm::vec2 at, float& stored) {
+            stored = in.storedDepth(int(at.x), int(at.y));
+            const float receiver = in.receiver + glm::dot(in.plane, at + 0.5f - in.tex * resolution);
+            out.uncertain = out.uncertain || std::abs(double(stored) - double(receiver)) <= in.depthEps;
+            return in.reversedZ ? stored > receiver : stored < receiver;
+        };
+        float stored = 0.0f;
+        const bool blocks = blocksAt(cell, stored);
+        // The GPU's coordinate differs by rounding: a tap on a texel's edge may read the neighbour, which matters
+        // only where that one decides otherwise (a caster's silhouette).
+        const glm::vec2 frac = tap * resolution - cell;
+        for (int axis = 0; axis < 2; ++axis)
+            for (const float step : {-1.0f, 1.0f}) {
+                if ((step < 0.0f ? frac[axis] : 1.0f - frac[axis]) > float(in.texelEps)) continue;
+                glm::vec2 other = cell;
+                other[axis] += step;
+                float otherStored = 0.0f;
+                if (other[axis] >= 0.0f && other[axis] < resolution && blocksAt(other, otherStored) != blocks)
+                    out.uncertain = true;
+            }
         ++out.searchTaps;
         if (blocks) {
             blockerSum += stored;
