@@ -111,6 +111,18 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForPcss) {
         EXPECT_GT(s.partial, 20);
         EXPECT_LT(s.uncertain, s.surfaces / 20) << "rounding decides too many pixels";
     }
+    {
+        // A point light (builtin:room, radius 0.1): the GPU moves the search and the filter across the lookup's
+        // cube face by world directions; the mirror reads the face as a 2D view, which is not yet exact (llvmpipe:
+        // 95 of 14400 probed pixels disagree, docs/techniques.md "Not done"): this bounds that gap, it does not
+        // claim equality.
+        const Sweep s = sweep(loadBuiltin("room"), withPcss(loadShippedPreset("room"), 0.1f, 1024), 320, 180, 2);
+        SCOPED_TRACE("pcss point");
+        EXPECT_GT(s.surfaces, 5000);
+        EXPECT_LT(s.disagree, s.surfaces / 100) << s.firstDisagreement;
+        EXPECT_GT(s.partial, 20);
+        std::printf("pcss point light: %d of %d probed pixels disagree, %d partial\n", s.disagree, s.surfaces, s.partial);
+    }
     // The probe explains the search: blockers found, their mean depth, the penumbra, the filter's radius and taps.
     Renderer renderer;
     PixelProbe probe;
