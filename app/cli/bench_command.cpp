@@ -34,9 +34,9 @@ bool applyFilter(const std::string& name, Settings& settings) {
     else if (name == "hardware2x2") settings.filter.kind = FilterKind::Hardware2x2;
     else if (name == "poisson") settings.filter.kind = FilterKind::Poisson;
     else {
-        // The moments techniques by their filter.kind name (their keys as the preset and --set give them).
+        // The moments techniques and PCSS by their filter.kind name (their keys as the preset and --set give them).
         for (const FilterTechnique* t : filterTechniques())
-            if (t->moments && name == t->name) {
+            if ((t->moments || t->ownLookup) && name == t->name) {
                 settings.filter.kind = t->kind;
                 return true;
             }
@@ -75,7 +75,7 @@ int runBench(const BenchOptions& options) {
         Settings settings = *base;
         if (!applyFilter(filter, settings)) {
             std::cerr << "error: --filters: unknown filter '" << describeKey(filter)
-                      << "' (allowed point, hardware2x2, pcfN with N in 1, 3, 5, 7, 9, poisson, vsm, evsm2, evsm4, msm)\n";
+                      << "' (allowed point, hardware2x2, pcfN with N in 1, 3, 5, 7, 9, poisson, vsm, evsm2, evsm4, msm, pcss)\n";
             return 2;
         }
         if (std::vector<std::string> problems = settings.validate(); !problems.empty()) {

@@ -107,6 +107,12 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
                 "technique's lookup is shaders/" + t.moments->glslFile + " with shaders/moments.comp.glsl";
         return std::nullopt;
     }
+    if (const FilterTechnique& t = filterTechnique(requested.filter.kind); t.ownLookup) {
+        error = std::string("filter.kind ") + t.name +
+                ": the export writes depth-comparison lookups (point, hardware2x2, pcf, poisson); this technique's "
+                "lookup is shaders/" + t.ownLookup->glslFile + " (a blocker search over the map's depths first)";
+        return std::nullopt;
+    }
     const Settings settings = withEffectiveLights(requested, scene);
     ShadowExportSet set;
     set.sceneLabel = sceneLabel;

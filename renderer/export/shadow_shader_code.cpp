@@ -148,7 +148,7 @@ std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::s
     return o.str();
 }
 
-// Directional and spot lights: shadow2D and receiverPlaneSlope of shaders/shadow/lookup_2d.glsl.
+// Directional and spot lights: shadow2D of shaders/shadow/lookup_2d.glsl, receiverPlaneSlope of compare_2d.glsl.
 std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     const Words w(t.language);
     const std::string p = "light" + std::to_string(e.lightIndex);

@@ -3,7 +3,7 @@
 // normal offset, receiver-plane depth bias, the filter's tap loop (PCF grid / Poisson disk, offsets from
 // shading/filter_taps.h, the renderer's own table) and keeping a lookup's taps inside the map. Written once, here,
 // and printed in GLSL (GL, Vulkan) or HLSL (D3D11, D3D12): the same lines, only the language's words differ. It
-// mirrors the main pass (shaders/shadow/lookup_2d.glsl, lookup_cube.glsl, main.frag.glsl's offsetLookup);
+// mirrors the main pass (shaders/shadow/lookup_2d.glsl, compare_2d.glsl, lookup_cube.glsl, main.frag.glsl's offsetLookup);
 // tests/unit/test_shadow_export.cpp checks the constants both use.
 #include "export/shadow_export.h"
 
@@ -23,7 +23,7 @@ struct ShaderTarget {
 };
 ShaderTarget shaderTargetFor(ExportFormat format, bool reversedZ);
 
-// The receiver-plane constants shaders/shadow/lookup_2d.glsl uses (kReceiverPlaneMaxSlope, the singular-Jacobian threshold).
+// The receiver-plane constants shaders/shadow/compare_2d.glsl holds (kReceiverPlaneMaxSlope, the singular-Jacobian threshold).
 inline constexpr double kExportReceiverPlaneMaxSlope = 8.0;
 inline constexpr double kExportReceiverPlaneSingular = 1e-3;
 

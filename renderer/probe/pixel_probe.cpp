@@ -344,7 +344,47 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     };
     // A moments technique reads one bilinear lookup of moments instead of comparing taps (probeMomentLookup below).
     const bool momentLookup = filterTechnique(r.filter.kind).moments != nullptr;
-    for (const FilterTap& tap : momentLookup ? std::vector<FilterTap>{} : filterTaps(settings_.filter)) {
+    std::vector<FilterTap> filterTapList = momentLookup ? std::vector<FilterTap>{} : filterTaps(settings_.filter);
+    // A technique with a lookup of its own (PCSS) searches the map first; its mirror gives the taps it compares.
+    if (const OwnLookup* own = filterTechnique(r.filter.kind).ownLookup; own && faceMap) {
+        r.ownLookup = true;
+        filterTapList = {{glm::dvec2(0.0), true}};  // beyond the map: one comparison, the address mode's answer
+        if (r.insideMap) {
+            OwnLookupInput in;
+            in.tex = glm::vec2(r.lightTexture);
+            in.receiver = float(r.receiverDepth);
+            in.plane = glm::vec2(plane);
+            in.resolution = res;
+            in.reversedZ = light.reversedZ;
+            in.perspective = light.perspective;
+            in.nearPlane = float(light.nearPlane);
+            in.farPlane = float(light.farPlane);
+            const glm::dvec3 ray = light.perspective ? glm::normalize(lookup - light.position) : light.direction;
+            // A point light's shader measures the receiver along its face's axis; a spot's from its depth (0).
+            const glm::dvec3 axisDistances = glm::abs(lookup - light.position);
+            if (cube) in.distance = float(std::max({axisDistances.x, axisDistances.y, axisDistances.z}));
+            in.depthPerWorld = float(toLightTexture(light, lookup + ray).z - r.lightTexture.z);
+            in.texelWorld = float(light.perspective ? 2.0 * light.tanHalfFov / res : light.texelWorldSize);
+            in.lightSize = lightSpread(probed);
+            in.pixel = glm::uvec2(unsigned(r.x), unsigned(r.height - 1 - r.y));
+            in.depthEps = depthEps;
+            in.texelEps = texelEps;
+            // The search's texels, read back once around the lookup (its widest radius, and a texel of rounding).
+            const int reach = int(std::ceil(settings_.filter.blockerSearchTexels)) + 2;
+            const int cx = int(std::floor(r.texelCoord.x)), cy = int(std::floor(r.texelCoord.y));
+            const int x0 = std::clamp(cx - reach, 0, res - 1), y0 = std::clamp(cy - reach, 0, res - 1);
+            const int x1 = std::clamp(cx + reach, 0, res - 1), y1 = std::clamp(cy + reach, 0, res - 1);
+            const std::vector<float> around = readShadowMapRect(*faceMap, x0, y0, x1 - x0 + 1, y1 - y0 + 1);
+            in.storedDepth = [&](int x, int y) {
+                x = std::clamp(x, x0, x1), y = std::clamp(y, y0, y1);
+                return around[std::size_t(y - y0) * std::size_t(x1 - x0 + 1) + std::size_t(x - x0)];
+            };
+            r.search = own->mirror(in, settings_.filter);
+            filterTapList.clear();
+            for (const glm::vec2& offset : r.search.taps) filterTapList.push_back({glm::dvec2(offset), true});
+        }
+    }
+    for (const FilterTap& tap : filterTapList) {
         ProbeTap t;
         t.offsetTexels = tap.offsetTexels;
         t.bilinear = tap.bilinear;
@@ -438,6 +478,12 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     r.shadowCpu = sum / taps * cone;
     r.shadowLow = low / taps * cone;
     r.shadowHigh = high / taps * cone;
+    if (r.ownLookup && r.insideMap && r.taps.empty())  // the search found no blocker: lit, no filter
+        r.shadowCpu = r.shadowLow = r.shadowHigh = cone;
+    if (r.search.uncertain) {  // a blocker test within rounding: the GPU's search may have ended otherwise
+        r.shadowLow = 0.0;
+        r.shadowHigh = cone;
+    }
     // Bilinear comparisons weigh texels with the GPU's sub-texel precision (8 bits in D3D's rules and llvmpipe).
     r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;
 

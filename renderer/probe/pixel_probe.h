@@ -7,6 +7,7 @@
 #include "frame/renderer.h"
 #include "light/depth_bias.h"
 #include "reference/surface_samples.h"
+#include "shading/filters/filter_technique.h"
 
 #include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_int2.hpp>
@@ -95,6 +96,10 @@ struct PixelProbeReport {
     glm::dvec4 moments{0.0};
     double momentDepth = 0.0;
     std::string momentText;
+    // A technique with a lookup of its own (PCSS): its search in numbers and words (the taps it then compares are
+    // `taps`; none when it found no blocker: S = 1).
+    bool ownLookup = false;
+    OwnLookupResult search;
 
     double shadowCpu = 0.0;   // S recomputed here from the stored texels
     double shadowLow = 0.0, shadowHigh = 0.0;  // range the GPU may give (uncertain comparisons, filter weights)

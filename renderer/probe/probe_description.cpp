@@ -87,6 +87,7 @@ void lookupLines(const PixelProbeReport& r, std::vector<std::string>& lines, con
         lines.push_back(indent + "  " + r.momentText);
         return;
     }
+    if (r.ownLookup && !r.search.text.empty()) lines.push_back(indent + r.search.text);
     lines.push_back(indent + format("filter %s%s: %zu taps (stored depth, lit if receiver <= stored; ? = within float "
                            "rounding; (+x) = stored - receiver)",
                            filterName(r.filter),

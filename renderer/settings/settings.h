@@ -16,7 +16,7 @@ enum class CullMode { Back, Front, None };
 enum class LightType { Directional, Spot, Point };
 enum class AddressMode { Wrap, ClampToEdge, ClampToBorder };
 // Filter techniques (shading/filters/: one file each). The first four compare depths; the others filter moments.
-enum class FilterKind { Point, Hardware2x2, Pcf, Poisson, Vsm, Evsm2, Evsm4, Msm };
+enum class FilterKind { Point, Hardware2x2, Pcf, Poisson, Vsm, Evsm2, Evsm4, Msm, Pcss };
 // Where a moments technique's blur width is given: in each view's texels, or in world units (the same in every
 // cascade: converted by each view's texel size).
 enum class BlurUnit { Texels, World };
@@ -135,6 +135,9 @@ struct FilterSettings {
     float positiveExponent = 40.0f;  // EVSM: c+ of exp(c+ d); clamped to what momentBits hold (5.54 / 42)
     float negativeExponent = 5.0f;   // EVSM4: c- of -exp(-c- d); the same clamp
     float momentBias = 3e-5f;        // MSM: moments pulled toward a constant vector by this share
+    // PCSS: the largest blocker-search and filter radii, in texels (the light's size and the depths set them below).
+    float blockerSearchTexels = 16.0f;
+    float penumbraMaxTexels = 16.0f;
 
     bool operator==(const FilterSettings&) const = default;
 };

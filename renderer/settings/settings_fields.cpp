@@ -563,8 +563,9 @@ std::vector<SettingsField> buildGlobalFields() {
     // filter
     f.push_back(tagged(enumField<FilterKind>("filter.kind",
                                              "Shadow filter technique: depth comparisons (point, hardware2x2, pcf, "
-                                             "poisson) or filtered moments (vsm, evsm2, evsm4, msm: a moments pass and "
-                                             "a blur after the shadow pass)",
+                                             "poisson), pcss (a blocker search, then comparisons as wide as the "
+                                             "penumbra of the light's size) or filtered moments (vsm, evsm2, evsm4, "
+                                             "msm: a moments pass and a blur after the shadow pass)",
                                              filterKindNames(), [](auto& s) -> auto& { return s.filter.kind; }),
                        kVariant | kInvalidatesSampler));
     f.push_back(tagged(inUnit(intField("filter.kernel", "PCF grid size: N x N taps", 1, 9, {1, 3, 5, 7, 9},
@@ -613,6 +614,17 @@ std::vector<SettingsField> buildGlobalFields() {
                            "MSM: the moments pulled toward (0.5, 0.5, 0.5, 0.5) by this share before the Hamburger "
                            "bound (against the bound's instability; larger: more bleeding)",
                            0, 0.01, [](auto& s) -> auto& { return s.filter.momentBias; }));
+    // PCSS (shading/filters/pcss_filter.cpp)
+    f.push_back(inUnit(floatField("filter.blockerSearchTexels",
+                                  "PCSS: the largest blocker-search radius; the search covers the map region through "
+                                  "which the light (lights.#.size) reaches the receiver, clamped to this",
+                                  1, 64, [](auto& s) -> auto& { return s.filter.blockerSearchTexels; }),
+                       "shadow-map texels"));
+    f.push_back(inUnit(floatField("filter.penumbraMaxTexels",
+                                  "PCSS: the largest filter radius; the radius is half the estimated penumbra "
+                                  "(receiver - blocker) / blocker x light size, clamped to [1, this]",
+                                  1, 64, [](auto& s) -> auto& { return s.filter.penumbraMaxTexels; }),
+                       "shadow-map texels"));
 
     // camera
     f.push_back(tagged(boolField("camera.autoFrame", "Place the camera to frame the scene (position/target ignored)",

@@ -73,13 +73,22 @@ LightBlock blockOf(const MainPassLight& l, const glm::dvec3& origin) {
         // w: flags, 1 = reversed-Z, 2 = receiver-plane bias (read only by RECEIVER_PLANE variants).
         const float flags = (space.reversedZ ? 1.0f : 0.0f) + (s.shadow.receiverPlaneBias ? 2.0f : 0.0f);
         b.depth = glm::vec4(float(space.nearPlane), float(space.farPlane), float(texelWorld), flags);
+        b.views.z = lightSpread(s);  // the light's size, for a technique that softens by it (PCSS)
     }
     return b;
 }
 
 }  // namespace
 
-MainPass::MainPass() : lightBuffer_(gl::createBuffer()), cascadeBuffer_(gl::createBuffer()) {}
+MainPass::MainPass()
+    : lightBuffer_(gl::createBuffer()), cascadeBuffer_(gl::createBuffer()), depthSampler_(gl::createSampler()) {
+    // The maps read as depths (a technique's own lookup, PCSS): texel by texel, no comparison.
+    glSamplerParameteri(depthSampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(depthSampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(depthSampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glSamplerParameteri(depthSampler_.id(), wrap, GL_CLAMP_TO_EDGE);
+}
 
 std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& target) {
     const Settings& settings = *in.settings;
@@ -112,7 +121,8 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         blocks.push_back(blockOf(l, in.renderOrigin));
         if (casts && !l.cascades.empty()) {
             // x: the light's first cascade in the Cascades block, y: how many (0: its one view).
-            blocks.back().views = glm::vec4(float(cascadeBlocks.size()), float(l.cascades.size()), 0.0f, 0.0f);
+            blocks.back().views.x = float(cascadeBlocks.size());
+            blocks.back().views.y = float(l.cascades.size());
             for (const MainPassCascade& c : l.cascades) cascadeBlocks.push_back(cascadeBlockOf(c));
         }
     }
@@ -150,10 +160,26 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
         glBindSampler(unit, in.samplersCube.at(a));
         unitsCube.push_back(GLint(unit++));
     }
-    const GLuint baseColorUnit = unit;
     const FilterTechnique& technique = filterTechnique(settings.filter.kind);
+    // A technique with a lookup of its own reads the maps' depths too: the same textures again, plain sampler.
+    std::vector<GLint> depthUnits2D, depthUnitsCube;
+    if (technique.ownLookup) {
+        for (GLuint map : in.maps2D) {
+            glBindTextureUnit(unit, map);
+            glBindSampler(unit, depthSampler_.id());
+            depthUnits2D.push_back(GLint(unit++));
+        }
+        for (GLuint map : in.mapsCube) {
+            glBindTextureUnit(unit, map);
+            glBindSampler(unit, depthSampler_.id());
+            depthUnitsCube.push_back(GLint(unit++));
+        }
+    }
+    const GLuint baseColorUnit = unit;
     const float filterScale = technique.scale(settings.filter);
-    const glm::vec4 techniqueUniforms = technique.moments ? technique.moments->uniforms(settings.filter) : glm::vec4(0.0f);
+    const glm::vec4 techniqueUniforms = technique.moments   ? technique.moments->uniforms(settings.filter)
+                                        : technique.ownLookup ? technique.ownLookup->uniforms(settings.filter)
+                                                              : glm::vec4(0.0f);
 
     in.scene->bind();
     for (const GpuDraw& draw : in.scene->draws()) {
@@ -179,6 +205,10 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
             if (u.technique >= 0) glUniform4fv(u.technique, 1, glm::value_ptr(techniqueUniforms));
             if (!units2D.empty()) glUniform1iv(u.maps2D, GLsizei(units2D.size()), units2D.data());
             if (!unitsCube.empty()) glUniform1iv(u.mapsCube, GLsizei(unitsCube.size()), unitsCube.data());
+            if (!depthUnits2D.empty() && u.depth2D >= 0)
+                glUniform1iv(u.depth2D, GLsizei(depthUnits2D.size()), depthUnits2D.data());
+            if (!depthUnitsCube.empty() && u.depthCube >= 0)
+                glUniform1iv(u.depthCube, GLsizei(depthUnitsCube.size()), depthUnitsCube.data());
             if (key.alphaTexture) glUniform1i(u.baseColorTexture, GLint(baseColorUnit));
         }
 

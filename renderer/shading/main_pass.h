@@ -62,6 +62,7 @@ private:
     MainVariantCache variants_;
     gl::Buffer lightBuffer_;    // the Lights uniform block
     gl::Buffer cascadeBuffer_;  // the Cascades uniform block (frames with a cascaded light)
+    gl::Sampler depthSampler_;  // the maps read as depths (a technique's own lookup: PCSS's blocker search)
 };
 
 }  // namespace shadowlab

@@ -13,7 +13,7 @@ MainUniforms locateUniforms(GLuint p) {
             at("uMaps2D[0]"),      at("uMapsCube[0]"),    at("uCameraPosition"), at("uBaseColor"),
             at("uAmbient"),        at("uFilterScale"),    at("uAlphaFactor"),  at("uAlphaCutoff"),
             at("uBaseColorTexture"), at("uCameraForward"), at("uPixelPerDepth"), at("uCascadeEye"),
-            at("uCascadeForward"), at("uTechnique")};
+            at("uCascadeForward"), at("uTechnique"),     at("uDepth2D[0]"),   at("uDepthCube[0]")};
 }
 
 }  // namespace
@@ -25,6 +25,7 @@ const MainProgram& MainVariantCache::program(const MainVariantKey& key) {
         const MomentTechnique* moments = filterTechnique(key.filter).moments;
         gl::IncludeAliases aliases;
         if (moments) aliases["alias:technique"] = moments->glslFile;
+        if (const OwnLookup* own = filterTechnique(key.filter).ownLookup) aliases["alias:lookup"] = own->glslFile;
         gl::Program program = gl::buildProgram(
             {{GL_VERTEX_SHADER, "main.vert.glsl"}, {GL_FRAGMENT_SHADER, "main.frag.glsl"}}, key.defines(), aliases);
         const MainUniforms uniforms = locateUniforms(program.id());

@@ -12,7 +12,7 @@ namespace shadowlab {
 struct MainUniforms {
     GLint viewProjection, model, normalMatrix, uvTransform, maps2D, mapsCube, cameraPosition, baseColor, ambient,
         filterScale, alphaFactor, alphaCutoff, baseColorTexture, cameraForward, pixelPerDepth, cascadeEye,
-        cascadeForward, technique;
+        cascadeForward, technique, depth2D, depthCube;  // depth2D, depthCube: the maps read as depths (PCSS)
 };
 
 struct MainProgram {

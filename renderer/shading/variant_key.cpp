@@ -27,8 +27,10 @@ std::vector<std::string> MainVariantKey::defines() const {
     filterSettings.kind = filter;
     filterSettings.kernel = kernel;
     // A moments technique reads its moments through its own file (the program's "alias:technique"), no taps.
+    // A technique with a lookup of its own (PCSS) takes the taps it scales and its file ("alias:lookup").
     const bool moments = filterTechnique(filter).moments != nullptr;
     std::vector<std::string> d = moments ? std::vector<std::string>{"MOMENT_TECHNIQUE"} : filterDefines(filterSettings);
+    if (filterTechnique(filter).ownLookup) d.push_back("OWN_LOOKUP");
     switch (view) {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;

@@ -9,7 +9,8 @@ struct LightData {
     vec4 depth;           // x: near, y: far, z: texel world size (directional) or per unit of depth (spot, point),
                           // w: flags: 1 = reversed-Z (the map stores near 1, far 0; its sampler compares GEQUAL),
                           //    2 = receiver-plane depth bias
-    vec4 views;           // a cascaded light: x = its first cascade in uCascades, y = how many (0: its one view)
+    vec4 views;           // a cascaded light: x = its first cascade in uCascades, y = how many (0: its one view);
+                          // z: the light's size as a lookup spreads it (filter_technique.h's lightSpread; PCSS)
 };
 // Texture coordinates and window depth in the view's depth convention: GL's [-1, 1] clip depth, or reversed-Z's
 // zero-to-one depth (near 1, far 0). The CPU's copy is LightSpace::textureOf.

@@ -4,24 +4,7 @@
 #include "shadow/filter_taps.glsl"
 #include "shadow/view_select.glsl"
 #include "shadow/cube_face_depth.glsl"
-
-#if MAP_ARRAYS_CUBE > 0
-uniform samplerCubeArrayShadow uMapsCube[MAP_ARRAYS_CUBE];
-#endif
-
-// Map arrays are read with constant indices only (see shadow/lookup_2d.glsl).
-#if MAP_ARRAYS_CUBE > 0
-float sampleMapCube(int map, vec4 coord, float ref) {
-#if MAP_ARRAYS_CUBE == 1
-    return texture(uMapsCube[0], coord, ref);
-#else
-    float result = 1.0;
-    for (int k = 0; k < MAP_ARRAYS_CUBE; ++k)
-        if (k == map) result = texture(uMapsCube[k], coord, ref);
-    return result;
-#endif
-}
-#endif
+#include "shadow/compare_cube.glsl"
 
 #if MAP_ARRAYS_CUBE > 0
 float shadowCube(LightData L, vec3 lookup) {

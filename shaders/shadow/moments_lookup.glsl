@@ -17,7 +17,7 @@ uniform samplerCubeArray uMapsCube[MAP_ARRAYS_CUBE];
 
 float nearZeroDepth(LightData L, float depth) { return reversedZ(L) ? 1.0 - depth : depth; }
 
-// Map arrays are read with constant indices only (see shadow/lookup_2d.glsl).
+// Map arrays are read with constant indices only (see shadow/compare_2d.glsl).
 #if MAP_ARRAYS_2D > 0
 vec4 sampleMoments2D(int map, vec3 coord) {
 #if MAP_ARRAYS_2D == 1

@@ -78,6 +78,72 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryFilter) {
     }
 }
 
+Settings withPcss(Settings s, float size, int resolution = 2048) {
+    s = withFilter(s, FilterKind::Pcss, 3, resolution);
+    s.lights[0].size = size;
+    return s;
+}
+
+TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForPcss) {
+    // Issue 21: PCSS's S, rebuilt by its CPU mirror (shading/filters/pcss_filter.cpp: the blocker search over the
+    // stored depths, the penumbra estimate, the per-pixel rotated disk, then the probe's bilinear comparisons),
+    // equals the GPU's at every probed pixel: a 2-degree sun, a hard light (size 0: the minimal filter), a coarse
+    // map, receiver-plane bias, and a spot light of radius 0.3.
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    Settings plane = withPcss(base, 2.0f, 1024);
+    plane.lights[0].shadow.receiverPlaneBias = true;
+    Settings spot = withPcss(base, 0.3f);
+    spot.lights[0].type = LightType::Spot;
+    spot.lights[0].position = {3.0f, 9.0f, 2.0f};
+    spot.lights[0].direction = {-0.3f, -1.0f, -0.2f};
+    spot.lights[0].spotConeDeg = 70.0f;
+    for (const auto& [name, settings] :
+         {std::pair{"pcss 2 degrees", withPcss(base, 2.0f)}, std::pair{"pcss size 0", withPcss(base, 0.0f)},
+          std::pair{"pcss 4 degrees 256", withPcss(base, 4.0f, 256)}, std::pair{"pcss receiver plane", plane},
+          std::pair{"pcss spot", spot}}) {
+        const Sweep s = sweep(scene, settings, 320, 180, 2);
+        SCOPED_TRACE(name);
+        EXPECT_GT(s.surfaces, 5000);
+        EXPECT_EQ(s.disagree, 0) << s.firstDisagreement;
+        EXPECT_GT(s.lit, 100);
+        EXPECT_GT(s.shadowed, 20);
+        EXPECT_GT(s.partial, 20);
+        EXPECT_LT(s.uncertain, s.surfaces / 20) << "rounding decides too many pixels";
+    }
+    {
+        // A point light (builtin:room, radius 0.1): the GPU moves the search and the filter across the lookup's
+        // cube face by world directions; the mirror reads the face as a 2D view, which is not yet exact (llvmpipe:
+        // 95 of 14400 probed pixels disagree, docs/techniques.md "Not done"): this bounds that gap, it does not
+        // claim equality.
+        const Sweep s = sweep(loadBuiltin("room"), withPcss(loadShippedPreset("room"), 0.1f, 1024), 320, 180, 2);
+        SCOPED_TRACE("pcss point");
+        EXPECT_GT(s.surfaces, 5000);
+        EXPECT_LT(s.disagree, s.surfaces / 100) << s.firstDisagreement;
+        EXPECT_GT(s.partial, 20);
+        std::printf("pcss point light: %d of %d probed pixels disagree, %d partial\n", s.disagree, s.surfaces, s.partial);
+    }
+    // The probe explains the search: blockers found, their mean depth, the penumbra, the filter's radius and taps.
+    Renderer renderer;
+    PixelProbe probe;
+    const Settings sun = withPcss(base, 2.0f);
+    const Camera camera = cameraFor(sun.camera, scene, 160.0 / 90.0);
+    ASSERT_EQ(probe.capture(renderer, scene, sun, camera, 160, 90), "");
+    bool explained = false;
+    for (int y = 0; y < 90 && !explained; ++y)
+        for (int x = 0; x < 160 && !explained; ++x) {
+            const PixelProbeReport r = probe.at(x, y);
+            if (!r.ok || !r.ownLookup || r.search.blockers == 0 || r.search.blockers == r.search.searchTaps) continue;
+            std::string text;
+            for (const std::string& line : describeProbe(r)) text += line + "\n";
+            explained = text.find("nearer than the receiver") != std::string::npos &&
+                        text.find("mean blocker depth") != std::string::npos &&
+                        text.find("penumbra") != std::string::npos && text.find("16 taps") != std::string::npos;
+            EXPECT_TRUE(explained) << text;
+        }
+    EXPECT_TRUE(explained);
+}
+
 TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechnique) {
     // Issue 21: a moments technique's S, rebuilt from the view's stored moments with the technique's CPU mirror
     // (shading/filters/), equals the GPU's at every probed pixel: both precisions, a blur, a coarse map.

@@ -117,7 +117,8 @@ TEST(MomentTechniques, FilterKindNamesAndKeysComeFromTheTechniqueTable) {
         const FilterTechnique& t = *filterTechniques()[i];
         EXPECT_EQ(kind.choices[i], t.name);
         for (const char* key : t.keys) EXPECT_NE(findSettingsField(key), nullptr) << t.name << ": " << key;
-        EXPECT_EQ(t.moments != nullptr, i >= 4) << t.name;
+        EXPECT_EQ(t.moments != nullptr, i >= 4 && i < 8) << t.name;  // pcss (8): a lookup of its own
+        EXPECT_EQ(t.ownLookup != nullptr, i == 8) << t.name;
     }
 }
 

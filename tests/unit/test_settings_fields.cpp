@@ -59,7 +59,7 @@ TEST(SettingsFields, KeysAreUniqueDocumentedAndFindable) {
         EXPECT_FALSE(f.allowed.empty()) << f.key;
         EXPECT_EQ(findSettingsField(f.key), &f);
     }
-    EXPECT_EQ(keys.size(), 61u);  // every tunable of Settings: 27 global, 34 per light; update when Settings grows
+    EXPECT_EQ(keys.size(), 63u);  // every tunable of Settings: 29 global, 34 per light; update when Settings grows
     EXPECT_EQ(findSettingsField("shadow.nope"), nullptr);
     EXPECT_EQ(findSettingsField("Shadow.DepthBias"), nullptr);  // keys are case-sensitive
     EXPECT_EQ(findSettingsField("view")->group(), "");
@@ -210,7 +210,7 @@ TEST(SettingsFields, NonFiniteNumbersAreRefused) {
 TEST(SettingsFields, EnumsRefuseUnknownNames) {
     Settings s;
     std::string e = findSettingsField("filter.kind")->set(s, json("gaussian"));
-    EXPECT_EQ(e, "filter.kind: unknown value \"gaussian\" (allowed one of point, hardware2x2, pcf, poisson, vsm, evsm2, evsm4, msm)");
+    EXPECT_EQ(e, "filter.kind: unknown value \"gaussian\" (allowed one of point, hardware2x2, pcf, poisson, vsm, evsm2, evsm4, msm, pcss)");
     e = findSettingsField("shadow.depthFormat")->set(s, json("D32F"));  // names are case-sensitive
     EXPECT_EQ(e, "shadow.depthFormat: unknown value \"D32F\", did you mean \"d32f\"? (allowed one of d16, d24, d32f)");
     EXPECT_TRUE(s == Settings{});

@@ -377,8 +377,8 @@ TEST(ShadowExportLights, ShaderCodeUsesTheRendererTapsAndTheMainPassConstants) {
     EXPECT_TRUE(contains(glsl, "const vec2 LIGHT0_TAP_OFFSETS[16] = vec2[](vec2(")) << glsl;
     const std::size_t at = glsl.find("LIGHT0_TAP_OFFSETS[16] = vec2[](vec2(") + 37;
     EXPECT_EQ(std::strtof(glsl.c_str() + at, nullptr), x) << "the first tap is the renderer's";
-    // The receiver-plane constants are the main pass's 2D lookup's: read them from the shader file it includes.
-    std::ifstream in(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders/shadow/lookup_2d.glsl");
+    // The receiver-plane constants are the main pass's 2D comparisons': read them from the shader file they are in.
+    std::ifstream in(std::string(SHADOWLAB_SOURCE_DIR) + "/shaders/shadow/compare_2d.glsl");
     std::stringstream shader;
     shader << in.rdbuf();
     std::smatch m;

@@ -122,6 +122,8 @@ void drawStatsPanel(PanelContext& ctx) {
         passLine("moments", s.momentsPass, s.momentsPass, clock);
         passLine("blur", s.blurPass, s.blurPass, clock);
     }
+    if (const FilterTechnique& t = filterTechnique(state.settings.filter.kind); t.cost)
+        ImGui::TextWrapped("%s", t.cost(state.settings.filter).c_str());  // its lookup's share of the main pass
     if (s.depthBoundsPass.ran) {
         passLine("depth bounds", s.depthBoundsPass, s.depthBoundsPass, clock);
         if (s.seenDepths && s.seenDepths->farthest >= s.seenDepths->nearest)

@@ -1,5 +1,7 @@
 #include "shading/filters/filter_technique.h"
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,7 +11,7 @@ namespace shadowlab {
 const std::vector<const FilterTechnique*>& filterTechniques() {
     static const std::vector<const FilterTechnique*> table = {
         &pointFilter(), &hardware2x2Filter(), &pcfFilter(), &poissonFilter(),
-        &vsmFilter(),   &evsm2Filter(),       &evsm4Filter(), &msmFilter(),
+        &vsmFilter(),   &evsm2Filter(),       &evsm4Filter(), &msmFilter(), &pcssFilter(),
     };
     return table;
 }
@@ -55,6 +57,13 @@ std::vector<double> tradeOffCandidates(const TradeOffRange& range, const Setting
         if (values.empty() || v > values.back()) values.push_back(v);
     }
     return values;
+}
+
+float lightSpread(const LightSettings& light) {
+    const double size = std::max(double(light.size), 0.0);
+    if (light.type == LightType::Directional)
+        return float(2.0 * std::tan(glm::radians(size) * 0.5));  // the soft reference's disc (soft_visibility.cpp)
+    return float(2.0 * size);
 }
 
 float maxWarpExponent(int momentBits) { return momentBits == 16 ? 5.54f : 42.0f; }

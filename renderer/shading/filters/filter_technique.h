@@ -4,12 +4,14 @@
 // it), its keys (the editor shows them only while it is chosen; sweep and tuner vary them through the key table) and
 // how far from the lookup it reads (the accuracy metrics' k). One file per technique under filters/; adding one is
 // that file, its GLSL file, a FilterKind value and a line in filter_technique.cpp's table (the filter.kind key's
-// names come from that table).
+// names come from that table), and its keys' fields.
 #include "settings/settings.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <glm/ext/vector_uint2.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -53,6 +55,50 @@ std::vector<double> tradeOffCandidates(const TradeOffRange& range, const Setting
 // The largest value the tuner may propose for it with these settings (high, or its limit when lower).
 double tradeOffTop(const TradeOffRange& range, const Settings& settings);
 
+// One lookup of a technique with a lookup of its own, as the GPU's file computes it (in float): what its CPU mirror
+// reads. Inside the map only (beyond it every technique makes one comparison, the address mode's).
+struct OwnLookupInput {
+    glm::vec2 tex{0.0f};       // the lookup's texture coordinate
+    float receiver = 0.0f;     // its window depth, clamped to the far plane
+    glm::vec2 plane{0.0f};     // receiver-plane slope: depth per texel (0 without)
+    int resolution = 0;
+    bool reversedZ = false;
+    bool perspective = false;  // spot view or cube face
+    float nearPlane = 0.0f, farPlane = 0.0f;
+    float distance = 0.0f;       // perspective: the receiver's distance along the view's axis (0: from its depth)
+    float depthPerWorld = 0.0f;  // orthographic: window depth per world unit along the light
+    float texelWorld = 0.0f;     // orthographic: a texel's world size; perspective: per unit of distance
+    float lightSize = 0.0f;      // lightSpread(): LightData.views.z
+    glm::uvec2 pixel{0u};        // gl_FragCoord's integer part (window x, y from the bottom)
+    std::function<float(int x, int y)> storedDepth;  // a texel's stored depth
+    double depthEps = 0.0;       // float rounding of the receiver's depth: a search comparison within it is uncertain
+    double texelEps = 0.0;       // and of the lookup's texel coordinate: a search tap this near a texel's edge may
+                                 // read its neighbour
+};
+
+// What the mirror found: the comparison taps it then reads (texels from the lookup, bilinear, each 1/N of S; none:
+// S = 1) and its search in words.
+struct OwnLookupResult {
+    std::vector<glm::vec2> taps;
+    int searchTaps = 0, blockers = 0;
+    float searchTexels = 0.0f;    // the blocker search's radius
+    float blockerDepth = 0.0f;    // the blockers' mean stored depth
+    float penumbraTexels = 0.0f;  // the estimated penumbra's width
+    float radiusTexels = 0.0f;    // the filter's radius (half the penumbra, clamped)
+    bool uncertain = false;       // a blocker test within depthEps: rounding may change the search's outcome
+    std::string text;
+};
+
+// A technique whose lookup is all its own GLSL file (shadow2D and shadowCube: PCSS). It reads the maps' depths as
+// well as comparing them: the main pass binds each depth map a second time through a plain sampler (uDepth2D,
+// uDepthCube) and gives each light's size in LightData.views.z (lightSpread). Its unitTaps are the disk its file
+// rotates and scales per pixel.
+struct OwnLookup {
+    const char* glslFile;  // "shadow/techniques/pcss.glsl", the variant's "alias:lookup"
+    glm::vec4 (*uniforms)(const FilterSettings& filter);  // uTechnique
+    OwnLookupResult (*mirror)(const OwnLookupInput& in, const FilterSettings& filter);
+};
+
 struct FilterTechnique {
     FilterKind kind;
     const char* name;  // the filter.kind value
@@ -76,7 +122,15 @@ struct FilterTechnique {
     // The keys and ranges of its own trade-off (bleeding against acne, softness against error), in the order `tune`
     // searches them; empty: tune searches the depth bias only.
     std::vector<TradeOffRange> tradeOff = {};
+    // Set for a technique with a lookup of its own (PCSS).
+    const OwnLookup* ownLookup = nullptr;
+    // Optional: what its lookup costs inside the main pass, in words (Stats and render's report beside the passes).
+    std::string (*cost)(const FilterSettings& filter) = nullptr;
 };
+
+// A light's size as the lookups spread it (LightData.views.z): a directional light's width per unit of distance,
+// 2 tan(angular diameter / 2); a spot or point light's diameter.
+float lightSpread(const LightSettings& light);
 
 // The table: every technique, in filter.kind's order.
 const std::vector<const FilterTechnique*>& filterTechniques();
@@ -103,5 +157,6 @@ const FilterTechnique& vsmFilter();
 const FilterTechnique& evsm2Filter();
 const FilterTechnique& evsm4Filter();
 const FilterTechnique& msmFilter();
+const FilterTechnique& pcssFilter();
 
 }  // namespace shadowlab
