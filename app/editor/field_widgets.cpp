@@ -80,7 +80,9 @@ bool comboField(EditorState& state, const char* key, const char* label) {
     auto text = [](const nlohmann::json& j) { return j.is_string() ? j.get<std::string>() : j.dump(); };
 
     bool changed = false;
-    if (ImGui::BeginCombo(label, text(current).c_str())) {
+    // Every choice in view at once: ImGui's default height holds 8, and filter.kind has 9 (a scrolled list hides
+    // the first choice behind the scroll to the selected one).
+    if (ImGui::BeginCombo(label, text(current).c_str(), ImGuiComboFlags_HeightLargest)) {
         for (std::size_t i = 0; i < options.size(); ++i) {
             const bool selected = options[i] == current;
             if (ImGui::Selectable(text(options[i]).c_str(), selected) && !selected)
