@@ -501,11 +501,11 @@ ShadowPassCounts Renderer::renderView(const PlannedView& p, const LightSettings&
     auto drawStatics = [&](const TexelRect& region, const ShadowMap& into) {
         ShadowPassCounts counts;
         for (const CascadePage& page : cascadePages(space, region)) {
-            CasterSelection statics = castersInVolume(*gpuScene_, page.space);
-            std::erase_if(statics.draws, [&](std::uint32_t d) { return staticDraw[d] == 0; });
-            statics.skipped = 0;
-            statics.scissor = page.inPage;
-            add(counts, shadowPass_->run(*gpuScene_, statics, page.space, light.shadow, clamp, pageScratch_));
+            CasterSelection pageCasters = castersInVolume(*gpuScene_, page.space);
+            std::erase_if(pageCasters.draws, [&](std::uint32_t d) { return staticDraw[d] == 0; });
+            pageCasters.skipped = 0;
+            pageCasters.scissor = page.inPage;
+            add(counts, shadowPass_->run(*gpuScene_, pageCasters, page.space, light.shadow, clamp, pageScratch_));
             copy(pageScratch_, page.inPage, into, page.inMap.x0, page.inMap.y0);
         }
         return counts;

@@ -49,7 +49,7 @@ std::vector<char> castingInstances(const Scene& scene, const CasterSettings& cas
     return perInstance(scene, castingNodes(scene, casters), 1);
 }
 
-std::vector<char> staticInstances(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters) {
+std::vector<char> staticNodes(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters) {
     std::unordered_set<int> driven;  // the file's node indices a chosen animation drives
     for (int a : chosen)
         if (a >= 0 && a < int(scene.animations.size()))
@@ -60,7 +60,11 @@ std::vector<char> staticInstances(const Scene& scene, const std::vector<int>& ch
     const std::vector<char> forcedDynamic = listedSubtrees(scene, casters.forcedDynamic);
     std::vector<char> nodes(scene.nodes.size());
     for (std::size_t n = 0; n < nodes.size(); ++n) nodes[n] = forcedStatic[n] || (!moving[n] && !forcedDynamic[n]);
-    return perInstance(scene, nodes, 1);
+    return nodes;
+}
+
+std::vector<char> staticInstances(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters) {
+    return perInstance(scene, staticNodes(scene, chosen, casters), 1);
 }
 
 std::vector<std::string> unknownCasterPathWarnings(const Scene& scene, const CasterSettings& casters) {

@@ -17,9 +17,13 @@ std::vector<char> castingNodes(const Scene& scene, const CasterSettings& casters
 // Per Scene::instances: 1 when the instance casts (an instance of no node always does).
 std::vector<char> castingInstances(const Scene& scene, const CasterSettings& casters);
 
-// Per Scene::instances: 1 when the instance is a static caster: none of the animations `chosen` (indices into
-// Scene::animations) drives its node or an ancestor, or casters.static names it (or an ancestor), unless
-// casters.dynamic does (casters.static wins where both name it). An instance of no node is static.
+// Per Scene::nodes: 1 when the node is static: none of the animations `chosen` (indices into Scene::animations)
+// drives it or an ancestor, or casters.static names it (or an ancestor), unless casters.dynamic does (casters.static
+// wins where both name it).
+std::vector<char> staticNodes(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters);
+
+// Per Scene::instances: 1 when the instance is a static caster (its node is, staticNodes). An instance of no node is
+// static.
 std::vector<char> staticInstances(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters);
 
 // One warning per excluded path no node of the scene has ("casters.excluded: no node 'X' in scene S; ignored"):

@@ -138,4 +138,47 @@ TEST_F(EditorTimeline, TheViewsTableShowsEachViewsCacheStateWithItsReason) {
     EXPECT_EQ(firstRow().update, "reused") << firstRow().why;
 }
 
+// The Outliner's static box: the Spinner, which Spin moves, shows dynamic; ticking it writes casters.static (a static
+// flag on something that moves: the frame then warns and the cache is wrong), unticking it removes the path again; the
+// Floor, static by the rule, unticked goes to casters.dynamic. The views table follows: a static Spinner leaves the
+// view reused while Spin plays.
+TEST_F(EditorTimeline, TheOutlinersStaticBoxForcesANodeStaticOrDynamic) {
+    EditorHarness& h = *harness;
+    h.click("animation.play");
+    h.click("animation.play=Spin");
+    h.click("shadow.update");
+    h.click("shadow.update=cachedStatic");
+    const Scene& scene = *h.state().scene;
+    auto pathOf = [&](const std::string& name) {
+        for (const SceneNode& n : scene.nodes)
+            if (n.name == name) return n.path;
+        ADD_FAILURE() << "no node " << name;
+        return std::string();
+    };
+    const std::string spinner = pathOf("Spinner"), floor = pathOf("Floor");
+    ASSERT_TRUE(h.reveal("outliner.static=" + spinner));
+    const CasterSettings& casters = h.state().settings.casters;
+    h.click("outliner.static=" + spinner);  // was dynamic (Spin moves it): now forced static
+    h.frame(2);
+    EXPECT_EQ(casters.forcedStatic, std::vector<std::string>{spinner});
+    EXPECT_TRUE(casters.forcedDynamic.empty());
+    h.settle();
+    h.click("timeline.play");
+    play(0.5);
+    const std::vector<ViewRow> rows = viewRows(h.state().stats, h.state().viewMilliseconds);
+    ASSERT_FALSE(rows.empty());
+    EXPECT_EQ(rows.front().update, "reused") << "a static Spinner is in the cached depth: " << rows.front().why;
+    h.click("timeline.play");  // pause
+    h.click("outliner.static=" + spinner);  // back to the rule: no override left
+    h.frame(2);
+    EXPECT_TRUE(casters.forcedStatic.empty());
+    EXPECT_TRUE(casters.forcedDynamic.empty());
+    ASSERT_TRUE(h.reveal("outliner.static=" + floor));
+    h.click("outliner.static=" + floor);  // static by the rule: now forced dynamic
+    h.frame(2);
+    EXPECT_EQ(casters.forcedDynamic, std::vector<std::string>{floor});
+    EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
+    h.saveWindow("outliner-static-boxes");
+}
+
 }  // namespace shadowlab::editor::test
