@@ -4,6 +4,7 @@
 #include "cli/soft_accuracy_output.h"
 #include "settings/settings_fields.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iomanip>
 
@@ -113,13 +114,15 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
         out << "  BVH update     " << std::setprecision(3) << c.bvhUpdateMs << std::setprecision(1) << " ms ("
             << c.instancesMoved << " instances moved; the mesh BVHs kept, the top level re-committed)\n";
     else
-        out << "  BVH build      " << c.bvhBuildMs << " ms (" << c.triangles << " triangles, Embree)\n";
+        out << "  BVH build      " << c.bvhBuildMs << " ms (" << c.triangles
+            << " triangles, Embree, on the other cores while the tool frame renders)\n";
     if (c.referenceReused) {
         out << "  reference      reused (same scene, light, camera and size)\n";
     } else {
         // 0 ms: the surface samples came from the cache (same camera and size; another light was traced).
         if (c.gbufferMs > 0.0)
-            out << "  G-buffer       " << c.gbufferMs << " ms (pass + read-back + double-precision surface rebuild)\n";
+            out << "  G-buffer       " << c.gbufferMs << " ms (draw " << c.gbufferDrawMs << " + read-back "
+                << c.gbufferReadBackMs << " + double-precision surface rebuild " << c.gbufferRebuildMs << ")\n";
         else
             out << "  G-buffer       reused (same camera and size)\n";
         out << "  shadow rays    " << c.traceMs << " ms for " << c.rays << " rays on " << c.threads << " threads = "
@@ -129,8 +132,13 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
     }
     out << "  boundary probe " << c.probeMs << " ms (" << c.probedPixels
         << " pixels far from a visible edge probed for hidden ones)\n";
-    out << "  tool frame     " << c.toolFrameMs << " ms (shadow pass + shadow-factor pass + read-back)\n";
-    out << "  metrics        " << c.metricsMs << " ms (distances, numbers, overlay)\n";
+    out << "  tool frame     " << c.toolFrameMs << " ms (render " << c.toolRenderMs
+        << ": scene upload, shadow pass, shadow-factor pass; read-back " << c.toolReadBackMs << ")\n";
+    out << "  metrics        " << c.metricsMs << " ms (causes " << c.causesMs << ", overlays " << c.overlaysMs
+        << ", distances and numbers " << std::max(0.0, c.metricsMs - c.causesMs - c.overlaysMs) << ")\n";
+    if (c.programsBuilt > 0)
+        out << "  programs       " << c.programsBuilt << " GL programs built in " << c.programBuildMs
+            << " ms (first use; inside the stages above)\n";
     out << "  total          " << c.totalMs << " ms\n";
     out.unsetf(std::ios::floatfield);
 }
@@ -170,7 +178,11 @@ nlohmann::json accuracyToJson(const AccuracyReport& r) {
           {"triangles", k.triangles}, {"gbufferMs", k.gbufferMs}, {"traceMs", k.traceMs}, {"rays", k.rays},
           {"raysPerSecond", k.raysPerSecond}, {"threads", k.threads}, {"boundaryMs", k.boundaryMs},
           {"probeMs", k.probeMs}, {"probedPixels", k.probedPixels},
-          {"toolFrameMs", k.toolFrameMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
+          {"toolFrameMs", k.toolFrameMs}, {"toolRenderMs", k.toolRenderMs}, {"toolReadBackMs", k.toolReadBackMs},
+{"gbufferDrawMs", k.gbufferDrawMs},
+          {"gbufferReadBackMs", k.gbufferReadBackMs}, {"gbufferRebuildMs", k.gbufferRebuildMs},
+          {"programsBuilt", k.programsBuilt}, {"programBuildMs", k.programBuildMs}, {"causesMs", k.causesMs},
+          {"overlaysMs", k.overlaysMs}, {"metricsMs", k.metricsMs}, {"totalMs", k.totalMs}}},
     });
     json["texelDensity"] = {{"pixels", r.texelDensity.pixels}, {"p5", r.texelDensity.p5},
                             {"median", r.texelDensity.median}, {"p95", r.texelDensity.p95}};

@@ -9,13 +9,15 @@
 #include "accuracy/light_isolation.h"
 #include "accuracy/shadow_boundary.h"
 #include "frame/renderer.h"
+#include "gl/program.h"
+#include "gl/texture_read_back.h"
 #include "light/scene_lights.h"
 #include "reference/embree_scene.h"
 #include "reference/parallel_rows.h"
-#include "reference/pixel_vector.h"
 #include "reference/soft_visibility.h"
 #include "reference/visibility.h"
 #include "scene/scene_casters.h"
+#include "views/shadow_view.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -24,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <future>
 #include <optional>
 
 namespace shadowlab {
@@ -181,13 +184,13 @@ struct AccuracyMeter::Impl {
     Renderer* toolRenderer = nullptr;  // setToolRenderer: draws the tool frame instead of `renderer`
     FrameStats lastToolFrame;
     RenderTarget toolTarget;
+    gl::TextureReadBack toolReadBack;  // the tool frame's S, read in place
     GBufferPass gbuffer;
 
-    // Scene: the BVH and the G-buffer's own upload, rebuilt only when the geometry changes.
+    // Scene: the BVH, rebuilt only when the geometry changes (the G-buffer draws the tool renderer's upload).
     const Scene* scene = nullptr;
     std::size_t fingerprint = 0;
     glm::dvec3 origin{0.0};
-    std::unique_ptr<GpuScene> gpuScene;
     std::unique_ptr<EmbreeScene> bvh;
 
     // Camera and size: the surface samples.
@@ -215,7 +218,6 @@ struct AccuracyMeter::Impl {
     // Forgets everything traced from the scene; keeps the BVH when `keepBvh` (its instances are about to move).
     void dropScene(bool keepBvh = false) {
         scene = nullptr;
-        gpuScene.reset();
         if (!keepBvh) bvh.reset();
         surfaceKey.reset();
         visibilityLight.reset();
@@ -305,34 +307,6 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     if (!isolated) return fail(settingsError);
     const Settings& settings = *isolated;
 
-    // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
-    setStage(progress, 0.0f, "rendering the tool's frame");
-    auto t = Clock::now();
-    FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height, shadowCamera);
-    if (!stats.ok) return fail(stats.error);
-    report.warnings = stats.warnings;
-    for (const ShadowViewStats& view : stats.views) report.shadowViewsRendered += view.ran ? 1 : 0;
-    const std::size_t count = std::size_t(width) * std::size_t(height);
-    PixelVector<float> frame;
-    frame.resize(count * 4);  // written whole by the read-back
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(m.toolTarget.colorTexture(), 0, GL_RGBA, GL_FLOAT, GLsizei(frame.size() * sizeof(float)),
-                      frame.data());
-    std::vector<float> shadowFactor(count);
-    std::vector<std::uint8_t> toolCovered(count);
-    parallelRows(height, [&](int row) {
-        const std::size_t src = std::size_t(height - 1 - row) * std::size_t(width);
-        const std::size_t dst = std::size_t(row) * std::size_t(width);
-        for (std::size_t x = 0; x < std::size_t(width); ++x) {
-            const float* px = &frame[(src + x) * 4];
-            shadowFactor[dst + x] = px[0];
-            // The shadow view writes grey; the clear colour is not grey.
-            toolCovered[dst + x] = px[0] == px[1] && px[1] == px[2] ? 1 : 0;
-        }
-    });
-    report.cost.toolFrameMs = msSince(t);
-    if (cancelled(progress)) return stop();
-
     // The BVH, once per scene geometry and set of casters; when only instance transforms changed (an animation
     // step), its top level follows them and the mesh BVHs stay. Everything traced from it is traced again.
     const std::vector<char> casting = castingInstances(scene, settings.casters);
@@ -340,12 +314,51 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.cost.bvhReused = m.scene == &scene && m.fingerprint == fingerprint && m.bvh;
     report.cost.bvhUpdated =
         !report.cost.bvhReused && m.scene == &scene && m.bvh && m.bvh->sameGeometry(scene, casting);
+    // A BVH built from scratch does not wait for the tool frame: Embree builds it on the other cores while this
+    // thread drives the GPU. Its origin is the one the renderer takes for this scene (checked below).
+    const glm::dvec3 bvhOrigin = renderOriginOf(scene.bounds);
+    std::future<std::unique_ptr<EmbreeScene>> bvhBuild;
+    if (!report.cost.bvhReused && !report.cost.bvhUpdated)
+        bvhBuild = std::async(std::launch::async, [&scene, bvhOrigin, &casting] {
+            return std::make_unique<EmbreeScene>(scene, bvhOrigin, casting);
+        });
+
+    // The tool's own frame: the shadow factor S of every pixel, exactly as the main pass computes it.
+    setStage(progress, 0.0f, "rendering the tool's frame");
+    const gl::ProgramBuildTally programsBefore = gl::programBuildTally();
+    auto t = Clock::now();
+    FrameStats stats = m.renderToolFrame(scene, settings, camera, width, height, shadowCamera);
+    if (!stats.ok) return fail(stats.error);
+    report.cost.toolRenderMs = msSince(t);
+    report.warnings = stats.warnings;
+    for (const ShadowViewStats& view : stats.views) report.shadowViewsRendered += view.ran ? 1 : 0;
+    const std::size_t count = std::size_t(width) * std::size_t(height);
+    std::vector<float> shadowFactor(count);
+    std::vector<std::uint8_t> toolCovered(count);
+    const bool readBack = m.toolReadBack.read(
+        m.toolTarget.colorTexture(), GL_RGBA, GL_FLOAT, count * 4 * sizeof(float), [&](const void* pixels) {
+            const float* frame = static_cast<const float*>(pixels);
+            parallelRows(height, [&](int row) {
+                const std::size_t src = std::size_t(height - 1 - row) * std::size_t(width);
+                const std::size_t dst = std::size_t(row) * std::size_t(width);
+                for (std::size_t x = 0; x < std::size_t(width); ++x) {
+                    const float* px = &frame[(src + x) * 4];
+                    shadowFactor[dst + x] = px[0];
+                    // The shadow view writes grey; the clear colour is not grey.
+                    toolCovered[dst + x] = px[0] == px[1] && px[1] == px[2] ? 1 : 0;
+                }
+            });
+        });
+    if (!readBack) return fail("the tool frame's read-back buffer could not be mapped (GPU out of memory?)");
+    report.cost.toolFrameMs = msSince(t);
+    report.cost.toolReadBackMs = report.cost.toolFrameMs - report.cost.toolRenderMs;
+    if (cancelled(progress)) return stop();
+
     if (report.cost.bvhUpdated) {
         setStage(progress, 0.1f, "moving the BVH's instances");
         m.dropScene(true);
         m.origin = stats.renderOrigin;
         report.cost.instancesMoved = m.bvh->updateTransforms(scene, m.origin);
-        m.gpuScene = std::make_unique<GpuScene>(scene, m.origin);  // the G-buffer's draws carry the transforms
         m.scene = &scene;
         m.fingerprint = fingerprint;
         report.cost.bvhUpdateMs = m.bvh->updateMilliseconds();
@@ -353,8 +366,8 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         setStage(progress, 0.1f, "building the BVH");
         m.dropScene();
         m.origin = stats.renderOrigin;
-        m.gpuScene = std::make_unique<GpuScene>(scene, m.origin);
-        m.bvh = std::make_unique<EmbreeScene>(scene, m.origin, casting);
+        m.bvh = bvhBuild.get();
+        if (m.origin != bvhOrigin) m.bvh = std::make_unique<EmbreeScene>(scene, m.origin, casting);
         m.scene = &scene;
         m.fingerprint = fingerprint;
         report.cost.bvhBuildMs = m.bvh->buildMilliseconds();
@@ -373,13 +386,19 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         m.visibilityLight.reset();
         m.softKey.reset();
         m.boundaryKey.reset();
-        if (std::string error = m.gbuffer.render(*m.gpuScene, stats.cameraViewProjection, width, height,
+        // The G-buffer draws the geometry the tool frame just drew (its renderer's upload, posed as this scene).
+        const GpuScene* drawn = (m.toolRenderer ? *m.toolRenderer : m.renderer).gpuScene();
+        if (!drawn) return fail("the tool frame uploaded no scene for the G-buffer");
+        if (std::string error = m.gbuffer.render(*drawn, stats.cameraViewProjection, width, height,
                                                  camera.position - m.origin, m.samples);
             !error.empty())
             return fail(error);
         m.gbufferMs = msSince(t);
         m.surfaceKey = surfaceKey;
         report.cost.gbufferMs = m.gbufferMs;
+        report.cost.gbufferDrawMs = m.gbuffer.lastTimings().drawMs;
+        report.cost.gbufferReadBackMs = m.gbuffer.lastTimings().readBackMs;
+        report.cost.gbufferRebuildMs = m.gbuffer.lastTimings().rebuildMs;
     }
     if (cancelled(progress)) return stop();
 
@@ -463,6 +482,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     causeContext.cullMode = settings.lights[0].shadow.cullMode;
     causeContext.depthClamp = settings.lights[0].depthClampApplies();
     causeContext.sceneRadius = scene.bounds.empty ? 1.0 : double(scene.bounds.radius());
+    const auto causesStart = Clock::now();
     std::vector<MismatchCause> causes(count, MismatchCause::None);
     const int chunks = int((mismatched.size() + 63) / 64);
     parallelRows(chunks, [&](int chunk) {
@@ -473,6 +493,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
                                     distance(i), k);
         }
     });
+    report.cost.causesMs = msSince(causesStart);
 
     const EdgeUnits units(m.samples, boundary, camera, m.origin, height);
     MetricsInput input;
@@ -528,6 +549,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     report.coarseMapWarning = coarseMapWarning(report);
     report.width = width;
     report.height = height;
+    const auto overlaysStart = Clock::now();
     for (OverlayKind kind : {OverlayKind::Error, OverlayKind::Cause})
         (kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba) =
             makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
@@ -536,6 +558,7 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         report.softOverlayRgba = makeSoftOverlay(width, height, m.visibility.classes, shadowFactor,
                                                  m.visibility.lambert, m.soft.visibility, metrics.measured,
                                                  settings.ambient);
+    report.cost.overlaysMs = msSince(overlaysStart);
     report.pixelClass = m.visibility.classes;
     report.pixelShadow = std::move(shadowFactor);
     report.pixelLambert = m.visibility.lambert;
@@ -555,6 +578,9 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     }
     report.cost.metricsMs = msSince(t);
     report.cost.totalMs = msSince(start);
+    const gl::ProgramBuildTally programsAfter = gl::programBuildTally();
+    report.cost.programsBuilt = programsAfter.programs - programsBefore.programs;
+    report.cost.programBuildMs = programsAfter.milliseconds - programsBefore.milliseconds;
     setStage(progress, 1.0f, "done");
     report.ok = true;
     return report;

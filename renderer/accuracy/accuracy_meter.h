@@ -90,6 +90,7 @@ struct AccuracyCost {
     std::size_t instancesMoved = 0;  // bvhUpdated: instances whose transform changed
     std::size_t triangles = 0;     // in the BVH
     double gbufferMs = 0.0;        // G-buffer pass + read-back + double-precision surface rebuild
+    double gbufferDrawMs = 0.0, gbufferReadBackMs = 0.0, gbufferRebuildMs = 0.0;  // gbufferMs's parts
     double traceMs = 0.0;          // shadow rays
     std::size_t rays = 0;
     double raysPerSecond = 0.0;
@@ -98,6 +99,12 @@ struct AccuracyCost {
     double probeMs = 0.0;          // extra rays probing boundaries the camera cannot see
     std::size_t probedPixels = 0;
     double toolFrameMs = 0.0;      // the tool's own frame (shadow pass + shadow-factor pass + read-back)
+    double toolRenderMs = 0.0;     // toolFrameMs's render (scene upload, programs, passes) ...
+    double toolReadBackMs = 0.0;   // ... and its read-back of S (waiting for the GPU, copying, unpacking)
+    int programsBuilt = 0;         // GL programs built during this measurement (first use of a pass or variant)
+    double programBuildMs = 0.0;   // their preprocess + compile + link wall time (inside the stages above)
+    double causesMs = 0.0;         // metricsMs's part: a cause for each mismatched pixel (rays)
+    double overlaysMs = 0.0;       // metricsMs's part: the overlay pictures
     double metricsMs = 0.0;        // metrics + overlay (live: the GPU count)
     double uploadMs = 0.0;         // live: the reference uploaded to the GPU counter (once per reference and light space)
     double totalMs = 0.0;

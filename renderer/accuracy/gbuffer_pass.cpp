@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include <chrono>
 #include <cmath>
 
 namespace shadowlab {
@@ -65,6 +66,9 @@ std::string GBufferPass::ensureTarget(int width, int height) {
 
 std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& viewProjection, int width, int height,
                                 const glm::dvec3& cameraPosition, SurfaceSamples& out) {
+    using Clock = std::chrono::steady_clock;
+    auto msSince = [](Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); };
+    auto t = Clock::now();
     if (std::string error = ensureTarget(width, height); !error.empty()) return error;
     const Scene& scene = gpuScene.scene();
 
@@ -108,13 +112,26 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
     }
     resetFaceCulling();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    timings_.drawMs = msSince(t);
+    t = Clock::now();
 
+    // The (draw + 1, triangle) ids are read in place, mapped.
     const std::size_t count = std::size_t(width) * std::size_t(height);
-    PixelVector<GLuint> ids;
-    ids.resize(count * 2);  // written whole by the read-back
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureImage(ids_.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(ids.size() * sizeof(GLuint)), ids.data());
+    const bool mapped =
+        readBack_.read(ids_.id(), GL_RG_INTEGER, GL_UNSIGNED_INT, count * 2 * sizeof(GLuint), [&](const void* ids) {
+            timings_.readBackMs = msSince(t);
+            t = Clock::now();
+            rebuild(gpuScene, viewProjection, width, height, cameraPosition, static_cast<const GLuint*>(ids), out);
+        });
+    if (!mapped) return "accuracy G-buffer: its read-back buffer could not be mapped (GPU out of memory?)";
+    timings_.rebuildMs = msSince(t);
+    return {};
+}
 
+void GBufferPass::rebuild(const GpuScene& gpuScene, const glm::dmat4& viewProjection, int width, int height,
+                          const glm::dvec3& cameraPosition, const GLuint* ids, SurfaceSamples& out) const {
+    const Scene& scene = gpuScene.scene();
+    const std::size_t count = std::size_t(width) * std::size_t(height);
     // Draw d of the GpuScene is the d-th instance whose mesh has triangles (GpuScene skips empty meshes).
     std::vector<const Instance*> drawInstance;
     for (const Instance& instance : scene.instances)
@@ -180,7 +197,6 @@ std::string GBufferPass::render(const GpuScene& gpuScene, const glm::dmat4& view
             out.finite[i] = finite(p) && finite(n) ? 1 : 0;
         }
     });
-    return {};
 }
 
 }  // namespace shadowlab

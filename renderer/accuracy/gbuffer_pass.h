@@ -4,6 +4,7 @@
 // double precision by intersecting its camera ray with that triangle (exact for any world coordinates).
 #include "frame/gpu_scene.h"
 #include "gl/gl_objects.h"
+#include "gl/texture_read_back.h"
 #include "reference/surface_samples.h"
 
 #include <glm/ext/matrix_double4x4.hpp>
@@ -22,20 +23,33 @@ public:
     std::string render(const GpuScene& scene, const glm::dmat4& viewProjection, int width, int height,
                        const glm::dvec3& cameraPosition, SurfaceSamples& out);
 
+    // Where the last render's wall time went (the accuracy cost's G-buffer line breaks down into these).
+    struct Timings {
+        double drawMs = 0.0;      // issuing the draws (and any program built on first use)
+        double readBackMs = 0.0;  // waiting for the GPU and copying the ids
+        double rebuildMs = 0.0;   // the double-precision points and normals, on every core
+    };
+    const Timings& lastTimings() const { return timings_; }
+
 private:
     struct Program {
         gl::Program program;
         GLint viewProjection, model, normalMatrix, uvTransform, drawId, alphaFactor, alphaCutoff, baseColorTexture;
     };
     const Program& program(bool alphaMask, bool alphaTexture);
+    // Each pixel's point and normal from its read-back (draw + 1, triangle) ids, on every core.
+    void rebuild(const GpuScene& scene, const glm::dmat4& viewProjection, int width, int height,
+                 const glm::dvec3& cameraPosition, const GLuint* ids, SurfaceSamples& out) const;
     std::string ensureTarget(int width, int height);
 
     std::map<std::pair<bool, bool>, Program> programs_;
     gl::Texture ids_;
     gl::Renderbuffer depth_;
     gl::Framebuffer framebuffer_;
+    gl::TextureReadBack readBack_;
     int width_ = 0;
     int height_ = 0;
+    Timings timings_;
 };
 
 }  // namespace shadowlab

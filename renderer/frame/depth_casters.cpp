@@ -18,14 +18,18 @@ DepthCasters::Program::Program(gl::Program built) : program(std::move(built)) {
     bindDrawTransformsBlock(p);
 }
 
-DepthCasters::DepthCasters()
-    : opaque_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {})),
-      alphaFactor_(gl::buildProgram(
-          {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
-          {"ALPHA_MASK"})),
-      alphaTextured_(gl::buildProgram(
-          {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}},
-          {"ALPHA_MASK", "BASE_COLOR_TEXTURE"})) {}
+DepthCasters::DepthCasters() : opaque_(gl::buildProgram({{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}}, {})) {}
+
+const DepthCasters::Program& DepthCasters::alphaProgram(bool textured) {
+    std::optional<Program>& p = textured ? alphaTextured_ : alphaFactor_;
+    if (!p) {
+        std::vector<std::string> defines{"ALPHA_MASK"};
+        if (textured) defines.push_back("BASE_COLOR_TEXTURE");
+        p.emplace(gl::buildProgram(
+            {{GL_VERTEX_SHADER, "shadow_depth.vert.glsl"}, {GL_FRAGMENT_SHADER, "shadow_alpha.frag.glsl"}}, defines));
+    }
+    return *p;
+}
 
 DepthCastersDrawn DepthCasters::draw(const GpuScene& scene, const std::vector<std::uint32_t>& draws,
                                      const glm::mat4& viewProjection,
@@ -54,7 +58,7 @@ DepthCastersDrawn DepthCasters::draw(const GpuScene& scene, const std::vector<st
         const Material* material = materialOf(first);
         const bool alpha = masked(material);
         const GLuint texture = alpha ? scene.materialTexture(first.material) : 0;
-        const Program& p = !alpha ? opaque_ : texture ? alphaTextured_ : alphaFactor_;
+        const Program& p = alpha ? alphaProgram(texture != 0) : opaque_;
         glUseProgram(p.program.id());
         if (prepared.insert(p.program.id()).second) {
             glUniformMatrix4fv(p.viewProjection, 1, GL_FALSE, glm::value_ptr(viewProjection));

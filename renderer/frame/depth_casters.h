@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace shadowlab {
@@ -38,9 +39,12 @@ private:
         GLint viewProjection = -1, uvTransform = -1, alphaFactor = -1, alphaCutoff = -1, baseColor = -1;
         explicit Program(gl::Program built);
     };
-    Program opaque_;         // vertex stage only: no fragment work
-    Program alphaFactor_;    // MASK material without a texture
-    Program alphaTextured_;  // MASK material with a base-colour texture
+    // Built when a MASK material is first drawn: a scene without one compiles no fragment stage here.
+    const Program& alphaProgram(bool textured);
+
+    Program opaque_;                        // vertex stage only: no fragment work
+    std::optional<Program> alphaFactor_;    // MASK material without a texture
+    std::optional<Program> alphaTextured_;  // MASK material with a base-colour texture
     DrawBatches batches_;
 };
 

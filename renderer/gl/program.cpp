@@ -3,6 +3,7 @@
 #include "gl/shader_sources.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 namespace shadowlab::gl {
@@ -97,8 +98,23 @@ std::string preprocessedSource(const std::string& file, const std::vector<std::s
     return preprocess(file, defines, text.empty() ? embeddedSource(file) : text, files, aliases);
 }
 
+namespace {
+thread_local ProgramBuildTally tally;
+}
+
+ProgramBuildTally programBuildTally() { return tally; }
+
 Program buildProgram(const std::vector<ShaderStage>& stages, const std::vector<std::string>& defines,
                      const IncludeAliases& aliases) {
+    const auto start = std::chrono::steady_clock::now();
+    struct Count {  // tallied however the build ends (a failure throws)
+        std::chrono::steady_clock::time_point start;
+        ~Count() {
+            ++tally.programs;
+            tally.milliseconds +=
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        }
+    } count{start};
     Program program(glCreateProgram());
     std::vector<Shader> shaders;
     for (const ShaderStage& stage : stages) {

@@ -26,6 +26,14 @@ using IncludeAliases = std::map<std::string, std::string>;
 Program buildProgram(const std::vector<ShaderStage>& stages, const std::vector<std::string>& defines,
                      const IncludeAliases& aliases = {});
 
+// Programs built on this thread (GL contexts are per thread) since it started, and the wall time they took
+// (preprocess, compile, link: the first frame's hidden cost, which the accuracy cost reports).
+struct ProgramBuildTally {
+    int programs = 0;
+    double milliseconds = 0.0;
+};
+ProgramBuildTally programBuildTally();
+
 // The full text handed to the compiler for one stage (for logs and tests): the embedded `file`, or `text` when given.
 std::string preprocessedSource(const std::string& file, const std::vector<std::string>& defines,
                                const std::string& text = {}, const IncludeAliases& aliases = {});
