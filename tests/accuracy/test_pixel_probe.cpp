@@ -179,6 +179,49 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechnique) {
     EXPECT_TRUE(explained);
 }
 
+TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechniqueWithMips) {
+    // filter.momentMips: the GPU reads its moments trilinearly at the level of the pixel's footprint (dFdxFine /
+    // dFdyFine of the position, carried into the map); the mirror takes the same derivatives from the surface's plane
+    // at the quad neighbours' pixel centres (probe/pixel_footprint.h). Exact equality is impossible: the GPU's
+    // derivative is a float difference of interpolated positions and its level and sub-texel weights have 8
+    // fractional bits, so the mirror bounds S over its level +-1/64 and both roundings of each weight. Every pixel
+    // parity of the quads is probed (step 3); the 1024^2 map is minified here (levels 1-3), so mips are read.
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
+        for (int bits : {16, 32}) {
+            Settings s = withFilter(base, kind, 3, 1024);
+            s.filter.momentBits = bits;
+            s.filter.momentMips = true;
+            const Sweep sw = sweep(scene, s, 240, 135, 3);
+            SCOPED_TRACE(std::string(filterTechnique(kind).name) + " " + std::to_string(bits) + " with mips");
+            EXPECT_GT(sw.surfaces, 2000);
+            EXPECT_EQ(sw.disagree, 0) << sw.firstDisagreement;
+            EXPECT_GT(sw.partial, 20);
+        }
+    // A point light's cube faces (builtin:room), VSM with mips: the face is read as a 2D view, as without mips.
+    Settings room = loadShippedPreset("room");
+    room.filter.kind = FilterKind::Vsm;
+    room.filter.momentMips = true;
+    const Sweep sw = sweep(loadBuiltin("room"), room, 160, 90, 3);
+    EXPECT_GT(sw.surfaces, 1000);
+    EXPECT_LE(sw.disagree, sw.surfaces / 100) << sw.firstDisagreement;
+    // The probe names the level it read.
+    Renderer renderer;
+    PixelProbe probe;
+    Settings vsm = withFilter(base, FilterKind::Vsm, 3, 1024);
+    vsm.filter.momentMips = true;
+    const Camera camera = cameraFor(vsm.camera, scene, 160.0 / 90.0);
+    ASSERT_EQ(probe.capture(renderer, scene, vsm, camera, 160, 90), "");
+    double deepest = -1.0;
+    for (int y = 0; y < 90; y += 5)
+        for (int x = 0; x < 160; x += 5) {
+            const PixelProbeReport r = probe.at(x, y);
+            if (r.ok && r.momentLookup) deepest = std::max(deepest, r.momentLevel);
+        }
+    EXPECT_GT(deepest, 1.0) << "a 1024^2 map seen at 160x90 is minified";
+}
+
 TEST_F(PixelProbeTest, ExplainsTheMoireOfAWideKernel) {
     // The default bias before issue 20 (slope 2, no receiver plane) with a 7x7 kernel: the far taps reach 3 texels
     // from the lookup, where the sloped floor's own depth (3 x m) passes its bias (0.8 texels + the normal offset):
