@@ -108,25 +108,28 @@ TEST_F(MomentsPassTest, StoredMomentsEqualTheCpuMirrorForEveryTechniqueAndPrecis
 }
 
 TEST_F(MomentsPassTest, PerspectiveViewsStoreLinearDepthBetweenNearAndFar) {
-    // A spot light's floor texel: the stored first moment (VSM: the depth itself) is its distance along the axis,
-    // normalised by near and far, not its window depth (which crowds near 1).
+    // A spot light straight down over open floor (only the floor in its 30-degree cone): every texel's stored first
+    // moment (VSM: the depth itself) is the floor's distance along the axis, 6, normalised by near and far, not its
+    // window depth (which crowds near 1).
     const Scene scene = loadBuiltin("textbook");
     Settings s = withTechnique(loadShippedPreset("default"), FilterKind::Vsm, 32, 128);
     s.lights[0].type = LightType::Spot;
-    s.lights[0].position = glm::vec3(0.0f, 8.0f, 0.0f);
+    s.lights[0].position = glm::vec3(5.0f, 6.0f, 5.0f);
     s.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.lights[0].spotConeDeg = 30.0f;
     s.filter.blurWidth = 1.0f;
     Renderer renderer;
     const View v = renderView(renderer, scene, s, 64, 48);
     ASSERT_TRUE(v.stats.ok) << v.stats.error;
     const LightSpace& space = v.stats.views.at(0).space;
     ASSERT_TRUE(space.perspective);
-    // The map's corner texel sees the floor (y = 0) 8 units below the light, whatever the corner's direction: its
-    // distance along the axis is 8.
-    const glm::vec4 corner = renderer.viewMoments(ShadowViewId{0}, 0, 0, 1, 1).at(0);
-    const double expected = (8.0 - space.nearPlane) / (space.farPlane - space.nearPlane);
-    EXPECT_NEAR(corner.x, expected, 1e-3) << "near " << space.nearPlane << " far " << space.farPlane;
-    EXPECT_NEAR(corner.y, corner.x * corner.x, 1e-5);
+    const double expected = (6.0 - space.nearPlane) / (space.farPlane - space.nearPlane);
+    for (const glm::ivec2 texel : {glm::ivec2(0, 0), glm::ivec2(64, 64), glm::ivec2(127, 20)}) {
+        const glm::vec4 m = renderer.viewMoments(ShadowViewId{0}, texel.x, texel.y, 1, 1).at(0);
+        EXPECT_NEAR(m.x, expected, 1e-3) << "texel " << texel.x << "," << texel.y << " near " << space.nearPlane
+                                         << " far " << space.farPlane;
+        EXPECT_NEAR(m.y, m.x * m.x, 1e-5);
+    }
 }
 
 TEST_F(MomentsPassTest, MipLevelsAreBuiltOnlyWhenAskedAndOnlyWhenTheMomentsChangedAndEqualTheCpuMirror) {
