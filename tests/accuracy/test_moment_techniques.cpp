@@ -74,8 +74,11 @@ TEST_F(MomentTechniquesAccuracy, VsmUnderTheRoomsPointLightStoresLinearDepthAndB
                 pcf.soft.bleedingPercent, vsm.soft.bleedingPercent, std::size_t(vsm.soft.counts.umbra),
                 pcf.soft.meanError, vsm.soft.meanError);
     EXPECT_GT(vsm.soft.counts.umbra, 1000u);
-    EXPECT_LT(vsm.soft.bleedingPercent, 1000.0);
-    EXPECT_LT(vsm.leakPercent, 1000.0);
+    // llvmpipe: window-depth moments bled 50.4 % (hard leak 43.2 %, soft mean |S-V| 0.0089); linear: 0.34 %, 0 %,
+    // 0.0017 (PCF 3x3: 0.17 %, 0.11 %, 0.0018).
+    EXPECT_LT(vsm.soft.bleedingPercent, 2.0);
+    EXPECT_LT(vsm.leakPercent, 1.0);
+    EXPECT_LT(vsm.soft.meanError, 1.5 * pcf.soft.meanError);
 }
 
 // Two slabs over a floor, seen from under them: A (high) covers x in [-3, 1], B (low) x in [-1, 3]. The map holds
