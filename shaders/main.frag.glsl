@@ -7,7 +7,8 @@
 //              (samplerCubeArrayShadow, point lights: per-face perspective depth); moments techniques: sampler2DArray
 //              and samplerCubeArray of moments
 //   filter     FILTER_TAPS and FILTER_GRID_RADIUS or FILTER_TAP_OFFSETS (texels; scaled by uFilterScale): the filter
-//              technique's taps; or MOMENT_TECHNIQUE: moments maps read through the technique's own file
+//              technique's taps; or MOMENT_TECHNIQUE: moments maps read through the technique's own file (MOMENT_MIPS:
+//              at the level of the pixel's footprint)
 //              (renderer/shading/filter_taps.cpp, shared with the pixel probe)
 //   view       VIEW_LIT | VIEW_SHADOW | VIEW_LIGHT_DEPTH | VIEW_CASCADES | VIEW_TEXEL_DENSITY; NORMAL_OFFSET, ALPHA_MASK (+ BASE_COLOR_TEXTURE)
 //   CASCADES   how many cascades the frame's cascaded directional lights have together (uCascades' length)
@@ -137,6 +138,9 @@ void main() {
 #ifdef RECEIVER_PLANE
     gPositionDx = dFdx(vWorldPosition);
     gPositionDy = dFdy(vWorldPosition);
+#elif defined(MOMENT_MIPS)
+    gPositionDx = dFdxFine(vWorldPosition);
+    gPositionDy = dFdyFine(vWorldPosition);
 #endif
     Shading s;
     s.n = normalize(vNormal);

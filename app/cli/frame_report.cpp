@@ -37,7 +37,8 @@ void printFrameReport(std::ostream& out, const Scene& scene, const GlInfo& info,
     for (const std::string& v : stats.mainVariants) out << " [" << v << "]";
     out << "\n";
     using NamedPass = std::pair<const char*, const PassStats*>;
-    for (const auto& [name, pass] : {NamedPass{"moments pass", &stats.momentsPass}, NamedPass{"blur pass", &stats.blurPass}})
+    for (const auto& [name, pass] : {NamedPass{"moments pass", &stats.momentsPass}, NamedPass{"blur pass", &stats.blurPass},
+                                     NamedPass{"mips pass", &stats.mipsPass}})
         if (pass->ran || pass->reason.find("compares depth") == std::string::npos)
             out << name << ": " << milliseconds(*pass) << " — " << pass->reason << "\n";
     if (stats.depthBoundsPass.ran) {

@@ -63,6 +63,7 @@ struct FrameStats {
     // each runs only for the views the shadow pass re-rendered (or whose moments settings changed).
     PassStats momentsPass;
     PassStats blurPass;
+    PassStats mipsPass;  // filter.momentMips: the moments' mip levels, for the same views
     std::optional<ViewDepths> seenDepths;  // the seen depths the cascades were fitted to (raw, before quantizing)
     std::vector<ShadowViewStats> views;  // every view of every light (see ShadowViewStats)
     std::size_t lightCount = 0;          // the frame's lights (the effective ones)

@@ -379,18 +379,20 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
                                                               (space.nearPlane + space.farPlane)
                                                         : space.texelWorldSize;
             momentViews.push_back({p.view.id(), viewName(p.view), p.group, p.layer,
-                                   p.action == ViewAction::Render || p.action == ViewAction::Clear, texelWorld});
+                                   p.action == ViewAction::Render || p.action == ViewAction::Clear, texelWorld,
+                                   space.perspective, float(space.nearPlane), float(space.farPlane)});
         }
         MomentsPassResult moments = momentsPass_->run(settings.filter, arrays_, momentViews, timer_);
         momentsPass_->configureSampler(settings.filter, settings.sampler);
         stats.momentsPass = moments.moments;
         stats.blurPass = moments.blur;
+        stats.mipsPass = moments.mips;
         stats.warnings.insert(stats.warnings.end(), moments.warnings.begin(), moments.warnings.end());
     } else {
         if (momentsPass_) momentsPass_->release();
         const std::string reason = std::string("filter.kind ") + technique.name + " compares depth: no moments";
         stats.momentsPass = {false, reason, std::nullopt};
-        stats.blurPass = {false, reason, std::nullopt};
+        stats.blurPass = stats.mipsPass = {false, reason, std::nullopt};
     }
 
     // The main pass: every enabled light, each casting one with its map array and layer.
@@ -572,6 +574,7 @@ void Renderer::waitForTimings(FrameStats& stats) {
         stats.depthBoundsPass.milliseconds = timer_.latestMilliseconds(TimedPass::DepthBounds, true);
     if (stats.momentsPass.ran) stats.momentsPass.milliseconds = timer_.latestMilliseconds(TimedPass::Moments, true);
     if (stats.blurPass.ran) stats.blurPass.milliseconds = timer_.latestMilliseconds(TimedPass::Blur, true);
+    if (stats.mipsPass.ran) stats.mipsPass.milliseconds = timer_.latestMilliseconds(TimedPass::Mips, true);
 }
 
 MomentsLayer Renderer::viewMomentsLayer(const ShadowViewId& view) const {
@@ -580,10 +583,10 @@ MomentsLayer Renderer::viewMomentsLayer(const ShadowViewId& view) const {
     return momentsPass_->layer(it->second.group, it->second.map.layer());
 }
 
-std::vector<glm::vec4> Renderer::viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const {
+std::vector<glm::vec4> Renderer::viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h, int level) const {
     const auto it = views_.find(view);
     if (!momentsPass_ || it == views_.end() || !momentsPass_->texture(it->second.group)) return {};
-    return momentsPass_->read(it->second.group, it->second.map.layer(), x0, y0, w, h);
+    return momentsPass_->read(it->second.group, it->second.map.layer(), x0, y0, w, h, level);
 }
 
 }  // namespace shadowlab

@@ -66,7 +66,7 @@ public:
     const GlInfo& glInfo() const { return info_; }
     // A moments technique's stored moments of a view of the last frame, texels [x0, x0+w) x [y0, y0+h) (row 0 =
     // bottom; a cube face's layer); empty when the frame used a depth technique or the view is unknown.
-    std::vector<glm::vec4> viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h) const;
+    std::vector<glm::vec4> viewMoments(const ShadowViewId& view, int x0, int y0, int w, int h, int level = 0) const;
     // Where that view's moments are stored (texture 0: a depth technique or an unknown view).
     MomentsLayer viewMomentsLayer(const ShadowViewId& view) const;
 

@@ -1,93 +1,166 @@
 #include "probe/moment_probe.h"
 
 #include "shading/filters/filter_technique.h"
+#include "shading/filters/moments_mirror.h"
+#include "shadow/moments_pass.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace shadowlab {
 
 void probeMomentLookup(PixelProbeReport& r, const Renderer& renderer, const ShadowViewId& view,
-                       const Settings& settings) {
+                       const Settings& settings, const MomentLookupGeometry& geometry) {
     const FilterTechnique& technique = filterTechnique(r.filter.kind);
     const MomentTechnique& m = *technique.moments;
     const glm::vec4 uniforms = m.uniforms(r.filter);
+    const LightSpace& light = *geometry.light;
     const int res = r.resolution;
     r.momentLookup = true;
     r.taps.clear();
 
-    // Where the GPU reads (float, as moments_lookup.glsl): inside the map, half a texel from its edge.
+    // The mip level (moments_lookup.glsl's momentLevel): the lookup's step in the map across the pixel's quad
+    // neighbours, in texels, log2 of the larger, within the map's levels.
+    const int maxLevel = momentLevels(res, true) - 1;
+    const bool mips = r.filter.momentMips;
+    double level = 0.0;
+    if (mips && geometry.derivatives) {
+        const auto texStep = [&](const glm::dvec3& d) {
+            const glm::dvec3 moved = light.textureOf(light.viewProjection() * glm::dvec4(geometry.lookup + d, 1.0));
+            return glm::length(glm::dvec2(moved) - glm::dvec2(r.lightTexture));
+        };
+        const double rho = std::max(texStep(geometry.derivatives->dx), texStep(geometry.derivatives->dy)) * res;
+        level = std::clamp(std::log2(std::max(rho, 1e-300)), 0.0, double(maxLevel));
+        r.momentLevel = level;
+    }
+
+    // Stored moments, read back a few texels at a time per level; outside the map (clamp-to-border) the border
+    // depth's moments.
+    const glm::vec4 border = m.encode(settings.sampler.borderDepth, uniforms);
+    struct Block {
+        int x0 = 0, y0 = 0, w = 0, h = 0;
+        std::vector<glm::vec4> texels;
+    };
+    std::map<int, Block> blocks;
+    bool missing = false;
+    const auto texelAt = [&](int lvl, int tx, int ty) {
+        const int size = std::max(res >> lvl, 1);
+        const std::optional<int> ax = addressTexel(tx, size, r.addressMode), ay = addressTexel(ty, size, r.addressMode);
+        if (!ax || !ay) return border;
+        Block& b = blocks[lvl];
+        if (*ax < b.x0 || *ax >= b.x0 + b.w || *ay < b.y0 || *ay >= b.y0 + b.h) {
+            b.x0 = std::clamp(*ax - 1, 0, std::max(size - 4, 0)), b.y0 = std::clamp(*ay - 1, 0, std::max(size - 4, 0));
+            b.w = std::min(4, size - b.x0), b.h = std::min(4, size - b.y0);
+            b.texels = renderer.viewMoments(view, b.x0, b.y0, b.w, b.h, lvl);
+            if (b.texels.size() != std::size_t(b.w * b.h)) {
+                missing = true;
+                b.w = b.h = 0;
+                return border;
+            }
+        }
+        glm::vec4 value = b.texels[std::size_t(*ay - b.y0) * std::size_t(b.w) + std::size_t(*ax - b.x0)];
+        for (int c = m.channels; c < 4; ++c) value[c] = 0.0f;  // RG storage: only its channels count
+        return value;
+    };
+
+    // Where the GPU reads (float, as moments_lookup.glsl): inside the map, half a texel of the coarser level read
+    // from its edge.
     const float step = 1.0f / float(res);
-    glm::vec2 tex(float(r.lightTexture.x), float(r.lightTexture.y));
-    if (r.insideMap) tex = glm::clamp(tex, glm::vec2(0.5f * step), glm::vec2(1.0f - 0.5f * step));
+    const glm::vec2 lookupTex(float(r.lightTexture.x), float(r.lightTexture.y));
+    const auto readAt = [&](double lambda) {
+        const float edge = 0.5f * step * std::exp2(float(std::ceil(lambda)));
+        return r.insideMap ? glm::clamp(lookupTex, glm::vec2(edge), glm::vec2(1.0f - edge)) : lookupTex;
+    };
+    // One level's bilinear read; `round` rounds the sub-texel weights as the GPU's 8 bits may (1: both down, 2: both
+    // up, 3 / 4: one each way).
+    const auto bilinear = [&](int lvl, const glm::vec2& tex, int round) {
+        const int size = std::max(res >> lvl, 1);
+        const glm::dvec2 u = glm::dvec2(tex) * double(size) - 0.5;
+        const glm::ivec2 i0(int(std::floor(u.x)), int(std::floor(u.y)));
+        glm::dvec2 f = u - glm::dvec2(i0);
+        const auto down = [](double w) { return std::floor(w * 256.0) / 256.0; };
+        const auto up = [](double w) { return std::ceil(w * 256.0) / 256.0; };
+        if (round) f = {round == 1 || round == 3 ? down(f.x) : up(f.x), round == 1 || round == 4 ? down(f.y) : up(f.y)};
+        const glm::vec4 bottom = texelAt(lvl, i0.x, i0.y) * float(1.0 - f.x) + texelAt(lvl, i0.x + 1, i0.y) * float(f.x);
+        const glm::vec4 top = texelAt(lvl, i0.x, i0.y + 1) * float(1.0 - f.x) + texelAt(lvl, i0.x + 1, i0.y + 1) * float(f.x);
+        return bottom * float(1.0 - f.y) + top * float(f.y);
+    };
+    // The trilinear read at level lambda; `levelRound` rounds the levels' weight to 8 bits down (1) or up (2).
+    const auto filteredAt = [&](double lambda, int round, int levelRound) {
+        const int low = int(std::floor(lambda));
+        double frac = lambda - low;
+        if (levelRound == 1) frac = std::floor(frac * 256.0) / 256.0;
+        if (levelRound == 2) frac = std::ceil(frac * 256.0) / 256.0;
+        const glm::vec2 tex = readAt(lambda);
+        const glm::vec4 lower = bilinear(low, tex, round);
+        if (frac <= 0.0 || low >= maxLevel) return lower;
+        return lower * float(1.0 - frac) + bilinear(low + 1, tex, round) * float(frac);
+    };
+
+    // The report's tap: the four texels of the (lower) level read.
     ProbeTap tap;
     tap.bilinear = true;
-    tap.texelCoord = glm::dvec2(tex) * double(res);
-    const glm::dvec2 u = tap.texelCoord - 0.5;
-    const glm::ivec2 i0(int(std::floor(u.x)), int(std::floor(u.y)));
-    const glm::dvec2 f = u - glm::dvec2(i0);
+    {
+        const int lvl = int(std::floor(level));
+        const int size = std::max(res >> lvl, 1);
+        tap.texelCoord = glm::dvec2(readAt(level)) * double(size);
+        const glm::dvec2 u = tap.texelCoord - 0.5;
+        const glm::ivec2 i0(int(std::floor(u.x)), int(std::floor(u.y)));
+        const glm::dvec2 f = u - glm::dvec2(i0);
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                ProbeTexel texel;
+                const std::optional<int> ax = addressTexel(i0.x + dx, size, r.addressMode),
+                                         ay = addressTexel(i0.y + dy, size, r.addressMode);
+                texel.border = !ax || !ay;
+                texel.texel = texel.border ? glm::ivec2(i0.x + dx, i0.y + dy) : glm::ivec2(*ax, *ay);
+                texel.stored = texelAt(lvl, i0.x + dx, i0.y + dy).x;
+                texel.weight = (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y);
+                tap.texels.push_back(texel);
+            }
+    }
 
-    // The 2x2 texels, read back once; outside the map (clamp-to-border) the border depth's moments.
-    const std::optional<int> x0 = addressTexel(i0.x, res, r.addressMode), x1 = addressTexel(i0.x + 1, res, r.addressMode);
-    const std::optional<int> y0 = addressTexel(i0.y, res, r.addressMode), y1 = addressTexel(i0.y + 1, res, r.addressMode);
-    const int minX = std::min(x0.value_or(res), x1.value_or(res)), maxX = std::max(x0.value_or(-1), x1.value_or(-1));
-    const int minY = std::min(y0.value_or(res), y1.value_or(res)), maxY = std::max(y0.value_or(-1), y1.value_or(-1));
-    const int w = maxX >= minX ? maxX - minX + 1 : 0, h = maxY >= minY ? maxY - minY + 1 : 0;
-    const std::vector<glm::vec4> stored = renderer.viewMoments(view, minX, minY, w, h);
-    if (w * h > 0 && stored.empty()) {
+    // The receiver as the moments pass stored depths (near 0, far 1; linear for perspective views).
+    const MomentDepthConvention convention{light.reversedZ, light.perspective, float(light.nearPlane),
+                                           float(light.farPlane)};
+    const float z = momentDepth(float(r.receiverDepth), convention);
+    r.momentDepth = z;
+    const glm::vec4 filtered = filteredAt(level, 0, 0);
+    if (missing) {
         r.error = "no moments stored for " + r.viewName;
         return;
     }
-    const glm::vec4 border = m.encode(settings.sampler.borderDepth, uniforms);
-    glm::vec4 texels[2][2];
-    for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) {
-            const std::optional<int> ax = dx ? x1 : x0, ay = dy ? y1 : y0;
-            ProbeTexel texel;
-            texel.border = !ax || !ay;
-            texel.texel = texel.border ? glm::ivec2(i0.x + dx, i0.y + dy) : glm::ivec2(*ax, *ay);
-            glm::vec4 value = texel.border ? border
-                                           : stored[std::size_t(*ay - minY) * std::size_t(w) + std::size_t(*ax - minX)];
-            for (int c = m.channels; c < 4; ++c) value[c] = 0.0f;  // RG storage: only its channels count
-            texels[dy][dx] = value;
-            texel.stored = value.x;
-            texel.weight = (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y);
-            tap.texels.push_back(texel);
-        }
-
-    // The receiver in the moments' convention (near 0, far 1: reversed-Z maps were flipped by the moments pass).
-    const float z = float(r.reversedZ ? 1.0 - r.receiverDepth : r.receiverDepth);
-    r.momentDepth = z;
-    const auto lookupAt = [&](double fx, double fy) {
-        const glm::vec4 bottom = texels[0][0] * float(1.0 - fx) + texels[0][1] * float(fx);
-        const glm::vec4 top = texels[1][0] * float(1.0 - fx) + texels[1][1] * float(fx);
-        return bottom * float(1.0 - fy) + top * float(fy);
-    };
-    const glm::vec4 filtered = lookupAt(f.x, f.y);
     r.moments = glm::dvec4(filtered);
     const double cone = r.inCone ? 1.0 : 0.0;
     r.shadowCpu = double(m.shadow(filtered, z, uniforms)) * cone;
     r.momentText = m.explain(filtered, z, uniforms);
-    // The GPU weighs texels with 8 sub-texel bits (D3D's rules, llvmpipe): S with each weight rounded either way.
+    // The GPU weighs texels with 8 sub-texel bits (D3D's rules, llvmpipe), and the two levels with 8 bits too: S
+    // with each weight rounded either way. Its level comes from float differences of interpolated positions (and
+    // its quad's derivative may be the coarse one, of the quad's other row): within 1/64 of a level of ours.
     r.shadowLow = r.shadowHigh = r.shadowCpu;
-    for (const double fx : {std::floor(f.x * 256.0) / 256.0, std::ceil(f.x * 256.0) / 256.0})
-        for (const double fy : {std::floor(f.y * 256.0) / 256.0, std::ceil(f.y * 256.0) / 256.0}) {
-            const double s = double(m.shadow(lookupAt(fx, fy), z, uniforms)) * cone;
-            r.shadowLow = std::min(r.shadowLow, s);
-            r.shadowHigh = std::max(r.shadowHigh, s);
-        }
+    std::vector<double> lambdas{level};
+    if (mips && level > 0.0) lambdas = {level, std::max(level - 1.0 / 64.0, 0.0), std::min(level + 1.0 / 64.0, double(maxLevel))};
+    for (const double lambda : lambdas)
+        for (int round = 0; round <= 4; ++round)
+            for (int levelRound = 0; levelRound <= (mips ? 2 : 0); ++levelRound) {
+                const double s = double(m.shadow(filteredAt(lambda, round, levelRound), z, uniforms)) * cone;
+                r.shadowLow = std::min(r.shadowLow, s);
+                r.shadowHigh = std::max(r.shadowHigh, s);
+            }
     // The GPU filters stored values at its own precision (llvmpipe: unorm16 in fixed point): each filtered moment
     // may differ by a couple of storage steps, which MSM's decoding and ill-conditioned bound amplify.
     for (int c = 0; c < m.channels; ++c)
         for (const float sign : {-1.0f, 1.0f}) {
             const float value = filtered[c];
-            const float step = r.filter.momentBits == 32 ? std::abs(value) * 1e-6f
-                               : m.unorm16             ? 2.0f / 65535.0f
-                                                       : std::abs(value) * 2.0f / 1024.0f;
+            const float storageStep = r.filter.momentBits == 32 ? std::abs(value) * 1e-6f
+                                      : m.unorm16               ? 2.0f / 65535.0f
+                                                                : std::abs(value) * 2.0f / 1024.0f;
             glm::vec4 moved = filtered;
-            moved[c] = value + sign * step;
+            moved[c] = value + sign * storageStep;
             const double s = double(m.shadow(moved, z, uniforms)) * cone;
             r.shadowLow = std::min(r.shadowLow, s);
             r.shadowHigh = std::max(r.shadowHigh, s);

@@ -488,7 +488,8 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;
 
     if (momentLookup)
-        probeMomentLookup(r, *renderer_, {view->light, view->kind, view->index}, settings_);
+        probeMomentLookup(r, *renderer_, {view->light, view->kind, view->index}, settings_,
+                          {&light, lookup, fineDerivatives(stats_.cameraViewProjection, r.width, r.height, r.x, r.y, s.v)});
 
     // The bias this surface gets as a caster: its own triangle's slope in the map, r at its largest depth.
     const double slope = windowDepthSlope(window[0], window[1], window[2]);

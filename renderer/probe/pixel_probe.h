@@ -94,7 +94,8 @@ struct PixelProbeReport {
     // words (mean, variance, the bound: the technique's explain).
     bool momentLookup = false;
     glm::dvec4 moments{0.0};
-    double momentDepth = 0.0;
+    double momentDepth = 0.0;   // linear for perspective views (shaders/shadow/linear_depth.glsl)
+    double momentLevel = -1.0;  // filter.momentMips: the mip level read (trilinear), from the pixel's footprint; -1 none
     std::string momentText;
     // A technique with a lookup of its own (PCSS): its search in numbers and words (the taps it then compares are
     // `taps`; none when it found no blocker: S = 1).

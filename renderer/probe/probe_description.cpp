@@ -5,6 +5,7 @@
 #include "settings/settings_fields.h"
 #include "shadow/shadow_map.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace shadowlab {
@@ -84,6 +85,10 @@ void lookupLines(const PixelProbeReport& r, std::vector<std::string>& lines, con
                                         r.taps.empty() ? 0.0 : r.taps[0].texelCoord.x,
                                         r.taps.empty() ? 0.0 : r.taps[0].texelCoord.y, r.moments.x, r.moments.y,
                                         r.moments.z, r.moments.w, r.momentDepth));
+        if (r.momentLevel >= 0.0)
+            lines.push_back(indent + format("  mip level %.3f (the pixel's footprint in the map's texels: trilinear "
+                                            "between levels %d and %d)",
+                                            r.momentLevel, int(r.momentLevel), int(std::ceil(r.momentLevel))));
         lines.push_back(indent + "  " + r.momentText);
         return;
     }

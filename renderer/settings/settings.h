@@ -130,6 +130,7 @@ struct FilterSettings {
     int momentBits = 32;             // 16 or 32-bit float moments (MSM 16: optimized quantization in 16-bit unorm)
     float blurWidth = 5.0f;          // box blur width (1 = none), in blurUnit
     BlurUnit blurUnit = BlurUnit::Texels;
+    bool momentMips = false;         // mip levels of the blurred moments, read trilinearly (distant receivers)
     float minVariance = 1e-6f;       // VSM / EVSM: variance floor (depth units squared; EVSM scales it by the warp)
     float bleedReduction = 0.2f;     // VSM / EVSM / MSM: shadow below this share of light is cut to 0, the rest rescaled
     float positiveExponent = 40.0f;  // EVSM: c+ of exp(c+ d); clamped to what momentBits hold (5.54 / 42)

@@ -594,6 +594,13 @@ std::vector<SettingsField> buildGlobalFields() {
                                     "(the same blur in every cascade: divided by each view's texel size)",
                                     {{BlurUnit::Texels, "texels"}, {BlurUnit::World, "world"}},
                                     [](auto& s) -> auto& { return s.filter.blurUnit; }));
+    f.push_back(tagged(boolField("filter.momentMips",
+                                 "Moments techniques: mip levels of the blurred moments (each level the 2x2 mean of "
+                                 "the one below, built when a view's moments are), read trilinearly at the level of "
+                                 "the pixel's footprint in the map: a distant or grazing receiver averages the texels "
+                                 "it covers instead of picking one (less aliasing and flicker)",
+                                 [](auto& s) -> auto& { return s.filter.momentMips; }),
+                       kVariant));
     f.push_back(inUnit(floatField("filter.minVariance",
                                   "VSM / EVSM: the variance floor of Chebyshev's bound (acne on slopes against "
                                   "softer contacts; EVSM scales it by the warp's slope)",

@@ -31,6 +31,7 @@ std::vector<std::string> MainVariantKey::defines() const {
     const bool moments = filterTechnique(filter).moments != nullptr;
     std::vector<std::string> d = moments ? std::vector<std::string>{"MOMENT_TECHNIQUE"} : filterDefines(filterSettings);
     if (filterTechnique(filter).ownLookup) d.push_back("OWN_LOOKUP");
+    if (moments && momentMips) d.push_back("MOMENT_MIPS");
     switch (view) {
         case ViewMode::Lit: d.push_back("VIEW_LIT"); break;
         case ViewMode::Shadow: d.push_back("VIEW_SHADOW"); break;
@@ -91,6 +92,7 @@ MainVariantKey mainVariantKey(const Settings& effective) {
     key.kernel = s.filter.kind == FilterKind::Pcf ? s.filter.kernel : 0;
     key.view = s.view;
     const FilterTechnique& technique = filterTechnique(s.filter.kind);
+    key.momentMips = technique.moments && s.filter.momentMips;
     std::set<MapGroup> arrays2D, arraysCube;
     for (const LightSettings& light : s.lights) {
         if (!light.enabled) continue;  // the main pass walks enabled lights only

@@ -31,6 +31,7 @@ struct MainVariantKey {
     bool normalOffset = false;  // some casting light offsets its lookup
     bool receiverPlane = false; // some casting directional / spot light uses receiver-plane bias with a filter that
                                 // supports it (RECEIVER_PLANE; each light's flag picks it at run time)
+    bool momentMips = false;    // a moments technique reads its moments' mip levels (MOMENT_MIPS: filter.momentMips)
     // Per draw, from its material (not settings):
     bool alphaMask = false;
     bool alphaTexture = false;

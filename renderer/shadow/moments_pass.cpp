@@ -35,6 +35,12 @@ std::string joined(const std::vector<std::string>& items) {
 
 }  // namespace
 
+int momentLevels(int resolution, bool mips) {
+    int levels = 1;
+    while (mips && (resolution >> levels) > 0) ++levels;
+    return levels;
+}
+
 GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits) {
     const MomentTechnique& m = *technique.moments;
     if (momentBits == 16) return m.channels == 2 ? GL_RG16F : m.unorm16 ? GL_RGBA16 : GL_RGBA16F;
@@ -47,7 +53,7 @@ struct MomentsPass::Storage {
     GLuint depthTexture = 0;
     std::uint64_t depthGeneration = 0;
     GLenum format = 0;
-    int resolution = 0, layers = 0;
+    int resolution = 0, layers = 0, levels = 1;
     std::uint64_t generation = 0;
 };
 
@@ -81,7 +87,8 @@ void MomentsPass::configureSampler(const FilterSettings& filter, const SamplerSe
     if (settings.addressMode == AddressMode::ClampToEdge) wrap = GL_CLAMP_TO_EDGE;
     glSamplerParameteri(s, GL_TEXTURE_WRAP_S, wrap);
     glSamplerParameteri(s, GL_TEXTURE_WRAP_T, wrap);
-    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    // With mips the lookup picks the level itself (textureLod): trilinear between the two around it.
+    glSamplerParameteri(s, GL_TEXTURE_MIN_FILTER, filter.momentMips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glSamplerParameteri(s, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     // Outside the map: the moments of the border depth (sampler.borderDepth, in the near-0 convention moments use).
     const MomentTechnique& m = *filterTechnique(filter.kind).moments;
@@ -104,9 +111,12 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
         it = arrays.count(it->first) ? std::next(it) : storage_.erase(it);
     for (const auto& [group, array] : arrays) {
         Storage& s = storage_[group];
-        if (!s.texture || s.format != format || s.resolution != array.resolution() || s.layers != array.layers()) {
+        const int levels = momentLevels(array.resolution(), filter.momentMips);
+        if (!s.texture || s.format != format || s.resolution != array.resolution() || s.layers != array.layers() ||
+            s.levels != levels) {
             gl::Texture texture = gl::createTexture(group.cube ? GL_TEXTURE_CUBE_MAP_ARRAY : GL_TEXTURE_2D_ARRAY);
-            glTextureStorage3D(texture.id(), 1, format, array.resolution(), array.resolution(), array.layers());
+            glTextureStorage3D(texture.id(), levels, format, array.resolution(), array.resolution(), array.layers());
+            s.levels = levels;
             s.texture = std::move(texture);
             s.format = format;
             s.resolution = array.resolution();
@@ -126,11 +136,6 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
     }
 
     // Which views need new moments: drawn this frame, or computed from other settings or storage.
-    struct Work {
-        const MomentsView* view;
-        double blurTexels;
-        bool settingsChanged;
-    };
     std::vector<Work> work;
     std::vector<std::string> clampedBlur;
     for (const MomentsView& v : views) {
@@ -139,7 +144,8 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
         bool clamped = false;
         const double width = blurTexels(filter, v.texelWorldSize, &clamped);
         if (clamped) clampedBlur.push_back(v.name);
-        const Inputs inputs{filter.kind, filter.momentBits, width, uniforms, s->second.generation, v.layer};
+        const Inputs inputs{filter.kind,  filter.momentBits, width,       uniforms,   s->second.generation,
+                            v.layer,      filter.momentMips, v.perspective, v.nearPlane, v.farPlane};
         const auto it = current_.find(v.id);
         const bool current = it != current_.end() && it->second == inputs;
         if (v.rendered || !current) work.push_back({&v, width, !current && !v.rendered});
@@ -151,7 +157,7 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
                                   " texels are used");
     if (work.empty()) {
         result.moments = {false, "no view was re-rendered and the moments settings are unchanged", std::nullopt};
-        result.blur = {false, result.moments.reason, std::nullopt};
+        result.blur = result.mips = {false, result.moments.reason, std::nullopt};
         return result;
     }
 
@@ -161,9 +167,6 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
         convert = gl::buildProgram({{GL_COMPUTE_SHADER, "moments.comp.glsl", {}}},
                                    {"CONVERT", std::string("MOMENT_FORMAT ") + imageFormatName(format)},
                                    {{"alias:technique", m.glslFile}});
-    auto& blur = blurPrograms_[int(format)];
-    if (!blur) blur = gl::buildProgram({{GL_COMPUTE_SHADER, "moments.comp.glsl", {}}},
-                                       {std::string("MOMENT_FORMAT ") + imageFormatName(format)});
 
     std::vector<std::string> reasons;
     bool anyBlur = false;
@@ -178,6 +181,8 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
         glBindSampler(0, 0);
         glUniform1i(glGetUniformLocation(convert.id(), "uLayer"), v.layer);
         glUniform1i(glGetUniformLocation(convert.id(), "uReversedZ"), v.group.reversedZ ? 1 : 0);
+        glUniform1i(glGetUniformLocation(convert.id(), "uPerspective"), v.perspective ? 1 : 0);
+        glUniform2f(glGetUniformLocation(convert.id(), "uNearFar"), v.nearPlane, v.farPlane);
         glUniform1i(glGetUniformLocation(convert.id(), "uSize"), s.resolution);
         glBindImageTexture(0, s.texture.id(), 0, GL_FALSE, v.layer, GL_WRITE_ONLY, format);
         glDispatchCompute(GLuint((s.resolution + 7) / 8), GLuint((s.resolution + 7) / 8), 1);
@@ -189,10 +194,18 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
     timer.end(TimedPass::Moments);
     result.moments = {true, joined(reasons), timer.latestMilliseconds(TimedPass::Moments)};
 
-    if (!anyBlur) {
-        result.blur = {false, "filter.blurWidth is 1 texel: no blur", std::nullopt};
-        return result;
-    }
+    if (!anyBlur) result.blur = {false, "filter.blurWidth is 1 texel: no blur", std::nullopt};
+    else blurViews(work, format, filter, joined(reasons), timer, result);
+    mipViews(work, format, filter, joined(reasons), timer, result);
+    glUseProgram(0);
+    return result;
+}
+
+void MomentsPass::blurViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,
+                            const std::string& reasons, PassTimer& timer, MomentsPassResult& result) {
+    auto& blur = blurPrograms_[int(format)];
+    if (!blur) blur = gl::buildProgram({{GL_COMPUTE_SHADER, "moments.comp.glsl", {}}},
+                                       {std::string("MOMENT_FORMAT ") + imageFormatName(format)});
     timer.begin(TimedPass::Blur);
     glUseProgram(blur.id());
     for (const Work& w : work) {
@@ -229,18 +242,48 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
     std::snprintf(width, sizeof width, "%g", double(filter.blurWidth));
     result.blur = {true,
                    std::string("filter.blurWidth ") + width +
-                       (filter.blurUnit == BlurUnit::World ? " world units" : " texels") + ": " + joined(reasons),
+                       (filter.blurUnit == BlurUnit::World ? " world units" : " texels") + ": " + reasons,
                    timer.latestMilliseconds(TimedPass::Blur)};
-    glUseProgram(0);
-    return result;
 }
 
-std::vector<glm::vec4> MomentsPass::read(const MapGroup& group, int layer, int x0, int y0, int w, int h) const {
+void MomentsPass::mipViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,
+                           const std::string& reasons, PassTimer& timer, MomentsPassResult& result) {
+    if (!filter.momentMips) {
+        result.mips = {false, "filter.momentMips is off", std::nullopt};
+        return;
+    }
+    auto& mips = mipsPrograms_[int(format)];
+    if (!mips) mips = gl::buildProgram({{GL_COMPUTE_SHADER, "moments.comp.glsl", {}}},
+                                       {"MIPS", std::string("MOMENT_FORMAT ") + imageFormatName(format)});
+    timer.begin(TimedPass::Mips);
+    glUseProgram(mips.id());
+    int levels = 1;
+    for (const Work& w : work) {
+        const Storage& s = storage_.at(w.view->group);
+        levels = s.levels;
+        // Each level from the blurred one below it, written after the level below is complete.
+        for (int level = 1; level < s.levels; ++level) {
+            const int size = std::max(s.resolution >> level, 1);
+            glUniform1i(glGetUniformLocation(mips.id(), "uSize"), size);
+            glBindImageTexture(1, s.texture.id(), level - 1, GL_FALSE, w.view->layer, GL_READ_ONLY, format);
+            glBindImageTexture(0, s.texture.id(), level, GL_FALSE, w.view->layer, GL_WRITE_ONLY, format);
+            glDispatchCompute(GLuint((size + 7) / 8), GLuint((size + 7) / 8), 1);
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+    }
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    timer.end(TimedPass::Mips);
+    result.mips = {true, std::to_string(levels - 1) + " levels below the map: " + reasons,
+                   timer.latestMilliseconds(TimedPass::Mips)};
+}
+
+std::vector<glm::vec4> MomentsPass::read(const MapGroup& group, int layer, int x0, int y0, int w, int h,
+                                         int level) const {
     std::vector<glm::vec4> texels(std::size_t(std::max(w, 0)) * std::size_t(std::max(h, 0)));
     const auto it = storage_.find(group);
     if (it == storage_.end() || texels.empty()) return texels;
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
-    glGetTextureSubImage(it->second.texture.id(), 0, x0, y0, layer, w, h, 1, GL_RGBA, GL_FLOAT,
+    glGetTextureSubImage(it->second.texture.id(), level, x0, y0, layer, w, h, 1, GL_RGBA, GL_FLOAT,
                          GLsizei(texels.size() * sizeof(glm::vec4)), texels.data());
     return texels;
 }

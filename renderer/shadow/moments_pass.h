@@ -2,7 +2,8 @@
 // The moments pass of a moments technique (VSM, EVSM, MSM; shading/filters/): after the shadow pass, each view whose
 // depth map changed (or whose moments settings changed) is converted to the technique's moments and blurred by a
 // separable box of filter.blurWidth, into moments storage of its own, one array per map group (2D layers, cascades,
-// point lights' cube faces). Nothing runs for a depth technique, and nothing for views whose moments are current.
+// point lights' cube faces); with filter.momentMips its mip levels follow. Perspective views (spot, cube faces)
+// store moments of their linear depth (shaders/shadow/linear_depth.glsl). Nothing runs for a depth technique, and nothing for views whose moments are current.
 // Compute shaders: shaders/moments.comp.glsl; its CPU mirror: shading/filters/moments_mirror.h.
 #include "frame/frame_stats.h"
 #include "gl/gl_objects.h"
@@ -39,11 +40,14 @@ struct MomentsView {
     int layer = 0;           // its layer in the group's array (a cube face: 6 x cube + face)
     bool rendered = false;   // the shadow pass drew (or cleared) it this frame
     double texelWorldSize = 0.0;  // for filter.blurUnit world
+    bool perspective = false;     // a spot view or cube face: moments of linear depth between its near and far
+    float nearPlane = 0.0f, farPlane = 1.0f;
 };
 
 struct MomentsPassResult {
     PassStats moments;  // the conversion
     PassStats blur;
+    PassStats mips;  // filter.momentMips: the mip levels of the views converted
     std::vector<std::string> warnings;  // clamps (EVSM exponents, a blur beyond its widest)
 };
 
@@ -68,7 +72,8 @@ public:
     void configureSampler(const FilterSettings& filter, const SamplerSettings& sampler);
 
     // Texels [x0, x0+w) x [y0, y0+h) of a view's moments as stored (row 0 = bottom), read back from the GPU.
-    std::vector<glm::vec4> read(const MapGroup& group, int layer, int x0, int y0, int w, int h) const;
+    // `level`: a mip level (filter.momentMips), its texels.
+    std::vector<glm::vec4> read(const MapGroup& group, int layer, int x0, int y0, int w, int h, int level = 0) const;
     // How many views the last run converted (tests: nothing runs when nothing changed).
     int lastConverted() const { return lastConverted_; }
 
@@ -81,12 +86,25 @@ private:
         glm::vec4 uniforms;
         std::uint64_t storage;  // the moments array's allocation
         int layer;
+        bool mips;
+        bool perspective;
+        float nearPlane, farPlane;
         bool operator==(const Inputs&) const = default;
     };
+    struct Work {
+        const MomentsView* view;
+        double blurTexels;
+        bool settingsChanged;
+    };
+    void blurViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,
+                   const std::string& reasons, PassTimer& timer, MomentsPassResult& result);
+    void mipViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,
+                  const std::string& reasons, PassTimer& timer, MomentsPassResult& result);
     std::map<MapGroup, Storage> storage_;
     std::map<ShadowViewId, Inputs> current_;  // what each view's moments were computed from
     std::map<std::pair<FilterKind, int>, gl::Program> convertPrograms_;
     std::map<int, gl::Program> blurPrograms_;  // by GL internal format
+    std::map<int, gl::Program> mipsPrograms_;  // by GL internal format
     gl::Texture temp_;  // one layer's horizontal blur
     int tempResolution_ = 0;
     GLenum tempFormat_ = 0;
@@ -94,6 +112,8 @@ private:
     int lastConverted_ = 0;
 };
 
+// How many mip levels a moments map of `resolution` has: every level down to 1x1 with filter.momentMips, else 1.
+int momentLevels(int resolution, bool mips);
 // The storage's GL internal format for a technique at filter.momentBits.
 GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits);
 

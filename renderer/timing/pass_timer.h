@@ -10,7 +10,7 @@
 
 namespace shadowlab {
 
-enum class TimedPass { Shadow = 0, Main = 1, DepthBounds = 2, Moments = 3, Blur = 4 };
+enum class TimedPass { Shadow = 0, Main = 1, DepthBounds = 2, Moments = 3, Blur = 4, Mips = 5 };
 enum class TimingSource { GpuQueries, CpuAroundFinish };
 
 class PassTimer {

@@ -179,6 +179,77 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechnique) {
     EXPECT_TRUE(explained);
 }
 
+TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechniqueWithMips) {
+    // filter.momentMips: the GPU reads its moments trilinearly at the level of the pixel's footprint (dFdxFine /
+    // dFdyFine of the position, carried into the map); the mirror takes the same derivatives from the surface's plane
+    // at the quad neighbours' pixel centres (probe/pixel_footprint.h). Exact equality is impossible: the GPU's
+    // derivative is a float difference of interpolated positions and its level and sub-texel weights have 8
+    // fractional bits, so the mirror bounds S over its level +-1/64 and both roundings of each weight. Every pixel
+    // parity of the quads is probed (step 3); the 1024^2 map is minified here (levels 1-3), so mips are read.
+    const Scene scene = loadBuiltin("textbook");
+    const Settings base = loadShippedPreset("default");
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
+        for (int bits : {16, 32}) {
+            Settings s = withFilter(base, kind, 3, 1024);
+            s.filter.momentBits = bits;
+            s.filter.momentMips = true;
+            const Sweep sw = sweep(scene, s, 240, 135, 3);
+            SCOPED_TRACE(std::string(filterTechnique(kind).name) + " " + std::to_string(bits) + " with mips");
+            EXPECT_GT(sw.surfaces, 1000);
+            EXPECT_EQ(sw.disagree, 0) << sw.firstDisagreement;
+            EXPECT_GT(sw.partial, 20);
+        }
+    // A point light's cube faces (builtin:room), VSM with mips: the mirror reads a face as a 2D view (clamped to its
+    // edge), the GPU filters a cube map seamlessly across face edges. A read whose coarser level's texels reach a face
+    // edge (within 1.5 of that level's texels; a 1024^2 face's level 8 is 4x4 texels, so walls seen edge-on always
+    // do) differs there; every read that stays inside its face agrees.
+    {
+        Settings room = loadShippedPreset("room");
+        room.filter.kind = FilterKind::Vsm;
+        room.filter.momentMips = true;
+        const Scene roomScene = loadBuiltin("room");
+        Renderer renderer;
+        PixelProbe probe;
+        const Camera camera = cameraFor(room.camera, roomScene, 160.0 / 90.0);
+        ASSERT_EQ(probe.capture(renderer, roomScene, room, camera, 160, 90), "");
+        int probed = 0, inside = 0, insideDisagree = 0, edgeDisagree = 0;
+        std::string first;
+        for (int y = 0; y < 90; y += 3)
+            for (int x = 0; x < 160; x += 3) {
+                const PixelProbeReport r = probe.at(x, y);
+                if (!r.ok || !r.momentLookup) continue;
+                ++probed;
+                const double toEdge = std::min({r.lightTexture.x, 1.0 - r.lightTexture.x, r.lightTexture.y,
+                                                1.0 - r.lightTexture.y}) * r.resolution;
+                const bool inFace = toEdge > 1.5 * std::exp2(std::ceil(r.momentLevel));
+                inside += inFace;
+                if (r.agrees) continue;
+                ++(inFace ? insideDisagree : edgeDisagree);
+                if (inFace && first.empty())
+                    for (const std::string& line : describeProbe(r)) first += line + "\n";
+            }
+        std::printf("room, VSM with mips: %d pixels probed, %d read inside their face (%d disagree), %d disagreements "
+                    "where the read reaches a face edge\n", probed, inside, insideDisagree, edgeDisagree);
+        EXPECT_GT(inside, 1000);
+        EXPECT_EQ(insideDisagree, 0) << first;
+        EXPECT_LE(edgeDisagree, probed / 50);
+    }
+    // The probe names the level it read.
+    Renderer renderer;
+    PixelProbe probe;
+    Settings vsm = withFilter(base, FilterKind::Vsm, 3, 1024);
+    vsm.filter.momentMips = true;
+    const Camera camera = cameraFor(vsm.camera, scene, 160.0 / 90.0);
+    ASSERT_EQ(probe.capture(renderer, scene, vsm, camera, 160, 90), "");
+    double deepest = -1.0;
+    for (int y = 0; y < 90; y += 5)
+        for (int x = 0; x < 160; x += 5) {
+            const PixelProbeReport r = probe.at(x, y);
+            if (r.ok && r.momentLookup) deepest = std::max(deepest, r.momentLevel);
+        }
+    EXPECT_GT(deepest, 1.0) << "a 1024^2 map seen at 160x90 is minified";
+}
+
 TEST_F(PixelProbeTest, ExplainsTheMoireOfAWideKernel) {
     // The default bias before issue 20 (slope 2, no receiver plane) with a 7x7 kernel: the far taps reach 3 texels
     // from the lookup, where the sloped floor's own depth (3 x m) passes its bias (0.8 texels + the normal offset):

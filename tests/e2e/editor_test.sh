@@ -69,7 +69,7 @@ shipped["casters"] = {"excluded": [], "static": [], "dynamic": []}
 shipped["animation"] = {"play": "all", "time": 0.0}
 shipped["reference"] = {"softRays": 256}
 light["size"] = 0.0
-shipped["filter"].update(momentBits=32, blurWidth=5.0, blurUnit="texels", minVariance=1e-06, bleedReduction=0.2,
+shipped["filter"].update(momentBits=32, blurWidth=5.0, blurUnit="texels", momentMips=False, minVariance=1e-06, bleedReduction=0.2,
                          positiveExponent=40.0, negativeExponent=5.0, momentBias=3e-05, blockerSearchTexels=16.0,
                          penumbraMaxTexels=16.0)
 light["projection"].update(fit="scene", cascadeCount=4, splitLambda=0.75, splits=[0.0, 0.0, 0.0],

@@ -49,6 +49,12 @@ TEST(EditorMoments, TheFilterComboOffersEveryTechniqueAndShowsOnlyTheChosenOnesK
     h.ctrlClick("filter.bleedReduction");
     h.selectAllAndType("0.3");
     EXPECT_FLOAT_EQ(h.state().settings.filter.bleedReduction, 0.3f);
+    // Its mips: a checkbox (filter.momentMips), and the Stats panel's mips cost line follows.
+    ASSERT_TRUE(h.reveal("filter.momentMips"));
+    h.click("filter.momentMips");
+    h.frame(2);
+    EXPECT_TRUE(h.state().settings.filter.momentMips);
+    EXPECT_TRUE(h.state().stats.mipsPass.ran) << h.state().stats.mipsPass.reason;
 }
 
 TEST(EditorMoments, TheMapViewerShowsEachStoredMomentWithItsRangeLightAndView) {

@@ -65,19 +65,30 @@ TEST_F(MomentsPassTest, StoredMomentsEqualTheCpuMirrorForEveryTechniqueAndPrecis
     const Scene scene = loadBuiltin("textbook");
     for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
         for (int bits : {16, 32})
-            for (bool reversed : {false, true}) {
+            for (bool reversed : {false, true})
+            for (bool spot : {false, true}) {
                 Settings s = withTechnique(loadShippedPreset("default"), kind, bits, 128);
                 s.lights[0].shadow.reversedZ = reversed;
+                if (spot) {  // a perspective view: moments of its linear depth
+                    s.lights[0].type = LightType::Spot;
+                    s.lights[0].position = glm::vec3(3.0f, 6.0f, 2.0f);
+                    s.lights[0].direction = glm::vec3(-0.5f, -1.0f, -0.4f);
+                    s.lights[0].spotConeDeg = 120.0f;
+                }
                 s.filter.blurWidth = 4.5f;  // fractional ends
                 s.filter.positiveExponent = 30.0f;  // clamped at 16 bits
                 Renderer renderer;
                 const View v = renderView(renderer, scene, s, 64, 48);
                 ASSERT_TRUE(v.stats.ok) << v.stats.error;
                 const FilterTechnique& t = filterTechnique(kind);
-                SCOPED_TRACE(std::string(t.name) + " " + std::to_string(bits) + (reversed ? " reversed-Z" : ""));
+                SCOPED_TRACE(std::string(t.name) + " " + std::to_string(bits) + (reversed ? " reversed-Z" : "") +
+                             (spot ? " spot" : ""));
                 const ShadowMap& map = renderer.shadowMap();
                 const std::vector<glm::vec4> gpu = renderer.viewMoments(ShadowViewId{0}, 0, 0, 128, 128);
-                const std::vector<glm::vec4> cpu = momentsOfDepth(map.readDepth(), 128, reversed, s.filter, 4.5);
+                const LightSpace& space = v.stats.views.at(0).space;
+                ASSERT_EQ(space.perspective, spot);
+                const MomentDepthConvention convention{reversed, spot, float(space.nearPlane), float(space.farPlane)};
+                const std::vector<glm::vec4> cpu = momentsOfDepth(map.readDepth(), 128, convention, s.filter, 4.5);
                 ASSERT_EQ(gpu.size(), cpu.size());
                 int off = 0;
                 double worst = 0.0;
@@ -94,6 +105,69 @@ TEST_F(MomentsPassTest, StoredMomentsEqualTheCpuMirrorForEveryTechniqueAndPrecis
                 for (const glm::vec4& m : gpu) anyFinite = anyFinite && std::isfinite(m.x) && std::isfinite(m.y);
                 EXPECT_TRUE(anyFinite);
             }
+}
+
+TEST_F(MomentsPassTest, PerspectiveViewsStoreLinearDepthBetweenNearAndFar) {
+    // A spot light straight down over open floor (only the floor in its 30-degree cone): every texel's stored first
+    // moment (VSM: the depth itself) is the floor's distance along the axis, 6, normalised by near and far, not its
+    // window depth (which crowds near 1).
+    const Scene scene = loadBuiltin("textbook");
+    Settings s = withTechnique(loadShippedPreset("default"), FilterKind::Vsm, 32, 128);
+    s.lights[0].type = LightType::Spot;
+    s.lights[0].position = glm::vec3(5.0f, 6.0f, 5.0f);
+    s.lights[0].direction = glm::vec3(0.0f, -1.0f, 0.0f);
+    s.lights[0].spotConeDeg = 30.0f;
+    s.filter.blurWidth = 1.0f;
+    Renderer renderer;
+    const View v = renderView(renderer, scene, s, 64, 48);
+    ASSERT_TRUE(v.stats.ok) << v.stats.error;
+    const LightSpace& space = v.stats.views.at(0).space;
+    ASSERT_TRUE(space.perspective);
+    const double expected = (6.0 - space.nearPlane) / (space.farPlane - space.nearPlane);
+    for (const glm::ivec2 texel : {glm::ivec2(0, 0), glm::ivec2(64, 64), glm::ivec2(127, 20)}) {
+        const glm::vec4 m = renderer.viewMoments(ShadowViewId{0}, texel.x, texel.y, 1, 1).at(0);
+        EXPECT_NEAR(m.x, expected, 1e-3) << "texel " << texel.x << "," << texel.y << " near " << space.nearPlane
+                                         << " far " << space.farPlane;
+        EXPECT_NEAR(m.y, m.x * m.x, 1e-5);
+    }
+}
+
+TEST_F(MomentsPassTest, MipLevelsAreBuiltOnlyWhenAskedAndOnlyWhenTheMomentsChangedAndEqualTheCpuMirror) {
+    const Scene scene = loadBuiltin("textbook");
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Msm})
+        for (int bits : {16, 32}) {
+            Settings s = withTechnique(loadShippedPreset("default"), kind, bits, 128);
+            SCOPED_TRACE(std::string(filterTechnique(kind).name) + " " + std::to_string(bits));
+            Renderer renderer;
+            View v = renderView(renderer, scene, s, 64, 48);
+            EXPECT_FALSE(v.stats.mipsPass.ran);
+            EXPECT_NE(v.stats.mipsPass.reason.find("filter.momentMips is off"), std::string::npos);
+            s.filter.momentMips = true;
+            v = renderView(renderer, scene, s, 64, 48);
+            ASSERT_TRUE(v.stats.ok) << v.stats.error;
+            EXPECT_TRUE(v.stats.mipsPass.ran);
+            EXPECT_NE(v.stats.mipsPass.reason.find("7 levels below the map"), std::string::npos) << v.stats.mipsPass.reason;
+            // Each level from the GPU's level below (the mean of 2x2, stored at the precision), down to 1x1.
+            for (int level = 1, size = 64; size >= 1; ++level, size /= 2) {
+                const std::vector<glm::vec4> below = renderer.viewMoments(ShadowViewId{0}, 0, 0, 2 * size, 2 * size, level - 1);
+                const std::vector<glm::vec4> gpu = renderer.viewMoments(ShadowViewId{0}, 0, 0, size, size, level);
+                const std::vector<glm::vec4> cpu = momentsMipLevel(below, 2 * size, s.filter);
+                ASSERT_EQ(gpu.size(), cpu.size());
+                int off = 0;
+                for (std::size_t i = 0; i < cpu.size(); ++i)
+                    for (int c = 0; c < filterTechnique(kind).moments->channels; ++c)
+                        off += std::abs(gpu[i][c] - cpu[i][c]) > (bits == 16 ? 1e-3f * std::abs(cpu[i][c]) + 2.0f / 65535.0f
+                                                                             : 1e-6f * std::abs(cpu[i][c]) + 1e-7f);
+                EXPECT_EQ(off, 0) << "level " << level;
+            }
+            // Nothing changed: no moments, no mips.
+            v = renderView(renderer, scene, s, 64, 48);
+            EXPECT_FALSE(v.stats.mipsPass.ran) << v.stats.mipsPass.reason;
+            // A light move: the map, its moments and their mips again.
+            s.lights[0].direction.x += 0.05f;
+            v = renderView(renderer, scene, s, 64, 48);
+            EXPECT_TRUE(v.stats.mipsPass.ran);
+        }
 }
 
 TEST_F(MomentsPassTest, EvsmAtTheLargestExponentStoresNoInfOrNan) {

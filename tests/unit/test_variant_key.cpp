@@ -14,7 +14,8 @@ namespace {
 
 // Light sets in which each variant key can show: two 2D casters of one size (a size or format change splits their
 // array), a PCF filter (kernel, receiver plane), a cascaded sun as light 0 or light 1 (the cascade count), and the
-// same without any light's normal offset or receiver-plane bias (so one light's turns the define on).
+// same without any light's normal offset or receiver-plane bias (so one light's turns the define on), and a moments
+// technique (its mips).
 std::vector<Settings> lightSets() {
     Settings a;
     a.filter.kind = FilterKind::Pcf;
@@ -37,6 +38,9 @@ std::vector<Settings> lightSets() {
         }
         sets.push_back(plain);
     }
+    Settings moments = a;  // a moments technique (filter.momentMips)
+    moments.filter.kind = FilterKind::Vsm;
+    sets.push_back(moments);
     return sets;
 }
 

@@ -51,6 +51,8 @@ void techniqueKey(EditorState& state, const char* key) {
     const SettingsField* field = findSettingsField(key);
     if (field && field->kind == SettingsFieldKind::Float)
         dragFloatField(state, key, label.c_str(), 0.01f);  // a new technique's key without a slider range above
+    else if (field && field->kind == SettingsFieldKind::Bool)
+        checkboxField(state, key, label.c_str());
     else
         comboField(state, key, label.c_str());  // enums and keys with a list of integers
 }

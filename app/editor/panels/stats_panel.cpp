@@ -117,10 +117,11 @@ void drawStatsPanel(PanelContext& ctx) {
     const FrameStats& shadow = state.lastShadowPass;
     passLine("shadow pass", s.shadowPass, shadow.shadowPass, clock);
     passLine("main pass", s.mainPass, s.mainPass, clock);
-    // A moments technique's own cost lines: the conversion and the blur (they run only when a view's map changed).
+    // A moments technique's own cost lines: the conversion, the blur and the mips (they run only when a view's map changed).
     if (filterTechnique(state.settings.filter.kind).moments) {
         passLine("moments", s.momentsPass, s.momentsPass, clock);
         passLine("blur", s.blurPass, s.blurPass, clock);
+        if (state.settings.filter.momentMips) passLine("mips", s.mipsPass, s.mipsPass, clock);
     }
     if (const FilterTechnique& t = filterTechnique(state.settings.filter.kind); t.cost)
         ImGui::TextWrapped("%s", t.cost(state.settings.filter).c_str());  // its lookup's share of the main pass

@@ -16,7 +16,7 @@ FilterTechnique momentsFilter(FilterKind kind, const char* name, std::initialize
                                                                                    : kMaxBlurTexels;
                           return (width - 1.0) / 2.0 + 1.0;
                       }};
-    t.keys = {"filter.momentBits", "filter.blurWidth", "filter.blurUnit"};
+    t.keys = {"filter.momentBits", "filter.blurWidth", "filter.blurUnit", "filter.momentMips"};
     t.keys.insert(t.keys.end(), ownKeys);
     t.moments = &moments;
     return t;

@@ -18,14 +18,23 @@ glm::vec4 storedMoments(const glm::vec4& value, const MomentTechnique& technique
     return out;
 }
 
-std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resolution, bool reversedZ,
-                                      const FilterSettings& filter, double blurWidthTexels) {
+float momentDepth(float window, const MomentDepthConvention& c) {
+    if (!c.perspective) return c.reversedZ ? 1.0f - window : window;
+    const float n = c.nearPlane, f = c.farPlane;
+    const float distance = c.reversedZ ? n * f / (n + window * (f - n))
+                                       : 2.0f * f * n / ((f + n) - (2.0f * window - 1.0f) * (f - n));
+    return (distance - n) / (f - n);
+}
+
+std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resolution,
+                                      const MomentDepthConvention& convention, const FilterSettings& filter,
+                                      double blurWidthTexels) {
     const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
     const glm::vec4 uniforms = technique.uniforms(filter);
     const int bits = filter.momentBits;
     std::vector<glm::vec4> moments(depth.size());
     for (std::size_t i = 0; i < depth.size(); ++i)
-        moments[i] = storedMoments(technique.encode(reversedZ ? 1.0f - depth[i] : depth[i], uniforms), technique, bits);
+        moments[i] = storedMoments(technique.encode(momentDepth(depth[i], convention), uniforms), technique, bits);
     const std::vector<float> weights = blurWeights(blurWidthTexels);
     const int r = int(weights.size() / 2);
     if (r == 0) return moments;
@@ -45,6 +54,24 @@ std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resol
         std::swap(moments, pass);
     }
     return moments;
+}
+
+std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int size, const FilterSettings& filter) {
+    const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
+    const int below = std::max(size / 2, 1);
+    const auto at = [&](int x, int y) {
+        return level[std::size_t(std::min(y, size - 1)) * std::size_t(size) + std::size_t(std::min(x, size - 1))];
+    };
+    std::vector<glm::vec4> out(std::size_t(below) * std::size_t(below));
+    for (int y = 0; y < below; ++y)
+        for (int x = 0; x < below; ++x) {
+            // The shader's order: (a + b) + c + d, then a quarter.
+            glm::vec4 sum = at(2 * x, 2 * y) + at(2 * x + 1, 2 * y);
+            sum += at(2 * x, 2 * y + 1);
+            sum += at(2 * x + 1, 2 * y + 1);
+            out[std::size_t(y) * std::size_t(below) + std::size_t(x)] = storedMoments(sum * 0.25f, technique, filter.momentBits);
+        }
+    return out;
 }
 
 }  // namespace shadowlab

@@ -1,7 +1,8 @@
 #pragma once
-// The moments pass on the CPU, for tests and the probe: a depth layer converted to the technique's moments, stored at
-// its precision, blurred by the box of blurWeights (horizontal, then vertical, edge texels repeated, each result
-// stored at the precision again), as shaders/moments.comp.glsl computes them.
+// The moments pass on the CPU, for tests and the probe: a depth layer converted to the technique's moments (of the
+// depth momentDepth gives), stored at its precision, blurred by the box of blurWeights (horizontal, then vertical,
+// edge texels repeated, each result stored at the precision again), and its mip levels, as shaders/moments.comp.glsl
+// computes them.
 #include "shading/filters/filter_technique.h"
 
 #include <glm/vec4.hpp>
@@ -10,11 +11,28 @@
 
 namespace shadowlab {
 
+// A view's depth convention as the moments pass reads it.
+struct MomentDepthConvention {
+    bool reversedZ = false;
+    bool perspective = false;  // a spot view or cube face: window depth between nearPlane and farPlane
+    float nearPlane = 0.0f, farPlane = 1.0f;
+};
+
+// The depth a moments map stores of a window depth (near 0, far 1): orthographic as is (reversed-Z flipped),
+// perspective the distance along the view's axis normalised by near and far (shaders/shadow/linear_depth.glsl, in
+// float as the GPU computes it).
+float momentDepth(float window, const MomentDepthConvention& convention);
+
 // One value as the storage holds it: fp32 as is, fp16 rounded to half, unorm16 clamped to [0, 1] in 1/65535 steps.
 glm::vec4 storedMoments(const glm::vec4& value, const MomentTechnique& technique, int momentBits);
 
-// `depth`: resolution x resolution stored depths (row 0 = bottom), in the map's convention (reversedZ: near 1).
-std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resolution, bool reversedZ,
-                                      const FilterSettings& filter, double blurWidthTexels);
+// `depth`: resolution x resolution stored depths (row 0 = bottom), in the map's convention.
+std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resolution,
+                                      const MomentDepthConvention& convention, const FilterSettings& filter,
+                                      double blurWidthTexels);
+
+// The mip level below a level of `size` x `size` texels (filter.momentMips): size / 2 (at least 1), each texel the
+// mean of the 2x2 texels under it (an odd size's last row and column are left out), stored at the precision.
+std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int size, const FilterSettings& filter);
 
 }  // namespace shadowlab
