@@ -11,7 +11,7 @@ namespace shadowlab {
 
 namespace {
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finiteVec(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Rodrigues: v rotated by `radians` about the unit `axis`.
 glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double radians) {
@@ -23,7 +23,7 @@ glm::dvec3 rotate(const glm::dvec3& v, const glm::dvec3& axis, double radians) {
 // to infinity, and glm::normalize to zero) and 1e-300,0,0 (whose length underflows) are both the unit X axis.
 // Zero for a zero or non-finite vector.
 glm::dvec3 unitDirection(const glm::dvec3& v) {
-    if (!finite(v)) return glm::dvec3(0.0);
+    if (!finiteVec(v)) return glm::dvec3(0.0);
     const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
     if (!(largest > 0.0)) return glm::dvec3(0.0);
     return glm::normalize(v / largest);

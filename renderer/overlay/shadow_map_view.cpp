@@ -8,7 +8,7 @@ namespace shadowlab {
 
 namespace {
 
-constexpr GLuint kDepthUnit = 0;
+constexpr GLuint kViewerDepthUnit = 0;
 constexpr GLuint kMomentsUnit = 1;
 
 int momentChannels(GLenum format) { return format == GL_RG16F || format == GL_RG32F ? 2 : 4; }
@@ -161,8 +161,8 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
     glUniform1i(u.reversedZ, light.reversedZ ? 1 : 0);
     glUniform1f(u.gridTexelPixels, gridShown_ ? float(pixelsPerTexel) : 0.0f);
     glUniform1i(u.channel, channel);
-    glBindTextureUnit(kDepthUnit, map.texture());
-    glBindSampler(kDepthUnit, rawSampler_.id());
+    glBindTextureUnit(kViewerDepthUnit, map.texture());
+    glBindSampler(kViewerDepthUnit, rawSampler_.id());
     if (channel > 0) {
         glBindTextureUnit(kMomentsUnit, momentsView_.id());
         glBindSampler(kMomentsUnit, rawSampler_.id());
@@ -170,7 +170,7 @@ std::string ShadowMapView::render(const ShadowMap& map, const LightSpace& light,
     glBindVertexArray(emptyVertexArray_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
-    glBindSampler(kDepthUnit, 0);
+    glBindSampler(kViewerDepthUnit, 0);
     glBindSampler(kMomentsUnit, 0);
     glBindTextureUnit(kMomentsUnit, 0);
     glUseProgram(0);

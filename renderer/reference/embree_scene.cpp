@@ -43,7 +43,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point start) {
+double elapsedMsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
@@ -254,7 +254,7 @@ EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin, const std
     ++topCommits_;
     if (const RTCError error = rtcGetDeviceError(device); error != RTC_ERROR_NONE)
         throw std::runtime_error("Embree: building the BVH failed (error " + std::to_string(int(error)) + ")");
-    buildMs_ = msSince(start);
+    buildMs_ = elapsedMsSince(start);
 }
 
 EmbreeScene::~EmbreeScene() {
@@ -312,7 +312,7 @@ std::size_t EmbreeScene::updateTransforms(const Scene& scene, const glm::dvec3& 
             throw std::runtime_error("Embree: updating the instances failed (error " + std::to_string(int(error)) +
                                      ")");
     }
-    updateMs_ = msSince(start);
+    updateMs_ = elapsedMsSince(start);
     return moved;
 }
 

@@ -1,5 +1,7 @@
 #include "scene/scene_animation.h"
 
+#include "scene/gltf_geometry.h"  // gltf::fitsFloat
+
 #include <glm/ext/quaternion_common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,7 +11,6 @@
 #include <charconv>
 #include <cstdio>
 #include <cmath>
-#include <limits>
 
 namespace shadowlab {
 namespace {
@@ -31,13 +32,6 @@ glm::dvec4 xyzwOf(const glm::dquat& q) { return {q.x, q.y, q.z, q.w}; }
 glm::dvec4 unitQuaternion(const glm::dvec4& v, const glm::dvec4& fallback) {
     const double length = glm::length(v);
     return length > 1e-12 ? v / length : glm::normalize(fallback);
-}
-
-bool fitsFloat(const glm::dmat4& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!(std::abs(m[c][r]) <= double(std::numeric_limits<float>::max()))) return false;
-    return true;
 }
 
 // One channel's value replaces that part of a node's local transform (the others keep the file's).
@@ -159,18 +153,18 @@ void poseScene(Scene& scene, const std::vector<int>& chosen, double time) {
     for (Instance& instance : scene.instances) {
         if (instance.node < 0) continue;  // placed by no recorded node: it stays
         const glm::dmat4& m = world[std::size_t(instance.node)];
-        instance.transform = fitsFloat(m) ? glm::mat4(m) : glm::mat4(0.0f);
+        instance.transform = gltf::fitsFloat(m) ? glm::mat4(m) : glm::mat4(0.0f);
     }
     // Lights and cameras follow their node's pose; one the pose cannot place (no -Z, beyond a float) stays put.
     for (SceneLight& light : scene.lights) {
-        if (light.node < 0 || !fitsFloat(world[std::size_t(light.node)])) continue;
+        if (light.node < 0 || !gltf::fitsFloat(world[std::size_t(light.node)])) continue;
         const NodeFrame frame = nodeFrame(world[std::size_t(light.node)]);
         if (!frame.forward) continue;
         light.position = glm::vec3(frame.position);
         light.direction = glm::vec3(*frame.forward);
     }
     for (SceneCamera& camera : scene.cameras) {
-        if (camera.node < 0 || !fitsFloat(world[std::size_t(camera.node)])) continue;
+        if (camera.node < 0 || !gltf::fitsFloat(world[std::size_t(camera.node)])) continue;
         const NodeFrame frame = nodeFrame(world[std::size_t(camera.node)]);
         if (!frame.forward) continue;
         camera.position = frame.position;
@@ -235,7 +229,7 @@ void extendBoundsOverAnimations(Scene& scene) {
             const Instance& inst = scene.instances[i];
             const Bounds& box = meshBox[std::size_t(inst.mesh)];
             const glm::dmat4& m = world[std::size_t(inst.node)];
-            if (box.empty || !fitsFloat(m)) continue;
+            if (box.empty || !gltf::fitsFloat(m)) continue;
             const double stretch = std::max({glm::length(glm::dvec3(m[0])), glm::length(glm::dvec3(m[1])),
                                              glm::length(glm::dvec3(m[2]))});
             const glm::dvec3 centre(m * glm::dvec4(glm::dvec3(box.center()), 1.0));

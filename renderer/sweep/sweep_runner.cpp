@@ -17,7 +17,7 @@ namespace shadowlab {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point start) {
+double wallMsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
@@ -198,7 +198,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
             played ? played->report : meter.measure(*posed, point.settings, camera, options.width, options.height, progress);
         if (report.cancelled) return std::nullopt;
         if (!report.ok) return report.error;
-        r.measureMs = msSince(measureStart);
+        r.measureMs = wallMsSince(measureStart);
         if (!report.cost.referenceReused) {
             result.referenceMs += report.cost.gbufferMs + report.cost.traceMs + report.cost.bvhBuildMs;
             ++result.references;
@@ -222,7 +222,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
                 partial.points.push_back(*p);
             }
         markParetoFront(partial);
-        partial.wallMs = msSince(start);
+        partial.wallMs = wallMsSince(start);
         partial.ok = true;
         return partial;
     };
@@ -313,7 +313,7 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         return fail("every point failed; the first, " + result.points.front().label + ": " +
                     result.points.front().error);
     markParetoFront(result);
-    result.wallMs = msSince(start);
+    result.wallMs = wallMsSince(start);
     if (progress) {
         progress->fraction = 1.0f;
         progress->setStage("done");
