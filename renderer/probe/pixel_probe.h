@@ -21,6 +21,7 @@ namespace shadowlab {
 // One stored texel a tap compares against.
 struct ProbeTexel {
     glm::ivec2 texel{0};     // after the address mode (row 0 = the map's bottom, as GL stores it); see `border`
+    int face = -1;           // a point light's tap read across a cube edge: the face it reads (-1: the lookup's)
     bool border = false;     // outside the map with clamp-to-border: compared against sampler.borderDepth
                              // (1 - it for reversed-Z)
     double stored = 0.0;     // the depth the map holds there (bias of its caster included), in the map's convention
@@ -167,6 +168,9 @@ private:
     std::vector<std::size_t> viewStats_;     // each one's index into stats_.views
     SurfaceSamples samples_;
     std::vector<float> shadow_;  // row 0 = top
+    // A point light's faces, each read back whole on first use (PCSS's taps cross faces): row 0 = bottom.
+    mutable std::vector<std::vector<float>> cubeFaces_;
+    float cubeDepth(int face, int x, int y) const;
 };
 
 // The texel GL reads for integer coordinate i under the address mode; nullopt = the border (clamp-to-border only).
