@@ -269,7 +269,8 @@ float PixelProbe::cubeDepth(int face, int x, int y) const {
     return texels[std::size_t(y) * std::size_t(res) + std::size_t(x)];
 }
 
-void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool forced, const Surface& s) const {
+void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool forced, const Surface& s,
+                          const OwnLookupResult* search) const {
     const glm::dvec3& p = s.p;
     const glm::dvec3 origin = stats_.renderOrigin;
     const ShadowViewStats* view = &stats_.views[viewStats_[viewIndex]];
@@ -411,7 +412,7 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
                 x = std::clamp(x, x0, x1), y = std::clamp(y, y0, y1);
                 return around[std::size_t(y - y0) * std::size_t(x1 - x0 + 1) + std::size_t(x - x0)];
             };
-            r.search = own->mirror(in, settings_.filter);
+            r.search = search ? *search : own->mirror(in, settings_.filter);
             filterTapList.clear();
             if (!cube)
                 for (const glm::vec2& offset : r.search.taps) filterTapList.push_back({glm::dvec2(offset), true});
@@ -551,9 +552,17 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     r.shadowHigh = high / taps * cone;
     if (r.ownLookup && r.insideMap && r.taps.empty())  // the search found no blocker: lit, no filter
         r.shadowCpu = r.shadowLow = r.shadowHigh = cone;
-    if (r.search.uncertain) {  // a blocker test within rounding: the GPU's search may have ended otherwise
+    if (r.search.uncertain && !r.search.alternativesComplete) {  // a search test within rounding: any outcome
         r.shadowLow = 0.0;
         r.shadowHigh = cone;
+    } else if (r.search.uncertain) {  // the GPU may reach one of the other outcomes listed: S within their bounds too
+        for (const OwnLookupResult& other : r.search.alternatives) {
+            PixelProbeReport alternative;
+            alternative.x = r.x, alternative.y = r.y, alternative.width = r.width, alternative.height = r.height;
+            lookupIn(alternative, viewIndex, forced, s, &other);
+            r.shadowLow = std::min(r.shadowLow, alternative.shadowLow);
+            r.shadowHigh = std::max(r.shadowHigh, alternative.shadowHigh);
+        }
     }
     // Bilinear comparisons weigh texels with the GPU's sub-texel precision (8 bits in D3D's rules and llvmpipe).
     r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;

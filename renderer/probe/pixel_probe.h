@@ -154,7 +154,10 @@ private:
     struct Surface;
     // View `view`'s lookup of the surface: r's view, lookup, taps, bias and S fields. A point light's face follows the
     // lookup (after the normal offset) unless `forced`.
-    void lookupIn(PixelProbeReport& r, std::size_t view, bool forced, const Surface& s) const;
+    // `search`: a technique with a lookup of its own takes this search outcome instead of its mirror's (the other
+    // outcomes rounding allows, each bounded in turn).
+    void lookupIn(PixelProbeReport& r, std::size_t view, bool forced, const Surface& s,
+                  const OwnLookupResult* search = nullptr) const;
 
     GBufferPass gbuffer_;
     RenderTarget target_;

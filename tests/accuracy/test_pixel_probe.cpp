@@ -135,9 +135,11 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForPcss) {
         EXPECT_GT(s.otherFace, 20) << "the sweep covers taps that cross a cube edge";
         // Cube faces have no receiver plane and store perspective depth, which crowds near 1 far from the light: a
         // search tap on the receiver's own surface often reads a depth 2-6 float steps (3e-7) from the receiver's,
-        // within its rounding (depthEps 4.8e-7), so the GPU's search may end either way and the probe bounds S by
-        // [0, 1] there (llvmpipe: 771 of 14400 pixels, 12 more by a texel edge). The rest are compared exactly.
-        EXPECT_LT(s.uncertain, s.surfaces / 10) << "rounding decides too many pixels";
+        // within its rounding (depthEps 4.8e-7), so the GPU's search may end either way (llvmpipe: 771 of 14400
+        // pixels). The mirror lists those outcomes (each doubtful test either way) and the probe bounds S by their
+        // S's: S's bounds still differ at 23 pixels only.
+        EXPECT_GT(s.searchUncertain, 0) << "the sweep covers searches decided within rounding";
+        EXPECT_LT(s.uncertain, s.surfaces / 100) << "rounding decides too many pixels";
         std::printf("pcss point light: %d of %d probed pixels disagree, %d partial, %d read another face, %d uncertain "
                     "(%d in the search)\n",
                     s.disagree, s.surfaces, s.partial, s.otherFace, s.uncertain, s.searchUncertain);

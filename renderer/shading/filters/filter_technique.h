@@ -92,6 +92,10 @@ struct OwnLookupResult {
     float penumbraTexels = 0.0f;  // the estimated penumbra's width
     float radiusTexels = 0.0f;    // the filter's radius (half the penumbra, clamped)
     bool uncertain = false;       // a blocker test within depthEps: rounding may change the search's outcome
+    // When uncertain: the other outcomes the GPU may reach (each with its own taps; no taps: no blocker, S = 1), and
+    // whether they are all of them (only depth tests in doubt, few enough to list); if not, S may be anything.
+    std::vector<OwnLookupResult> alternatives;
+    bool alternativesComplete = false;
     std::string text;
 };
 

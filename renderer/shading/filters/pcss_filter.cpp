@@ -77,6 +77,7 @@ struct SearchRead {
     float stored = 0.0f;
     bool blocks = false;
     bool uncertain = false;
+    bool neighbour = false;  // uncertain because a neighbouring texel may be read (else only the depth test flips)
 };
 
 bool blocksAt(const OwnLookupInput& in, float stored, float receiver) {
@@ -91,13 +92,15 @@ SearchRead read2D(const OwnLookupInput& in, glm::vec2 offsetTexels) {
     const glm::vec2 tap = glm::clamp(in.tex + offsetTexels * texel, lo, hi);
     const glm::vec2 cell(std::floor(tap.x * resolution), std::floor(tap.y * resolution));
     SearchRead out;
+    bool near = false;  // the last read's depths within rounding
     const auto readAt = [&](glm::vec2 at, float& stored) {
         stored = in.storedDepth(-1, int(at.x), int(at.y));
         const float receiver = in.receiver + glm::dot(in.plane, at + 0.5f - in.tex * resolution);
-        out.uncertain = out.uncertain || std::abs(double(stored) - double(receiver)) <= in.depthEps;
+        near = std::abs(double(stored) - double(receiver)) <= in.depthEps;
         return blocksAt(in, stored, receiver);
     };
     out.blocks = readAt(cell, out.stored);
+    out.uncertain = near;
     const glm::vec2 frac = tap * resolution - cell;
     for (int axis = 0; axis < 2; ++axis)
         for (const float step : {-1.0f, 1.0f}) {
@@ -105,8 +108,8 @@ SearchRead read2D(const OwnLookupInput& in, glm::vec2 offsetTexels) {
             glm::vec2 other = cell;
             other[axis] += step;
             float otherStored = 0.0f;
-            if (other[axis] >= 0.0f && other[axis] < resolution && readAt(other, otherStored) != out.blocks)
-                out.uncertain = true;
+            if (other[axis] >= 0.0f && other[axis] < resolution && (readAt(other, otherStored) != out.blocks || near))
+                out.uncertain = out.neighbour = true;
         }
     return out;
 }
@@ -137,8 +140,9 @@ SearchRead readCube(const OwnLookupInput& in, const CubeFaceFrame& frame, glm::v
                                             ? receiver
                                             : faceDepth(in.fromLight, axisOfFace, in.nearPlane, in.farPlane, in.reversedZ);
             const float stored = in.storedDepth(other->face, other->x, other->y);
-            out.uncertain = out.uncertain || blocksAt(in, stored, otherReceiver) != out.blocks ||
-                            std::abs(double(stored) - double(otherReceiver)) <= in.depthEps;
+            if (blocksAt(in, stored, otherReceiver) != out.blocks ||
+                std::abs(double(stored) - double(otherReceiver)) <= in.depthEps)
+                out.uncertain = out.neighbour = true;
         }
     return out;
 }
@@ -152,17 +156,57 @@ OwnLookupResult mirror(const OwnLookupInput& in, const FilterSettings& filter) {
     // 1. Blockers, over the region where the light's cone from the receiver crosses the map.
     const float nearDepth = in.reversedZ ? 1.0f : 0.0f;
     out.searchTexels = std::clamp(0.5f * spread(in, nearDepth), 1.0f, filter.blockerSearchTexels);
-    float blockerSum = 0.0f;
+    std::vector<SearchRead> reads;
     for (const glm::vec2& unit : disk) {
         const glm::vec2 offset = rotateTap(unit, rotation) * out.searchTexels;
-        const SearchRead read = in.cube ? readCube(in, frame, offset) : read2D(in, offset);
-        out.uncertain = out.uncertain || read.uncertain;
-        ++out.searchTaps;
-        if (read.blocks) {
-            blockerSum += read.stored;
-            ++out.blockers;
-        }
+        reads.push_back(in.cube ? readCube(in, frame, offset) : read2D(in, offset));
+        out.uncertain = out.uncertain || reads.back().uncertain;
     }
+    out.searchTaps = int(reads.size());
+
+    // 2. The penumbra from the blockers' mean depth (in the GPU's order); the filter's radius is half of it.
+    // 3. The rotated disk of that radius: the probe compares these taps as every filter's (bilinear).
+    const auto filterOf = [&](std::uint32_t flipped, OwnLookupResult& o) {
+        float blockerSum = 0.0f;
+        for (std::size_t k = 0; k < reads.size(); ++k)
+            if (reads[k].blocks != (((flipped >> k) & 1u) != 0u)) {
+                blockerSum += reads[k].stored;
+                ++o.blockers;
+            }
+        if (o.blockers == 0) return;
+        o.blockerDepth = blockerSum / float(o.blockers);
+        o.penumbraTexels = spread(in, o.blockerDepth);
+        o.radiusTexels = std::clamp(0.5f * o.penumbraTexels, 1.0f, filter.penumbraMaxTexels);
+        for (const glm::vec2& unit : disk) {
+            o.taps.push_back(rotateTap(unit, rotation) * o.radiusTexels);
+            if (in.cube) o.directions.push_back(cubeFaceTap(frame, o.taps.back()));
+        }
+    };
+    filterOf(0u, out);
+
+    // A search test within rounding: the outcomes the GPU may reach instead, when only depth tests are in doubt (each
+    // either way) and few enough to list.
+    std::vector<std::size_t> doubtful;
+    bool listable = true;
+    for (std::size_t k = 0; k < reads.size(); ++k)
+        if (reads[k].uncertain) {
+            listable = listable && !reads[k].neighbour;
+            doubtful.push_back(k);
+        }
+    constexpr std::size_t kMaxDoubtful = 4;
+    out.alternativesComplete = out.uncertain && listable && doubtful.size() <= kMaxDoubtful;
+    if (out.alternativesComplete)
+        for (std::uint32_t subset = 1; subset < (1u << doubtful.size()); ++subset) {
+            std::uint32_t flipped = 0u;
+            for (std::size_t j = 0; j < doubtful.size(); ++j)
+                if ((subset >> j) & 1u) flipped |= 1u << doubtful[j];
+            OwnLookupResult alternative;
+            alternative.searchTexels = out.searchTexels;
+            alternative.searchTaps = out.searchTaps;
+            filterOf(flipped, alternative);
+            out.alternatives.push_back(std::move(alternative));
+        }
+
     char text[320];
     if (out.blockers == 0) {
         std::snprintf(text, sizeof text,
@@ -171,17 +215,6 @@ OwnLookupResult mirror(const OwnLookupInput& in, const FilterSettings& filter) {
                       double(out.searchTexels), double(in.lightSize), out.searchTaps, double(in.receiver));
         out.text = text;
         return out;
-    }
-
-    // 2. The penumbra from the blockers' mean depth; the filter's radius is half of it.
-    out.blockerDepth = blockerSum / float(out.blockers);
-    out.penumbraTexels = spread(in, out.blockerDepth);
-    out.radiusTexels = std::clamp(0.5f * out.penumbraTexels, 1.0f, filter.penumbraMaxTexels);
-
-    // 3. The rotated disk of that radius: the probe compares these taps as every filter's (bilinear).
-    for (const glm::vec2& unit : disk) {
-        out.taps.push_back(rotateTap(unit, rotation) * out.radiusTexels);
-        if (in.cube) out.directions.push_back(cubeFaceTap(frame, out.taps.back()));
     }
     std::snprintf(text, sizeof text,
                   "PCSS: blocker search radius %.3g texels (light size %.4g): %d of %d taps nearer than the receiver "
