@@ -6,6 +6,7 @@
 #include "settings/settings_fields.h"
 
 #include "shading/filter_taps.h"
+#include "shading/filters/cube_face_frame.h"
 #include "shading/filters/filter_technique.h"
 #include "views/view_select.h"
 
@@ -92,6 +93,7 @@ std::string PixelProbe::capture(Renderer& renderer, const Scene& scene, const Se
         return error;
     glUseProgram(0);  // a host that saves and restores the current program (ImGui's backend) never holds ours
     renderer_ = &renderer;
+    cubeFaces_.clear();
     scene_ = &scene;
     settings_ = settings;
     lightIndex_ = lightIndex;
@@ -251,7 +253,24 @@ PixelProbeReport PixelProbe::at(int x, int y, const AccuracyReport* measured, st
     return r;
 }
 
-void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool forced, const Surface& s) const {
+float PixelProbe::cubeDepth(int face, int x, int y) const {
+    if (cubeFaces_.empty()) cubeFaces_.resize(6);
+    std::vector<float>& texels = cubeFaces_[std::size_t(face)];
+    int res = 0;
+    for (std::size_t v : viewStats_) {
+        const ShadowViewStats& view = stats_.views[v];
+        if (view.face != face) continue;
+        res = view.resolution;
+        if (texels.empty())
+            if (const ShadowMap* map = renderer_->viewMap({view.light, view.kind, view.index}))
+                texels = readShadowMapRect(*map, 0, 0, res, res);
+    }
+    if (texels.size() != std::size_t(res) * std::size_t(res) || res == 0) return 1.0f;
+    return texels[std::size_t(y) * std::size_t(res) + std::size_t(x)];
+}
+
+void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool forced, const Surface& s,
+                          const OwnLookupResult* search) const {
     const glm::dvec3& p = s.p;
     const glm::dvec3 origin = stats_.renderOrigin;
     const ShadowViewStats* view = &stats_.views[viewStats_[viewIndex]];
@@ -345,6 +364,13 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     // A moments technique reads one bilinear lookup of moments instead of comparing taps (probeMomentLookup below).
     const bool momentLookup = filterTechnique(r.filter.kind).moments != nullptr;
     std::vector<FilterTap> filterTapList = momentLookup ? std::vector<FilterTap>{} : filterTaps(settings_.filter);
+    // A point light's taps of a technique with a lookup of its own: each one's direction from the light selects the
+    // face it is compared in (cube_face_frame.h), as the GPU's shadowCube.
+    struct CubeTap {
+        glm::vec2 offset;
+        glm::vec3 direction;
+    };
+    std::vector<CubeTap> cubeTaps;
     // A technique with a lookup of its own (PCSS) searches the map first; its mirror gives the taps it compares.
     if (const OwnLookup* own = filterTechnique(r.filter.kind).ownLookup; own && faceMap) {
         r.ownLookup = true;
@@ -360,28 +386,38 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
             in.nearPlane = float(light.nearPlane);
             in.farPlane = float(light.farPlane);
             const glm::dvec3 ray = light.perspective ? glm::normalize(lookup - light.position) : light.direction;
-            // A point light's shader measures the receiver along its face's axis; a spot's from its depth (0).
-            const glm::dvec3 axisDistances = glm::abs(lookup - light.position);
-            if (cube) in.distance = float(std::max({axisDistances.x, axisDistances.y, axisDistances.z}));
+            // A point light's shader measures the receiver along its face's axis (its frame's `major`, in float);
+            // a spot's from its depth (0).
+            in.cube = cube;
+            in.fromLight = glm::vec3(lookup) - glm::vec3(light.position);
+            if (cube) in.distance = cubeFaceFrame(in.fromLight, 1.0f / float(res)).major;
             in.depthPerWorld = float(toLightTexture(light, lookup + ray).z - r.lightTexture.z);
             in.texelWorld = float(light.perspective ? 2.0 * light.tanHalfFov / res : light.texelWorldSize);
             in.lightSize = lightSpread(probed);
             in.pixel = glm::uvec2(unsigned(r.x), unsigned(r.height - 1 - r.y));
             in.depthEps = depthEps;
             in.texelEps = texelEps;
-            // The search's texels, read back once around the lookup (its widest radius, and a texel of rounding).
-            const int reach = int(std::ceil(settings_.filter.blockerSearchTexels)) + 2;
+            // The search's texels, read back once around the lookup (its widest radius: the search's largest times
+            // the disk's farthest tap, and a texel of rounding). A cube's taps read whole faces (cubeDepth).
+            float farthest = 0.0f;
+            for (const glm::vec2& unit : filterTechnique(r.filter.kind).unitTaps(settings_.filter))
+                farthest = std::max(farthest, glm::length(unit));
+            const int reach = cube ? 0 : int(std::ceil(settings_.filter.blockerSearchTexels * farthest)) + 2;
             const int cx = int(std::floor(r.texelCoord.x)), cy = int(std::floor(r.texelCoord.y));
             const int x0 = std::clamp(cx - reach, 0, res - 1), y0 = std::clamp(cy - reach, 0, res - 1);
             const int x1 = std::clamp(cx + reach, 0, res - 1), y1 = std::clamp(cy + reach, 0, res - 1);
             const std::vector<float> around = readShadowMapRect(*faceMap, x0, y0, x1 - x0 + 1, y1 - y0 + 1);
-            in.storedDepth = [&](int x, int y) {
+            in.storedDepth = [&](int face, int x, int y) {
+                if (face >= 0) return cubeDepth(face, x, y);
                 x = std::clamp(x, x0, x1), y = std::clamp(y, y0, y1);
                 return around[std::size_t(y - y0) * std::size_t(x1 - x0 + 1) + std::size_t(x - x0)];
             };
-            r.search = own->mirror(in, settings_.filter);
+            r.search = search ? *search : own->mirror(in, settings_.filter);
             filterTapList.clear();
-            for (const glm::vec2& offset : r.search.taps) filterTapList.push_back({glm::dvec2(offset), true});
+            if (!cube)
+                for (const glm::vec2& offset : r.search.taps) filterTapList.push_back({glm::dvec2(offset), true});
+            for (std::size_t k = 0; k < r.search.directions.size(); ++k)
+                cubeTaps.push_back({r.search.taps[k], r.search.directions[k]});
         }
     }
     for (const FilterTap& tap : filterTapList) {
@@ -473,6 +509,42 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
         anyBilinear = anyBilinear || t.bilinear;
         sum += t.value, low += t.low, high += t.high;
     }
+    // Cube taps (bilinear, seamless: the 2x2 texels beyond a face's edge are the neighbouring face's), each compared
+    // with the receiver's depth in the face its direction selects, in float as cube_face_depth.glsl's faceDepth.
+    const glm::vec3 fromLightF = glm::vec3(lookup) - glm::vec3(light.position);
+    for (const CubeTap& cubeTap : cubeTaps) {
+        ProbeTap t;
+        t.offsetTexels = glm::dvec2(cubeTap.offset);
+        t.bilinear = true;
+        const CubeCoordinate c = cubeCoordinate(glm::dvec3(cubeTap.direction));
+        t.texelCoord = c.st * double(res);
+        const float faceReceiver =
+            faceDepth(fromLightF, cubeTap.direction, float(light.nearPlane), float(light.farPlane), light.reversedZ);
+        const double receiver = light.clampToFar(double(faceReceiver));
+        const glm::dvec2 u = t.texelCoord - 0.5;
+        const glm::dvec2 i0 = glm::floor(u), w1 = u - i0;
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                ProbeTexel texel;
+                texel.weight = (dx ? w1.x : 1.0 - w1.x) * (dy ? w1.y : 1.0 - w1.y);
+                const std::optional<CubeTexel> at = seamlessTexel(c.face, int(i0.x) + dx, int(i0.y) + dy, res);
+                // A corner beyond both edges: the implementation's choice, so either answer.
+                texel.uncertain = !at;
+                texel.face = at ? at->face : c.face;
+                texel.texel = at ? glm::ivec2(at->x, at->y) : glm::ivec2(int(i0.x) + dx, int(i0.y) + dy);
+                texel.stored = at ? double(cubeDepth(at->face, at->x, at->y)) : receiver;
+                texel.lit = light.litBy(receiver, texel.stored);
+                texel.uncertain = texel.uncertain || std::abs(receiver - texel.stored) <= depthEps;
+                t.value += texel.weight * (texel.lit ? 1.0 : 0.0);
+                t.low += texel.weight * (texel.lit && !texel.uncertain ? 1.0 : 0.0);
+                t.high += texel.weight * (texel.lit || texel.uncertain ? 1.0 : 0.0);
+                r.uncertainComparisons += texel.uncertain ? 1 : 0;
+                t.texels.push_back(texel);
+            }
+        anyBilinear = true;
+        sum += t.value, low += t.low, high += t.high;
+        r.taps.push_back(std::move(t));
+    }
     const double taps = double(std::max<std::size_t>(r.taps.size(), 1));
     const double cone = r.inCone ? 1.0 : 0.0;
     r.shadowCpu = sum / taps * cone;
@@ -480,9 +552,17 @@ void PixelProbe::lookupIn(PixelProbeReport& r, std::size_t viewIndex, bool force
     r.shadowHigh = high / taps * cone;
     if (r.ownLookup && r.insideMap && r.taps.empty())  // the search found no blocker: lit, no filter
         r.shadowCpu = r.shadowLow = r.shadowHigh = cone;
-    if (r.search.uncertain) {  // a blocker test within rounding: the GPU's search may have ended otherwise
+    if (r.search.uncertain && !r.search.alternativesComplete) {  // a search test within rounding: any outcome
         r.shadowLow = 0.0;
         r.shadowHigh = cone;
+    } else if (r.search.uncertain) {  // the GPU may reach one of the other outcomes listed: S within their bounds too
+        for (const OwnLookupResult& other : r.search.alternatives) {
+            PixelProbeReport alternative;
+            alternative.x = r.x, alternative.y = r.y, alternative.width = r.width, alternative.height = r.height;
+            lookupIn(alternative, viewIndex, forced, s, &other);
+            r.shadowLow = std::min(r.shadowLow, alternative.shadowLow);
+            r.shadowHigh = std::max(r.shadowHigh, alternative.shadowHigh);
+        }
     }
     // Bilinear comparisons weigh texels with the GPU's sub-texel precision (8 bits in D3D's rules and llvmpipe).
     r.tolerance = (anyBilinear ? 2.0 / 256.0 : 0.0) + 1e-6;

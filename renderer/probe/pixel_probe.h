@@ -21,6 +21,7 @@ namespace shadowlab {
 // One stored texel a tap compares against.
 struct ProbeTexel {
     glm::ivec2 texel{0};     // after the address mode (row 0 = the map's bottom, as GL stores it); see `border`
+    int face = -1;           // a point light's tap read across a cube edge: the face it reads (-1: the lookup's)
     bool border = false;     // outside the map with clamp-to-border: compared against sampler.borderDepth
                              // (1 - it for reversed-Z)
     double stored = 0.0;     // the depth the map holds there (bias of its caster included), in the map's convention
@@ -154,7 +155,10 @@ private:
     struct Surface;
     // View `view`'s lookup of the surface: r's view, lookup, taps, bias and S fields. A point light's face follows the
     // lookup (after the normal offset) unless `forced`.
-    void lookupIn(PixelProbeReport& r, std::size_t view, bool forced, const Surface& s) const;
+    // `search`: a technique with a lookup of its own takes this search outcome instead of its mirror's (the other
+    // outcomes rounding allows, each bounded in turn).
+    void lookupIn(PixelProbeReport& r, std::size_t view, bool forced, const Surface& s,
+                  const OwnLookupResult* search = nullptr) const;
 
     GBufferPass gbuffer_;
     RenderTarget target_;
@@ -168,6 +172,9 @@ private:
     std::vector<std::size_t> viewStats_;     // each one's index into stats_.views
     SurfaceSamples samples_;
     std::vector<float> shadow_;  // row 0 = top
+    // A point light's faces, each read back whole on first use (PCSS's taps cross faces): row 0 = bottom.
+    mutable std::vector<std::vector<float>> cubeFaces_;
+    float cubeDepth(int face, int x, int y) const;
 };
 
 // The texel GL reads for integer coordinate i under the address mode; nullopt = the border (clamp-to-border only).

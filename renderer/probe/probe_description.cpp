@@ -1,5 +1,6 @@
 #include "probe/probe_description.h"
 
+#include "light/light_space.h"
 #include "shading/filters/filter_technique.h"
 
 #include "settings/settings_fields.h"
@@ -119,7 +120,9 @@ std::string describeTap(const PixelProbeReport& r, const ProbeTap& t) {
                               t.texelCoord.x, t.texelCoord.y);
     for (std::size_t k = 0; k < t.texels.size(); ++k) {
         const ProbeTexel& x = t.texels[k];
-        line += format("%s%s[%d,%d] %.9g %s%s", k ? "; " : "", x.border ? "border" : "", x.texel.x, x.texel.y,
+        const bool otherFace = x.face >= 0 && x.face != r.face;
+        line += format("%s%s%s%s[%d,%d] %.9g %s%s", k ? "; " : "", x.border ? "border" : "",
+                       otherFace ? cubeFaces()[std::size_t(x.face)].name : "", otherFace ? " " : "", x.texel.x, x.texel.y,
                        x.stored, x.lit ? "lit" : "shadow", x.uncertain ? "?" : "");
         if (t.bilinear) line += format(" w%.3f", x.weight);
         line += format(" (%+.3g)", x.stored - r.receiverDepth);
@@ -213,9 +216,11 @@ nlohmann::json probeToJson(const PixelProbeReport& r) {
     nlohmann::json taps = nlohmann::json::array();
     for (const ProbeTap& t : r.taps) {
         nlohmann::json texels = nlohmann::json::array();
-        for (const ProbeTexel& x : t.texels)
+        for (const ProbeTexel& x : t.texels) {
             texels.push_back({{"texel", {x.texel.x, x.texel.y}}, {"border", x.border}, {"stored", x.stored},
                               {"weight", x.weight}, {"lit", x.lit}, {"uncertain", x.uncertain}});
+            if (x.face >= 0) texels.back()["cubeFace"] = cubeFaces()[std::size_t(x.face)].name;
+        }
         taps.push_back({{"offsetTexels", {t.offsetTexels.x, t.offsetTexels.y}},
                         {"texelCoord", {t.texelCoord.x, t.texelCoord.y}},
                         {"bilinear", t.bilinear},

@@ -1,4 +1,6 @@
-// A point light's receiver depth in a cube face (the depth and the moments lookups both compare with it).
+// A point light's cube faces as its lookups read them: the lookup face's tangent frame (taps move across it) and the
+// receiver's depth in the face a tap's direction selects (the depth, PCSS and moments lookups share both). CPU
+// mirror: renderer/shading/cube_face_frame.cpp.
 #include "shadow/light_data.glsl"
 #include "shadow/view_select.glsl"
 
@@ -10,4 +12,31 @@ float faceDepth(vec3 fromLight, vec3 tapDirection, LightData L) {
     float z = max(dot(fromLight, axis), near);
     if (reversedZ(L)) return near * (far - z) / (z * (far - near));  // zero-to-one, near 1, far 0
     return ((far + near) / (far - near) - 2.0 * far * near / ((far - near) * z)) * 0.5 + 0.5;
+}
+
+// The lookup's face as a filter spreads taps over it: its two tangent axes (the other two world axes) and a texel's
+// width there (2 / resolution at unit distance, times the lookup's distance along the face's axis, `major`).
+struct CubeFaceFrame {
+    vec3 fromLight;  // the lookup from the light
+    vec3 s, t;
+    float major;
+    float texel;
+};
+
+CubeFaceFrame cubeFaceFrame(vec3 fromLight, LightData L) {
+    vec3 a = abs(fromLight);
+    int axis = cubeFaceOf(fromLight) / 2;
+    CubeFaceFrame f;
+    f.fromLight = fromLight;
+    f.s = axis == 0 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+    f.t = axis == 1 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
+    f.major = max(a.x, max(a.y, a.z));
+    f.texel = 2.0 * L.shadow.z * f.major;
+    return f;
+}
+
+// The direction of a tap `offsetTexels` across the face from the lookup: it may select a neighbouring face.
+vec3 cubeFaceTap(CubeFaceFrame f, vec2 offsetTexels) {
+    vec2 o = offsetTexels * f.texel;
+    return f.fromLight + o.x * f.s + o.y * f.t;
 }

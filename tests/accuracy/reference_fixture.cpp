@@ -1,6 +1,7 @@
 #include "reference_fixture.h"
 
 #include "gl_fixture.h"
+#include "hardcases/hard_case_scenes.h"
 #include "image/image_io.h"
 #include "light/scene_lights.h"
 
@@ -42,6 +43,19 @@ Settings topDownAt(Settings s, float x, float z, float h) {
     s.camera.position = glm::vec3(x, h, z);
     s.camera.target = glm::vec3(x, 0.0f, z);
     s.camera.fovYDeg = 45.0f;
+    return s;
+}
+
+Scene contactWallScene() {
+    Scene scene = hardcases::meshKit("pcss-contact-wall");
+    hardcases::addFloor(scene, 20.0f);
+    hardcases::addBox(scene, {0.0f, 2.0f, 0.0f}, {0.4f, 4.0f, 6.0f});
+    return scene;
+}
+
+Settings atContactWallEdge(Settings s) {
+    s = topDownAt(s, 2.5f, 3.0f, 7.0f);
+    s.lights[0].direction = {1.0f, -1.0f, 0.0f};
     return s;
 }
 

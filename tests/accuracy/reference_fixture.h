@@ -31,4 +31,10 @@ std::string saveOverlay(const AccuracyReport& report, const std::string& name);
 // A camera looking straight down at (x, 0, z) from height h.
 Settings topDownAt(Settings s, float x, float z, float h);
 
+// A wall standing on the floor (x in [-0.2, 0.2], y in [0, 4], z in [-3, 3]) under a sun across it (direction
+// (1, -1, 0)): its shadow lies on x in [0.2, 4.2] and its side edge at z = 3 runs from the wall's foot (contact) to
+// its top's shadow. atContactWallEdge gives `s` that light and a camera 7 above the edge's middle (2.5, 0, 3).
+Scene contactWallScene();
+Settings atContactWallEdge(Settings s);
+
 }  // namespace shadowlab::test

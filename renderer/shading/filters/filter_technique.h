@@ -8,6 +8,7 @@
 #include "settings/settings.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <glm/ext/vector_uint2.hpp>
 
@@ -70,7 +71,11 @@ struct OwnLookupInput {
     float texelWorld = 0.0f;     // orthographic: a texel's world size; perspective: per unit of distance
     float lightSize = 0.0f;      // lightSpread(): LightData.views.z
     glm::uvec2 pixel{0u};        // gl_FragCoord's integer part (window x, y from the bottom)
-    std::function<float(int x, int y)> storedDepth;  // a texel's stored depth
+    // A point light: its taps move across the lookup's cube face by direction (cube_face_frame.h) and each reads the
+    // face its direction selects. `fromLight`: the lookup minus the light's position, in float as the GPU's.
+    bool cube = false;
+    glm::vec3 fromLight{0.0f};
+    std::function<float(int face, int x, int y)> storedDepth;  // a texel's stored depth (face: -1 for a 2D view)
     double depthEps = 0.0;       // float rounding of the receiver's depth: a search comparison within it is uncertain
     double texelEps = 0.0;       // and of the lookup's texel coordinate: a search tap this near a texel's edge may
                                  // read its neighbour
@@ -80,12 +85,17 @@ struct OwnLookupInput {
 // S = 1) and its search in words.
 struct OwnLookupResult {
     std::vector<glm::vec2> taps;
+    std::vector<glm::vec3> directions;  // a point light: each tap's direction from the light (the GPU's float d)
     int searchTaps = 0, blockers = 0;
     float searchTexels = 0.0f;    // the blocker search's radius
     float blockerDepth = 0.0f;    // the blockers' mean stored depth
     float penumbraTexels = 0.0f;  // the estimated penumbra's width
     float radiusTexels = 0.0f;    // the filter's radius (half the penumbra, clamped)
     bool uncertain = false;       // a blocker test within depthEps: rounding may change the search's outcome
+    // When uncertain: the other outcomes the GPU may reach (each with its own taps; no taps: no blocker, S = 1), and
+    // whether they are all of them (only depth tests in doubt, few enough to list); if not, S may be anything.
+    std::vector<OwnLookupResult> alternatives;
+    bool alternativesComplete = false;
     std::string text;
 };
 

@@ -1,7 +1,8 @@
 // PCSS (Fernando 2005): a blocker search over the depth map, a penumbra estimate from the light's size, then a PCF
-// whose width follows it. Both stages read the FILTER_TAPS Poisson disk (shading/filter_taps.cpp), rotated per pixel
-// by a hash of the pixel. The whole lookup (shadow2D, shadowCube) is this file, the variant's "alias:lookup"; its
-// CPU mirror (the pixel probe) is renderer/shading/filters/pcss_filter.cpp, step for step in float.
+// whose width follows it. Both stages read the FILTER_TAPS disk (pcss_filter.cpp's pcssDisk: uniform over the unit
+// disc's area, as a disc light's visibility across an edge asks), rotated per pixel by a hash of the pixel. The whole
+// lookup (shadow2D, shadowCube) is this file, the variant's "alias:lookup"; its CPU mirror (the pixel probe) is
+// renderer/shading/filters/pcss_filter.cpp, step for step in float.
 //   uTechnique  x: the largest blocker-search radius, y: the largest filter radius (texels)
 //   L.views.z   the light's size: its width per unit of distance (directional: 2 tan(angular diameter / 2)), or
 //               its diameter (spot, point)
@@ -139,26 +140,21 @@ float sampleDepthCube(int map, vec4 coord) {
 #endif
 }
 
-// A point light: the same three steps, the taps moved across the lookup's face (as lookup_cube.glsl's), each
-// compared in the face its direction selects; blockers' distances along their own face's axis.
+// A point light: the same three steps, the taps moved across the lookup's face by direction (cubeFaceTap, as
+// lookup_cube.glsl's), each read and compared in the face its direction selects; blockers' distances along their own
+// face's axis.
 float shadowCube(LightData L, vec3 lookup) {
     vec3 v = lookup - L.position.xyz;
-    vec3 a = abs(v);
-    float major = max(a.x, max(a.y, a.z));
-    int axis = cubeFaceOf(v) / 2;
-    vec3 s = axis == 0 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
-    vec3 t = axis == 1 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
-    float texelAtMajor = 2.0 * L.shadow.z * major;  // as lookup_cube.glsl
+    CubeFaceFrame frame = cubeFaceFrame(v, L);
     int map = int(L.shadow.x);
     vec2 rotation = pcssRotation();
     float ref = clampToFar(L, faceDepth(v, v, L));
     float nearDepth = reversedZ(L) ? 1.0 : 0.0;
-    float search = clamp(0.5 * pcssSpread(L, true, ref, nearDepth, major, 0.0, 0.0), 1.0, uTechnique.x);
+    float search = clamp(0.5 * pcssSpread(L, true, ref, nearDepth, frame.major, 0.0, 0.0), 1.0, uTechnique.x);
     float blockerSum = 0.0;
     int blockers = 0;
     for (int i = 0; i < FILTER_TAPS; ++i) {
-        vec2 o = rotateTap(TAP_OFFSETS[i], rotation) * search * texelAtMajor;
-        vec3 d = v + o.x * s + o.y * t;
+        vec3 d = cubeFaceTap(frame, rotateTap(TAP_OFFSETS[i], rotation) * search);
         float stored = sampleDepthCube(map, vec4(d, L.shadow.y));
         float receiver = faceDepth(v, d, L);
         if (pcssBlocks(L, stored, receiver)) {  // every face maps distance to depth alike: the mean is a distance
@@ -167,12 +163,11 @@ float shadowCube(LightData L, vec3 lookup) {
         }
     }
     if (blockers == 0) return 1.0;
-    float radius = clamp(0.5 * pcssSpread(L, true, ref, blockerSum / float(blockers), major, 0.0, 0.0), 1.0,
+    float radius = clamp(0.5 * pcssSpread(L, true, ref, blockerSum / float(blockers), frame.major, 0.0, 0.0), 1.0,
                          uTechnique.y);
     float sum = 0.0;
     for (int i = 0; i < FILTER_TAPS; ++i) {
-        vec2 o = rotateTap(TAP_OFFSETS[i], rotation) * radius * texelAtMajor;
-        vec3 d = v + o.x * s + o.y * t;
+        vec3 d = cubeFaceTap(frame, rotateTap(TAP_OFFSETS[i], rotation) * radius);
         sum += sampleMapCube(map, vec4(d, L.shadow.y), clampToFar(L, faceDepth(v, d, L)));
     }
     return sum / float(FILTER_TAPS);
