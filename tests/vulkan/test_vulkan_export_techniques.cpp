@@ -15,10 +15,16 @@
 #include "settings/settings_fields.h"
 #include "shading/filters/filter_technique.h"
 #include "shadow/moments_pass.h"
+#include "vulkan_lookup_pass.h"
+
+#include <glm/gtc/packing.hpp>
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -237,6 +243,148 @@ TEST_F(GlTest, ExportedMomentsPassesStoreShadowLabsMomentsBitForBit) {
         std::printf("[ export ] %s: the exported moments passes (%s, blur radius %d) equal ShadowLab's at %zu of %zu "
                     "texels\n", name.c_str(), moments["glFormat"].get<std::string>().c_str(), radius,
                     got.size() - differing, got.size());
+    }
+}
+
+// The wrapper both runs below put around the exported lookup: S of each point (world position, then normal).
+std::string lookupCompute(const std::string& lookup, bool vulkan) {
+    const std::string set = vulkan ? "set = 0, " : "";
+    return "#version 450 core\nlayout(local_size_x = 64) in;\n" + lookup + "layout(std430, " + set +
+           "binding = 10) readonly buffer Points { vec4 points[]; };\nlayout(std430, " + set +
+           "binding = 11) writeonly buffer Shadows { float shadows[]; };\n"
+           "void main() {\n    uint i = gl_GlobalInvocationID.x;\n    if (i >= uint(points.length() / 2)) return;\n"
+           "    shadows[i] = light0Shadow(0, points[2u * i].xyz, normalize(points[2u * i + 1u].xyz));\n}\n";
+}
+
+// The exported Vulkan lookup of each moments technique, run by lavapipe on ShadowLab's stored moments (in the exported
+// format, sampler and border, at the exported binding), gives the S the exported GL lookup gives in GL at the same
+// surface points (a grid over the textbook's floor), which tests/accuracy/test_export_techniques.cpp ties to
+// ShadowLab's main pass. PCSS hashes gl_FragCoord: a compute shader cannot run it (compiled only, above).
+TEST_F(GlTest, ExportedMomentsLookupOnLavapipeGivesTheShadowGlGives) {
+    struct Format { const char* name; VkFormat vk; int channels; int bytes; bool unorm; };
+    const Format formats[] = {{"rg16f", VK_FORMAT_R16G16_SFLOAT, 2, 2, false}, {"rg32f", VK_FORMAT_R32G32_SFLOAT, 2, 4, false},
+                              {"rgba16f", VK_FORMAT_R16G16B16A16_SFLOAT, 4, 2, false},
+                              {"rgba32f", VK_FORMAT_R32G32B32A32_SFLOAT, 4, 4, false},
+                              {"rgba16", VK_FORMAT_R16G16B16A16_UNORM, 4, 2, true}};
+    const Scene scene = loadBuiltin("textbook");
+    Renderer renderer;
+    struct Case { FilterKind kind; int bits; };
+    for (const Case& c : {Case{FilterKind::Vsm, 32}, Case{FilterKind::Evsm2, 16}, Case{FilterKind::Evsm4, 32},
+                          Case{FilterKind::Msm, 16}, Case{FilterKind::Msm, 32}}) {
+        Settings s = loadShippedPreset("default");
+        s.filter.kind = c.kind;
+        s.filter.momentBits = c.bits;
+        s.filter.blurWidth = 5.0f;
+        s.filter.bleedReduction = 0.2f;
+        const int resolution = s.lights[0].shadow.resolution = 256;
+        const std::string name = std::string(filterTechnique(c.kind).name) + "-" + std::to_string(c.bits);
+        SCOPED_TRACE(name);
+        const View view = renderView(renderer, scene, s, 32, 32);
+        ASSERT_TRUE(view.stats.ok) << view.stats.error;
+        const std::vector<glm::vec4> stored = renderer.viewMoments({0, ShadowViewKind::Single, 0}, 0, 0, resolution, resolution);
+        ASSERT_EQ(stored.size(), std::size_t(resolution * resolution));
+        std::string error;
+        const std::optional<ShadowExportSet> set = exportForScene(s, scene, "builtin:textbook", 0, error);
+        ASSERT_TRUE(set && set->lights.at(0).shadow) << error;
+        const ShadowExport& e = *set->lights[0].shadow;
+        const nlohmann::json json = nlohmann::json::parse(exportSnippet(e, ExportFormat::Json));
+        const nlohmann::json& moments = json["technique"]["moments"];
+        const Format* format = nullptr;
+        for (const Format& f : formats)
+            if (moments["format"] == f.name) format = &f;
+        ASSERT_NE(format, nullptr) << moments["format"];
+
+        // Surface points: a 64 x 64 grid over the floor (its top, the scene's lowest y), normal up.
+        std::vector<glm::vec4> points;
+        const glm::dvec3 lo = scene.bounds.min, hi = scene.bounds.max;
+        for (int j = 0; j < 64; ++j)
+            for (int i = 0; i < 64; ++i) {
+                const glm::dvec3 p(lo.x + (hi.x - lo.x) * (i + 0.5) / 64.0, lo.y, lo.z + (hi.z - lo.z) * (j + 0.5) / 64.0);
+                points.push_back(glm::vec4(glm::vec3(p - e.renderOrigin), 1.0f));
+                points.push_back(glm::vec4(0.0f, 1.0f, 0.0f, 0.0f));
+            }
+        const std::size_t count = points.size() / 2;
+
+        // GL: the exported GL lookup on the same moments, through the exported sampler.
+        const GLenum glFormat = momentInternalFormat(filterTechnique(c.kind), c.bits);
+        gl::Texture map = gl::createTexture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(map.id(), 1, glFormat, resolution, resolution, 1);
+        glTextureSubImage3D(map.id(), 0, 0, 0, 0, resolution, resolution, 1, GL_RGBA, GL_FLOAT, stored.data());
+        const std::vector<float> border = moments["border"];
+        const std::string address = json["sampler"]["addressMode"];
+        const GLint wrap = address == "wrap" ? GL_REPEAT : address == "clamp" ? GL_CLAMP_TO_EDGE : GL_CLAMP_TO_BORDER;
+        gl::Sampler sampler = gl::createSampler();
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, wrap);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, wrap);
+        glSamplerParameterfv(sampler.id(), GL_TEXTURE_BORDER_COLOR, border.data());
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        const gl::Program program = gl::buildProgram(
+            {{GL_COMPUTE_SHADER, "exported lookup (GL)", lookupCompute(json["technique"]["lookupGlsl"], false)}}, {});
+        gl::Buffer pointBuffer = gl::createBuffer(), shadowBuffer = gl::createBuffer();
+        glNamedBufferData(pointBuffer.id(), GLsizeiptr(points.size() * sizeof(glm::vec4)), points.data(), GL_STATIC_DRAW);
+        glNamedBufferData(shadowBuffer.id(), GLsizeiptr(count * sizeof(float)), nullptr, GL_STATIC_READ);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, pointBuffer.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, shadowBuffer.id());
+        glUseProgram(program.id());
+        glUniform1i(glGetUniformLocation(program.id(), "uMaps2D[0]"), 0);
+        glBindTextureUnit(0, map.id());
+        glBindSampler(0, sampler.id());
+        glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        std::vector<float> glShadow(count);
+        glGetNamedBufferSubData(shadowBuffer.id(), 0, GLsizeiptr(count * sizeof(float)), glShadow.data());
+        glBindSampler(0, 0);
+
+        // Vulkan: the exported Vulkan lookup, the map at the binding the export names.
+        std::vector<VulkanBinding> bindings;
+        const std::string lookup = techniqueLookupCode(e, true, &bindings);
+        LookupPassInput input;
+        for (const VulkanBinding& b : bindings)
+            if (b.declaration == "sampler2DArray uMaps2D[MAP_ARRAYS_2D]") input.mapBinding = std::uint32_t(b.binding);
+        EXPECT_NE(lookup.find("binding " + std::to_string(input.mapBinding) + " = sampler2DArray uMaps2D"), std::string::npos);
+        input.spirv = compileCompute(lookupCompute(lookup, true), name + "-lookup-vk-run", error);
+        ASSERT_FALSE(input.spirv.empty()) << error;
+        input.format = format->vk;
+        input.resolution = resolution;
+        for (const glm::vec4& m : stored)
+            for (int k = 0; k < format->channels; ++k) {
+                std::uint8_t bytes[4];
+                if (format->bytes == 4) {
+                    std::memcpy(bytes, &m[k], 4);
+                } else {
+                    const std::uint16_t v = format->unorm ? std::uint16_t(std::lround(double(m[k]) * 65535.0))
+                                                          : glm::packHalf1x16(m[k]);
+                    std::memcpy(bytes, &v, 2);
+                }
+                input.texels.insert(input.texels.end(), bytes, bytes + format->bytes);
+            }
+        input.addressMode = address == "wrap" ? VK_SAMPLER_ADDRESS_MODE_REPEAT
+                            : address == "clamp" ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE
+                                                 : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER;
+        input.border = glm::vec4(border[0], border[1], border[2], border[3]);
+        input.points = points;
+        const LookupPassResult vk = runLookupVulkan(input);
+        if (vk.noDevice) GTEST_SKIP() << "no Vulkan device (" << vk.error << "); scripts/install-deps installs lavapipe";
+        ASSERT_EQ(vk.error, "");
+        ASSERT_EQ(vk.shadow.size(), count);
+        double maxDiff = 0.0, sum = 0.0;
+        std::size_t over = 0, partial = 0, shadowed = 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            const double d = std::abs(double(vk.shadow[i]) - double(glShadow[i]));
+            maxDiff = std::max(maxDiff, d);
+            sum += d;
+            over += d > 1e-3;
+            partial += glShadow[i] > 0.0f && glShadow[i] < 1.0f;
+            shadowed += glShadow[i] < 0.5f;
+        }
+        std::printf("[ lavapipe ] %s (%s): exported Vulkan lookup vs exported GL lookup at %zu floor points (%zu partly "
+                    "lit, %zu in shadow): max |dS| %.3g, mean %.3g, %zu over 1e-3\n",
+                    name.c_str(), vk.deviceName.c_str(), count, partial, shadowed, maxDiff, sum / double(count), over);
+        EXPECT_GT(shadowed, 100u) << "the grid crosses the shadows";
+        EXPECT_GT(partial, 20u);
+        EXPECT_LE(over, count / 200) << "points whose S differs by more than 1e-3 (0.5 % allowed)";
+        EXPECT_LT(maxDiff, 5e-3) << "llvmpipe 15: at most 9e-4 (MSM), 2e-5 (VSM, EVSM)";
     }
 }
 
