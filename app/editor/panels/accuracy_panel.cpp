@@ -231,7 +231,7 @@ void tradeOffTable(EditorState& state, const std::vector<TuneStep>& steps, float
     if (ImGui::BeginTable("tradeOffSteps", int(keys) + 4, flags, ImVec2(0, height))) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("#");
-        for (const std::string& k : a.searchedKeys) ImGui::TableSetupColumn(k.substr(k.rfind('.') + 1).c_str());
+        for (std::size_t k = 0; k < keys; ++k) ImGui::TableSetupColumn(std::string(1, char('a' + k)).c_str());
         const bool soft = !steps.empty() && steps.front().soft;
         for (const char* h : {"acne", soft ? "soft |S-V|" : "|S-V|", soft ? "bleed" : "leak"}) ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
@@ -243,12 +243,12 @@ void tradeOffTable(EditorState& state, const std::vector<TuneStep>& steps, float
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("candidate %d: %s", s.index, s.phase.c_str());
             for (std::size_t k = 0; k < keys; ++k) {
                 ImGui::TableNextColumn();
-                if (k < s.tradeOff.size()) ImGui::Text("%.4g", s.tradeOff[k]);
+                if (k < s.tradeOff.size()) ImGui::Text("%.3g", s.tradeOff[k]);
             }
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", s.acnePercent);
             ImGui::TableNextColumn();
-            ImGui::Text("%.5f", tradeOffError(s));
+            ImGui::Text("%.4f", tradeOffError(s));
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", tradeOffBleeding(s));
         }
@@ -370,7 +370,10 @@ void biasSearchTab(PanelContext& ctx) {
         state.controls.recordLastItem("accuracy.steps");
     }
     if (!tradeOffSteps.empty()) {
-        noteText(std::string("the technique's candidates: its keys, acne %, the error it compares, ") +
+        std::string legend;  // the key columns by letter: every column within the sidebar
+        for (std::size_t k = 0; k < a.searchedKeys.size(); ++k)
+            legend += std::string(1, char('a' + k)) + " = " + a.searchedKeys[k] + ", ";
+        noteText(legend + "acne %, the error it compares, " +
                  (tradeOffSteps.front().soft ? "bleeding % (soft reference)" : "leak %") +
                  (a.running ? "; now: " + a.steps.back().phase : std::string()));
         state.controls.recordLastItem("accuracy.tradeOffLegend");
@@ -529,7 +532,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
     char overlay[160];
     if (a.running)
         std::snprintf(overlay, sizeof overlay, "%s %s (%.0f %%)",
-                      a.runningTune ? "bias search:" : a.runningFlicker ? "flicker:" : "measure:",
+                      a.runningTune ? (a.searched == TuneSearch::Bias ? "bias search:" : "search:")
+                      : a.runningFlicker ? "flicker:" : "measure:",
                       a.stage.c_str(), double(a.progress) * 100.0);
     else if (!a.error.empty())
         std::snprintf(overlay, sizeof overlay, "%s", a.stage.c_str());
@@ -537,7 +541,7 @@ void drawAccuracyPanel(PanelContext& ctx) {
         std::snprintf(overlay, sizeof overlay, "live count %dx%d in %.0f ms", a.report->width, a.report->height,
                       a.reportSeconds * 1e3);
     else if (a.report)
-        std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? "bias search at" : "measured",
+        std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? (a.searched == TuneSearch::Bias ? "bias search at" : "search at") : "measured",
                       a.report->width, a.report->height, a.reportSeconds);
     else
         std::snprintf(overlay, sizeof overlay, "not measured yet");
