@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <sstream>
 
 namespace shadowlab {
@@ -253,10 +254,13 @@ std::string momentFormatName(const std::string& glsl, ExportFormat api) {
     return glsl;
 }
 
-std::string bindingList(const std::vector<VulkanBinding>& bindings) {
+// The bindings of `names` (the text keeps the branch the pass's defines leave out: the other pass's uniforms).
+std::string bindingList(const std::vector<VulkanBinding>& bindings, std::initializer_list<const char*> names) {
     std::string out;
     for (const VulkanBinding& b : bindings)
-        out += (out.empty() ? "" : "; ") + std::string("binding ") + std::to_string(b.binding) + " = " + b.declaration;
+        for (const char* name : names)
+            if (b.name == name)
+                out += (out.empty() ? "" : "; ") + std::string("binding ") + std::to_string(b.binding) + " = " + b.declaration;
     return out;
 }
 
@@ -294,8 +298,8 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
         if (r > 0) o << "}\n";
     }
     if (vulkan)
-        o << "// Vulkan descriptors (set 0). Convert: " << bindingList(shaders.convertBindings) << ".\n// Blur: "
-          << bindingList(shaders.blurBindings) << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
+        o << "// Vulkan descriptors (set 0). Convert: " << bindingList(shaders.convertBindings, {"uOut", "uDepth", "uLayer"})
+          << ".\n// Blur: " << bindingList(shaders.blurBindings, {"uOut", "uIn", "uDirection", "uRadius", "uWeights"}) << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
           << "// stride per float, uDirection an ivec2).\n";
     if (api == ExportFormat::D3D12 || api == ExportFormat::D3D11)
         o << "// GLSL compute shaders (ShadowLab's): translate to HLSL (imageLoad / imageStore -> RWTexture2D reads / writes).\n";
