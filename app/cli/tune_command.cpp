@@ -66,12 +66,6 @@ bool hasLightKeys(const FilterTechnique& technique) {
     return false;
 }
 
-// A trade-off key the tuner saw on its one light ("lights.0.size") as light `index`'s key of the whole preset.
-std::string keyOfLight(const std::string& key, std::size_t index) {
-    const std::string prefix = "lights.0.";
-    return key.rfind(prefix, 0) == 0 ? "lights." + std::to_string(index) + "." + key.substr(prefix.size()) : key;
-}
-
 // A trade-off candidate's values by key (keys of the whole preset), for the JSON.
 nlohmann::json tradeOffJson(const TuneResult& result, const TuneStep& s, std::size_t index) {
     nlohmann::json values = nlohmann::json::object();

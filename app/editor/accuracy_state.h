@@ -69,6 +69,14 @@ struct AccuracyState {
     std::optional<TuneResult> tune;  // the newest finished search (its report is also `report`)
     double maxAcnePercent = 0.1;
     std::size_t stepsFollowed = 0;   // the path table scrolled to its newest row when it grew
+    // What Suggest searches (tune's --search): auto = the technique's trade-off when it declares one, else the bias.
+    TuneSearch search = TuneSearch::Auto;
+    // The running or newest search: what it searched (Auto resolved), for which light, and the trade-off keys it
+    // varies as keys of the whole preset ("filter.minVariance", "lights.2.size"), in the order of TuneStep::tradeOff.
+    TuneSearch searched = TuneSearch::Bias;
+    std::size_t searchedLight = 0;
+    std::string searchedTechnique;
+    std::vector<std::string> searchedKeys;
 
     // Flicker (the panel's Flicker tab): the motion to play, the newest result (its own, beside `report`) and its
     // overlay on the GPU.

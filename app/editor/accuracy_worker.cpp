@@ -166,7 +166,8 @@ AccuracyJobResult AccuracyWorker::run(const AccuracyJob& job, std::uint64_t id) 
                                                hook = stepHook_;
                                            }
                                            if (hook) hook(progress_);
-                                       });
+                                       },
+                                       TuneScope{job.search, true});  // one light: its global keys too
             result.report = tune.report;
             if (!tune.ok) {
                 result.report.ok = false;

@@ -35,6 +35,7 @@ struct AccuracyJob {
     Camera camera;
     int width = 0, height = 0;
     double maxAcnePercent = 0.1;  // SuggestBias: the acne limit
+    TuneSearch search = TuneSearch::Bias;  // SuggestBias: the bias, the technique's trade-off, both, or auto (tune's --search)
     Motion motion;                // Flicker: what moves, by how much, for how many frames
 };
 

@@ -4,6 +4,8 @@
 // picture once per full report.
 #include "editor/editor.h"
 #include "accuracy/light_isolation.h"
+#include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 #include "gl/gl.h"
 
 #include <algorithm>
@@ -49,6 +51,7 @@ void Editor::startAccuracyJob(AccuracyJobKind kind, bool automatic) {
     job.width = key->width;
     job.height = key->height;
     job.maxAcnePercent = a.maxAcnePercent;
+    job.search = a.search;
     job.motion = a.flickerMotion;
     if (accuracyWorker_->start(std::move(job)) == 0) {
         state_.say("accuracy: a job is still running (Cancel it first)", true);
@@ -65,6 +68,17 @@ void Editor::startAccuracyJob(AccuracyJobKind kind, bool automatic) {
     if (a.runningTune) {
         a.steps.clear();
         a.tune.reset();
+        // What this search varies, said while it runs (the tuner resolves auto the same way).
+        const TuneScope scope{a.search, true};
+        a.searched = resolveTuneSearch(scope, key->settings.filter.kind);
+        a.searchedLight = key->light;
+        a.searchedTechnique = filterTechnique(key->settings.filter.kind).name;
+        a.searchedKeys.clear();
+        if (a.searched != TuneSearch::Bias)
+            for (std::string k : tradeOffKeysOf(scope, key->settings.filter.kind)) {
+                if (const std::size_t at = k.find('#'); at != std::string::npos) k.replace(at, 1, std::to_string(key->light));
+                a.searchedKeys.push_back(k);
+            }
     }
 }
 
@@ -173,35 +187,59 @@ void Editor::adoptAccuracyResult(AccuracyJobResult result) {
         // its unsaved marker); the numbers then describe exactly these settings. No result within the acne limit:
         // nothing is applied, and the settings keep what the user had.
         const ShadowMapSettings& closest = tune.closest.lights[0].shadow;
-        bool applied = false;
         // The light the search tuned (tune.best holds it alone), even if another light is selected by now.
         const std::size_t light = key ? key->light : state_.selectedLight;
         const std::string prefix = "lights." + std::to_string(light) + ".shadow.";
+        const bool biasSearched = std::any_of(tune.path.begin(), tune.path.end(),
+                                              [](const TuneStep& s) { return !s.tradeOffStep; });
+        // The technique's keys as the tuner chose them, as keys of the whole preset (tune_command's chosen values).
+        std::vector<std::pair<std::string, nlohmann::json>> chosen;
+        if (tune.tradeOffSearched)
+            for (const std::string& k : tune.tradeOffKeys)
+                chosen.emplace_back(keyOfLight(k, light), findSettingsField(k)->get(tune.closest));
+        bool applied = false;
         if (tune.reachedLimit) {
-            applied = state_.edit(prefix + "depthBias", best.depthBias) &&
-                      state_.edit(prefix + "slopeScaledDepthBias", best.slopeScaledDepthBias) &&
-                      state_.edit(prefix + "normalOffset", best.normalOffset) &&
-                      state_.edit(prefix + "cullMode", cullModeName(best.cullMode)) &&
-                      state_.edit(prefix + "receiverPlaneBias", best.receiverPlaneBias);
-            if (key) setLightShadow(key->settings, light, best);
-        } else if (key) {
-            setLightShadow(key->settings, light, closest);  // the report describes the closest candidate: stale
+            applied = true;
+            if (biasSearched)
+                applied = state_.edit(prefix + "depthBias", best.depthBias) &&
+                          state_.edit(prefix + "slopeScaledDepthBias", best.slopeScaledDepthBias) &&
+                          state_.edit(prefix + "normalOffset", best.normalOffset) &&
+                          state_.edit(prefix + "cullMode", cullModeName(best.cullMode)) &&
+                          state_.edit(prefix + "receiverPlaneBias", best.receiverPlaneBias);
+            for (const auto& [k, value] : chosen) applied = applied && state_.edit(k, value);
         }
-        char text[320];
-        if (tune.reachedLimit)
-            std::snprintf(text, sizeof text,
-                          "suggested for light %zu: DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s%s (acne "
-                          "%.3f %%, wrong pixels %.3f %%, %zu candidates, %.1f s)%s",
-                          light, double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
-                          cullModeName(best.cullMode).c_str(), best.receiverPlaneBias ? ", receiver-plane bias" : "",
-                          tune.report.acnePercent, tune.report.wrongPercent,
-                          tune.path.size(), tune.seconds, applied ? ", applied" : ", NOT applied");
-        else
-            std::snprintf(text, sizeof text,
+        // The report describes the best (reached) or the closest candidate (then stale against the settings kept).
+        if (key) {
+            setLightShadow(key->settings, light, tune.reachedLimit ? best : closest);
+            for (const auto& [k, value] : chosen) findSettingsField(k)->set(key->settings, value);
+        }
+        std::string text;
+        char number[320];
+        if (tune.reachedLimit) {
+            text = "suggested for light " + std::to_string(light) + ":";
+            if (biasSearched) {
+                std::snprintf(number, sizeof number,
+                              " DepthBias %g, SlopeScaledDepthBias %g, normal offset %g texels, cull %s%s",
+                              double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
+                              cullModeName(best.cullMode).c_str(), best.receiverPlaneBias ? ", receiver-plane bias" : "");
+                text += number;
+            }
+            for (std::size_t i = 0; i < chosen.size(); ++i)
+                text += std::string(i || biasSearched ? ", " : " ") + chosen[i].first + " " + chosen[i].second.dump();
+            std::snprintf(number, sizeof number, " (acne %.3f %%, wrong pixels %.3f %%, %zu candidates, %.1f s)%s",
+                          tune.report.acnePercent, tune.report.wrongPercent, tune.path.size(), tune.seconds,
+                          applied ? ", applied" : ", NOT applied");
+            text += number;
+        } else {
+            std::snprintf(number, sizeof number,
                           "NO setting reached the acne limit for light %zu (stopped by %s; least acne %.3f %% at DepthBias %g, slope "
-                          "%g, normal offset %g); nothing applied",
+                          "%g, normal offset %g",
                           light, causeInfo(tune.blockingCause).name, tune.report.acnePercent, double(closest.depthBias),
                           double(closest.slopeScaledDepthBias), double(closest.normalOffset));
+            text = number;
+            for (const auto& [k, value] : chosen) text += ", " + k + " " + value.dump();
+            text += "); nothing applied";
+        }
         state_.say(text, !tune.reachedLimit || !applied);
         a.tune = std::move(result.tune);
     }

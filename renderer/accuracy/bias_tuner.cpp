@@ -133,6 +133,32 @@ std::string tradeOffKeyOf(const TradeOffRange& range) {
 }
 }  // namespace
 
+namespace {
+// The ranges a search of `scope` varies: a later light of several keeps the global keys tuned on the first.
+std::vector<TradeOffRange> rangesIn(const TuneScope& scope, FilterKind kind) {
+    std::vector<TradeOffRange> ranges;
+    for (const TradeOffRange& range : filterTechnique(kind).tradeOff)
+        if (scope.globalKeys || std::string(range.key).rfind("lights.#.", 0) == 0) ranges.push_back(range);
+    return ranges;
+}
+}  // namespace
+
+TuneSearch resolveTuneSearch(const TuneScope& scope, FilterKind kind) {
+    if (scope.search != TuneSearch::Auto) return scope.search;
+    return rangesIn(scope, kind).empty() ? TuneSearch::Bias : TuneSearch::TradeOff;
+}
+
+std::vector<std::string> tradeOffKeysOf(const TuneScope& scope, FilterKind kind) {
+    std::vector<std::string> keys;
+    for (const TradeOffRange& range : rangesIn(scope, kind)) keys.push_back(range.key);
+    return keys;
+}
+
+std::string keyOfLight(const std::string& key, std::size_t index) {
+    const std::string prefix = "lights.0.";
+    return key.rfind(prefix, 0) == 0 ? "lights." + std::to_string(index) + "." + key.substr(prefix.size()) : key;
+}
+
 const char* tuneSearchName(TuneSearch search) {
     for (const auto& [value, name] : kSearchNames)
         if (value == search) return name;
@@ -172,11 +198,8 @@ TuneResult tuneBias(AccuracyMeter& meter, const Scene& scene, const Settings& st
 
     // What is searched: the technique's own trade-off (the keys its unit declares) and / or the depth bias.
     const FilterTechnique& technique = filterTechnique(start.filter.kind);
-    std::vector<TradeOffRange> ranges;
-    for (const TradeOffRange& range : technique.tradeOff)
-        if (scope.globalKeys || std::string(range.key).rfind("lights.#.", 0) == 0) ranges.push_back(range);
-    TuneSearch search = scope.search;
-    if (search == TuneSearch::Auto) search = ranges.empty() ? TuneSearch::Bias : TuneSearch::TradeOff;
+    const std::vector<TradeOffRange> ranges = rangesIn(scope, start.filter.kind);
+    const TuneSearch search = resolveTuneSearch(scope, start.filter.kind);
     const bool biasSearch = search == TuneSearch::Bias || search == TuneSearch::Both;
     const bool tradeOffSearch = search == TuneSearch::TradeOff || search == TuneSearch::Both;
     if (tradeOffSearch && ranges.empty()) {

@@ -81,6 +81,15 @@ struct TuneScope {
     bool globalKeys = true;
 };
 
+// What a search of `scope` runs for settings whose filter is `kind`: Auto resolved (the trade-off when the technique
+// declares keys within the scope, else the bias); Bias, TradeOff or Both as asked. The CLI and the editor say it.
+TuneSearch resolveTuneSearch(const TuneScope& scope, FilterKind kind);
+// The trade-off keys a search of `scope` varies for `kind`, as declared ("filter.minVariance", "lights.#.size").
+std::vector<std::string> tradeOffKeysOf(const TuneScope& scope, FilterKind kind);
+// A trade-off key the tuner saw on its one light ("lights.0.size") as light `index`'s key of the whole preset
+// ("lights.2.size"); a global key ("filter.minVariance") as it is.
+std::string keyOfLight(const std::string& key, std::size_t index);
+
 // A cascade holding fewer measured pixels than this is not judged on its own (one acne pixel of 20 is 5 %); its
 // pixels still count in the light's overall acne.
 inline constexpr std::size_t kTuneCascadeMinPixels = 200;

@@ -1,5 +1,6 @@
 #include "export/export_snippets.h"
 
+#include "export/glsl_uniforms.h"
 #include "export/shadow_shader_code.h"
 #include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
@@ -9,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <sstream>
 
 namespace shadowlab {
@@ -116,7 +118,18 @@ std::string conventions(const ShadowExport& e, ExportFormat api, const char* c) 
         case FilterKind::Poisson:
             o << kPoissonTaps << " Poisson-disk bilinear comparisons within " << number(f.poissonRadius) << " texels, averaged";
             break;
-        default: o << filterTechnique(f.kind).name; break;  // moments techniques are refused before (exportForScene)
+        case FilterKind::Pcss:
+            o << "PCSS: a " << kPoissonTaps << "-tap blocker search (at most " << number(f.blockerSearchTexels)
+              << " texels), then " << kPoissonTaps << " bilinear comparisons as wide as the penumbra (at most "
+              << number(f.penumbraMaxTexels) << " texels) from the light's size (" << number(e.lightSpread)
+              << " as the lookup spreads it)";
+            break;
+        default:  // a moments technique: its lookup reads the moments, not the comparison sampler
+            o << filterTechnique(f.kind).name << ": one bilinear read of the blurred moments (" << e.momentFormat
+              << "; the moments pass below), uTechnique = (" << number(e.techniqueUniforms.x) << ", "
+              << number(e.techniqueUniforms.y) << ", " << number(e.techniqueUniforms.z) << ", "
+              << number(e.techniqueUniforms.w) << ")";
+            break;
     }
     o << (e.reversedZ ? "; compare: lit when receiver depth >= stored depth (GEQUAL).\n"
                       : "; compare: lit when receiver depth <= stored depth (LEQUAL).\n");
@@ -225,11 +238,85 @@ std::string viewsBlock(const ShadowExport& e, ExportFormat api) {
     return o.str();
 }
 
+// A moments storage format's name in each API.
+std::string momentFormatName(const std::string& glsl, ExportFormat api) {
+    struct Names { const char *glsl, *gl, *vulkan, *dxgi; };
+    static const Names names[] = {
+        {"rg16f", "GL_RG16F", "VK_FORMAT_R16G16_SFLOAT", "DXGI_FORMAT_R16G16_FLOAT"},
+        {"rg32f", "GL_RG32F", "VK_FORMAT_R32G32_SFLOAT", "DXGI_FORMAT_R32G32_FLOAT"},
+        {"rgba16f", "GL_RGBA16F", "VK_FORMAT_R16G16B16A16_SFLOAT", "DXGI_FORMAT_R16G16B16A16_FLOAT"},
+        {"rgba32f", "GL_RGBA32F", "VK_FORMAT_R32G32B32A32_SFLOAT", "DXGI_FORMAT_R32G32B32A32_FLOAT"},
+        {"rgba16", "GL_RGBA16", "VK_FORMAT_R16G16B16A16_UNORM", "DXGI_FORMAT_R16G16B16A16_UNORM"}};
+    for (const Names& n : names)
+        if (glsl == n.glsl)
+            return api == ExportFormat::Vulkan ? n.vulkan
+                   : api == ExportFormat::D3D12 || api == ExportFormat::D3D11 ? n.dxgi : n.gl;
+    return glsl;
+}
+
+// The bindings of `names` (the text keeps the branch the pass's defines leave out: the other pass's uniforms).
+std::string bindingList(const std::vector<VulkanBinding>& bindings, std::initializer_list<const char*> names) {
+    std::string out;
+    for (const VulkanBinding& b : bindings)
+        for (const char* name : names)
+            if (b.name == name)
+                out += (out.empty() ? "" : "; ") + std::string("binding ") + std::to_string(b.binding) + " = " + b.declaration;
+    return out;
+}
+
+// A moments technique's passes after the shadow pass: storage, sampler, each view's blur, and the two compute shaders
+// (ShadowLab's shaders/moments.comp.glsl as its moments pass compiles them) as C++ raw strings to compile.
+std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
+    const bool vulkan = api == ExportFormat::Vulkan;
+    const MomentsPassShaders shaders = momentsPassShaders(e, vulkan);
+    const std::string p = "light" + std::to_string(e.lightIndex);
+    const glm::vec4& b = e.momentBorder;
+    std::ostringstream o;
+    o << "\n// ---- Moments pass (filter.kind " << filterTechnique(e.filter.kind).name
+      << "): two compute passes after the shadow pass, per view ----\n"
+      << "// Storage: a moments image beside the depth map, the same size and layers, " << momentFormatName(e.momentFormat, api)
+      << " (filter.momentBits " << e.filter.momentBits << "). The lookup samples it with LINEAR min/mag filtering, no\n"
+      << "// comparison, address mode " << addressName(e.sampler.addressMode, api) << ", border colour = the border depth's moments ("
+      << shortestFloatText(b.x) << ", " << shortestFloatText(b.y) << ", " << shortestFloatText(b.z) << ", " << shortestFloatText(b.w)
+      << "). The comparison sampler above is not read by this lookup.\n";
+    for (const std::string& clamp : e.techniqueClamps) o << "// Clamped: " << clamp << ".\n";
+    o << "// 1. Convert (" << p << "MomentsConvert): uDepth = the depth map as a plain 2D array (a cube map's faces as its\n"
+      << "//    layers), uLayer = the view's layer, uOut = the moments image's layer (rgba image binding 0); dispatch\n"
+      << "//    ceil(" << e.shadow.resolution << " / 8) x ceil(" << e.shadow.resolution << " / 8) groups.\n"
+      << "// 2. Blur (" << p << "MomentsBlur), a view whose width is above 1 texel: uIn (binding 1) = its moments layer, uOut\n"
+      << "//    (binding 0) = a scratch image of the same format and size, uDirection = (1, 0); barrier; then uIn = the scratch,\n"
+      << "//    uOut = the layer, uDirection = (0, 1); barrier. uRadius = R and uWeights[0..R] per view ("
+      << (e.filter.blurUnit == BlurUnit::World ? "filter.blurWidth " + number(e.filter.blurWidth) + " world units in each view's texels"
+                                               : "filter.blurWidth " + number(e.filter.blurWidth) + " texels")
+      << "):\n";
+    for (const ExportView& v : e.views) {
+        const std::vector<float> weights = blurWeights(v.blurTexels);
+        const std::size_t r = weights.size() / 2;
+        o << "//    " << v.label << ": " << number(v.blurTexels) << " texels" << (v.blurClamped ? " (clamped)" : "")
+          << (r == 0 ? ": no blur\n" : ", uRadius " + std::to_string(r) + ", uWeights = {");
+        for (std::size_t i = r; r > 0 && i < weights.size(); ++i) o << (i > r ? ", " : "") << shortestFloatText(weights[i]);
+        if (r > 0) o << "}\n";
+    }
+    if (vulkan)
+        o << "// Vulkan descriptors (set 0). Convert: " << bindingList(shaders.convertBindings, {"uOut", "uDepth", "uLayer"})
+          << ".\n// Blur: " << bindingList(shaders.blurBindings, {"uOut", "uIn", "uDirection", "uRadius", "uWeights"}) << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
+          << "// stride per float, uDirection an ivec2).\n";
+    if (api == ExportFormat::D3D12 || api == ExportFormat::D3D11)
+        o << "// GLSL compute shaders (ShadowLab's): translate to HLSL (imageLoad / imageStore -> RWTexture2D reads / writes).\n";
+    o << "static const char* " << p << "MomentsConvert = R\"glsl(\n" << shaders.convert << ")glsl\";\n"
+      << "static const char* " << p << "MomentsBlur = R\"glsl(\n" << shaders.blur << ")glsl\";\n";
+    return o.str();
+}
+
 std::string shaderBlock(const ShadowExport& e, ExportFormat api) {
     const ShaderTarget target = shaderTargetFor(api, e.reversedZ);
-    return "\n// ---- Shader code (" + std::string(target.language == ShaderLanguage::Hlsl ? "HLSL" : "GLSL") +
-           "): normal offset, " + (e.receiverPlane ? "receiver-plane depth bias, " : "") +
-           "the filter's taps, taps kept inside the map ----\n" + shadowShaderCode(e, target);
+    const bool own = e.momentTechnique || e.ownLookup;
+    return (e.momentTechnique ? momentsBlock(e, api) : std::string()) + "\n// ---- Shader code (" +
+           std::string(target.language == ShaderLanguage::Hlsl && !own ? "HLSL" : "GLSL") + "): normal offset, " +
+           (e.receiverPlane ? "receiver-plane depth bias, " : "") +
+           (own ? std::string("ShadowLab's lookup for filter.kind ") + filterTechnique(e.filter.kind).name + " ----\n"
+                : std::string("the filter's taps, taps kept inside the map ----\n")) +
+           shadowShaderCode(e, target);
 }
 
 std::string d3d(const ShadowExport& e, ExportFormat api) {
@@ -468,6 +555,31 @@ nlohmann::json jsonOf(const ShadowExport& e) {
     j["filter"] = {{"kind", kind}, {"kernel", e.filter.kernel}, {"poissonRadiusTexels", e.filter.poissonRadius},
                    {"bilinear", e.linearCompare}, {"tapOffsetsTexels", taps}};
     j["receiverPlaneBias"] = {{"setting", s.receiverPlaneBias}, {"applied", e.receiverPlane}};
+    if (e.momentTechnique || e.ownLookup) {  // the technique's own GLSL (OpenGL's: loose uniforms) and its numbers
+        const glm::vec4& u = e.techniqueUniforms;
+        nlohmann::json technique = {{"uTechnique", {u.x, u.y, u.z, u.w}},
+                                    {"lightSpread", e.lightSpread},
+                                    {"lookupGlsl", techniqueLookupCode(e, false)}};
+        if (e.momentTechnique) {
+            const MomentsPassShaders shaders = momentsPassShaders(e, false);
+            nlohmann::json blur = nlohmann::json::array();
+            for (const ExportView& v : e.views) {
+                const std::vector<float> weights = blurWeights(v.blurTexels);
+                blur.push_back({{"view", v.label}, {"widthTexels", v.blurTexels}, {"clamped", v.blurClamped},
+                                {"radius", weights.size() / 2},
+                                {"weights", std::vector<float>(weights.begin() + std::ptrdiff_t(weights.size() / 2), weights.end())}});
+            }
+            const glm::vec4& b = e.momentBorder;
+            technique["moments"] = {{"format", e.momentFormat},
+                                    {"glFormat", momentFormatName(e.momentFormat, ExportFormat::GL)},
+                                    {"border", {b.x, b.y, b.z, b.w}},
+                                    {"clamps", e.techniqueClamps},
+                                    {"blur", blur},
+                                    {"convertGlsl", shaders.convert},
+                                    {"blurGlsl", shaders.blur}};
+        }
+        j["technique"] = technique;
+    }
     j["tapsKeptInsideTheMap"] = true;
     return j;
 }

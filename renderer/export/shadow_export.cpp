@@ -1,5 +1,6 @@
 #include "light/scene_lights.h"
 #include "export/shadow_export.h"
+#include "light/blur_texel.h"
 
 #include "scene/scene.h"
 #include "views/shadow_view.h"
@@ -36,7 +37,20 @@ ExportView viewOf(std::size_t index, LightType type, const LightSpace& light) {
     return v;
 }
 
+// A moments technique's blur width in this view's texels, as the moments pass takes it.
+void setBlur(ExportView& v, const FilterSettings& filter, const LightSpace& light) {
+    if (!filterTechnique(filter.kind).moments) return;
+    v.blurTexels = blurTexels(filter, blurTexelWorldSize(light), &v.blurClamped);
+}
+
 }  // namespace
+
+std::string momentImageFormat(const FilterTechnique& technique, int momentBits) {
+    const MomentTechnique* m = technique.moments;
+    if (!m) return "";
+    if (momentBits == 16) return m->channels == 2 ? "rg16f" : m->unorm16 ? "rgba16" : "rgba16f";
+    return m->channels == 2 ? "rg32f" : "rgba32f";
+}
 
 std::string lightLabel(std::size_t index, LightType type) {
     return "light " + std::to_string(index) + " (" + lightTypeName(type) + ")";
@@ -59,6 +73,7 @@ ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, 
     e.label = lightLabel(lightIndex, l.type);
     e.views.push_back(viewOf(lightIndex, l.type, light));
     e.views.back().normalOffsetWorld = double(s.normalOffset) * light.texelWorldSize;
+    setBlur(e.views.back(), settings.filter, light);
     e.lightPosition = light.position;
     e.lightDirection = light.direction;
     e.shadow = s;
@@ -89,7 +104,19 @@ ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, 
     e.nearPlane = light.nearPlane;
     e.farPlane = light.farPlane;
     e.linearCompare = filterIsBilinear(settings.filter.kind);
-    e.receiverPlane = s.receiverPlaneBias && filterTechnique(settings.filter.kind).receiverPlane && light.cubeFace < 0;
+    const FilterTechnique& technique = filterTechnique(settings.filter.kind);
+    e.receiverPlane = s.receiverPlaneBias && technique.receiverPlane && light.cubeFace < 0;
+    e.lightSpread = lightSpread(l);
+    if (const MomentTechnique* m = technique.moments) {
+        e.momentTechnique = true;
+        e.techniqueUniforms = m->uniforms(settings.filter);
+        e.momentFormat = momentImageFormat(technique, settings.filter.momentBits);
+        e.momentBorder = m->encode(settings.sampler.borderDepth, e.techniqueUniforms);  // as MomentsPass's sampler
+        if (m->clamps) e.techniqueClamps = m->clamps(settings.filter);
+    } else if (const OwnLookup* own = technique.ownLookup) {
+        e.ownLookup = true;
+        e.techniqueUniforms = own->uniforms(settings.filter);
+    }
     return e;
 }
 
@@ -99,18 +126,6 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
                                               const std::string& onlyView) {
     if (const std::vector<std::string> problems = requested.validate(); !problems.empty()) {
         error = problems.front();
-        return std::nullopt;
-    }
-    if (const FilterTechnique& t = filterTechnique(requested.filter.kind); t.moments) {
-        error = std::string("filter.kind ") + t.name +
-                ": the export writes depth-comparison lookups (point, hardware2x2, pcf, poisson); a moments "
-                "technique's lookup is shaders/" + t.moments->glslFile + " with shaders/moments.comp.glsl";
-        return std::nullopt;
-    }
-    if (const FilterTechnique& t = filterTechnique(requested.filter.kind); t.ownLookup) {
-        error = std::string("filter.kind ") + t.name +
-                ": the export writes depth-comparison lookups (point, hardware2x2, pcf, poisson); this technique's "
-                "lookup is shaders/" + t.ownLookup->glslFile + " (a blocker search over the map's depths first)";
         return std::nullopt;
     }
     const Settings settings = withEffectiveLights(requested, scene);
@@ -161,6 +176,7 @@ std::optional<ShadowExportSet> exportForScene(const Settings& requested, const S
             for (const ShadowView& view : *views) {
                 ExportView v = viewOf(i, l.type, view.space);
                 v.normalOffsetWorld = double(l.shadow.normalOffset) * view.space.texelWorldSize;
+                setBlur(v, settings.filter, view.space);
                 if (cascaded) {
                     v.label = lightLabel(i, l.type) + " " + viewSuffix(view.kind, view.index);
                     v.cascade = view.index;

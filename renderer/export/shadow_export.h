@@ -16,12 +16,16 @@
 #include "settings/settings.h"
 #include "views/view_camera.h"
 
+#include <glm/vec4.hpp>
+
 #include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace shadowlab {
+
+struct FilterTechnique;
 
 enum class ExportFormat { D3D12, D3D11, Vulkan, GL, Json };
 
@@ -43,6 +47,8 @@ struct ExportView {
     glm::dmat4 viewProjection{1.0};  // render-origin-relative world -> ShadowLab's light clip space (column-major)
     double nearPlane = 0.0, farPlane = 1.0;
     double texelWorldSize = 0.0; // directional: constant; perspective: at the scene centre's distance
+    double blurTexels = 1.0;     // a moments technique: the blur's width in this view's texels (filter.blurUnit)
+    bool blurClamped = false;    // ...clamped to kMaxBlurTexels
 };
 
 // One light's shadow state (every view of a light shares it).
@@ -85,7 +91,25 @@ struct ShadowExport {
     // Poisson) and a 2D view (not a point light), as ShadowLab's main pass applies it.
     bool receiverPlane = false;
     BiasReport bias;                // the bias at the scene's receivers (valid when the scene was given)
+
+    // A technique whose lookup is GLSL of its own (filter_technique.h): a moments technique (its moments and blur
+    // passes too) or one with its own lookup (PCSS). Its uTechnique as the renderer sets it (after the clamps), and the
+    // light's size as lookups spread it (LightData.views.z).
+    bool momentTechnique = false;
+    bool ownLookup = false;
+    glm::vec4 techniqueUniforms{0.0f};
+    float lightSpread = 0.0f;
+    // Moments: the storage's GLSL image format ("rg32f", "rgba16"...) and what the settings asked for that the storage
+    // cannot hold (EVSM's exponents), each naming its key.
+    std::string momentFormat;
+    glm::vec4 momentBorder{0.0f};  // the moments sampler's border colour: the border depth's moments
+    std::vector<std::string> techniqueClamps;
 };
+
+// A moments technique's storage as a GLSL image format ("rg16f", "rg32f", "rgba16f", "rgba32f", "rgba16": MSM's
+// quantized 16 bits are unorm), what the moments pass allocates (shadow/moments_pass.h's momentInternalFormat; the
+// Vulkan export test checks both agree). "" for a technique without moments.
+std::string momentImageFormat(const FilterTechnique& technique, int momentBits);
 
 // "light 1 (spot)"; with a cube face "light 2 (point) face +X".
 std::string lightLabel(std::size_t index, LightType type);

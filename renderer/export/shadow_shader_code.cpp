@@ -1,11 +1,15 @@
 #include "export/shadow_shader_code.h"
 
 #include "gl/shader_sources.h"
+#include "gl/shader_text.h"
 #include "shading/filter_taps.h"
+#include "shading/filters/filter_technique.h"
+#include "shading/variant_key.h"
 
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 namespace shadowlab {
@@ -27,6 +31,7 @@ ShaderTarget shaderTargetFor(ExportFormat format, bool reversedZ) {
     t.language = d3d ? ShaderLanguage::Hlsl : ShaderLanguage::Glsl;
     t.flipV = d3d;
     t.zeroToOneDepth = format != ExportFormat::GL || reversedZ;
+    t.vulkan = format == ExportFormat::Vulkan;
     return t;
 }
 
@@ -106,7 +111,8 @@ std::string clampToFar(const ShadowExport& e, const std::string& x) {
 // A cascaded light: which cascade holds a receiver and how the next one blends in, by ShadowLab's own selection
 // (shaders/shadow/view_select.glsl, printed as it is; GLSL, so a comment for HLSL), with this light's split depths
 // and the camera the cascades were fitted to.
-std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::string& p, const std::string& P) {
+std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::string& p, const std::string& P,
+                             bool viewSelectIncluded = false) {
     std::ostringstream o;
     if (e.views.size() < e.cascadeCount) {
         o << "\n// One cascade of " << e.cascadeCount << " exported (--view): no selection; look it up with "
@@ -122,10 +128,13 @@ std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::s
         return w.v4 + "(" + lit(x[0]) + ", " + lit(x[1]) + ", " + lit(x[2]) + ", " + lit(x[3]) + ")";
     };
     std::ostringstream g;  // GLSL
-    g << "\n// ---- The cascade selection: ShadowLab's shaders/shadow/view_select.glsl as it is ----\n"
-      << "#ifndef SHADOWLAB_VIEW_SELECT\n#define SHADOWLAB_VIEW_SELECT\n"
-      << embeddedShaderSources().at("shadow/view_select.glsl") << "#endif\n\n"
-      << "const int " << P << "CASCADES = " << e.cascadeCount << ";\n"
+    if (viewSelectIncluded)  // the technique's lookup above holds it already
+        g << "\n// ---- The cascade selection (selectCascade: shaders/shadow/view_select.glsl, above) ----\n";
+    else
+        g << "\n// ---- The cascade selection: ShadowLab's shaders/shadow/view_select.glsl as it is ----\n"
+          << "#ifndef SHADOWLAB_VIEW_SELECT\n#define SHADOWLAB_VIEW_SELECT\n"
+          << embeddedShaderSources().at("shadow/view_select.glsl") << "#endif\n\n";
+    g << "const int " << P << "CASCADES = " << e.cascadeCount << ";\n"
       << "// Where each cascade ends, and where it starts fading into the next: depths in front of the camera.\n"
       << "const vec4 " << P << "CASCADE_FAR = " << v4(far) << ";\n"
       << "const vec4 " << P << "CASCADE_BLEND_START = " << v4(blend) << ";\n"
@@ -135,7 +144,7 @@ std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::s
       << "const vec3 " << P << "CAMERA_FORWARD = " << w.vec("vec3", e.camera.forward) << ";\n"
       << "// Which cascade holds worldPos (view -1: beyond the shadow distance, lit) and, in its blend band, the next one's\n"
       << "// share. S = choice.view < 0 ? 1.0 : mix(S(view), S(next), choice.weight) with\n"
-      << "// S(c) = " << p << "Shadow(map of cascade c, its matrix, " << P << "CASCADE_TEXEL_WORLD[c], worldPos, n"
+      << "// S(c) = " << (viewSelectIncluded ? p + "Shadow(c, worldPos, n" : p + "Shadow(map of cascade c, its matrix, " + P + "CASCADE_TEXEL_WORLD[c], worldPos, n")
       << (e.receiverPlane ? ", positionDx, positionDy" : "") << ").\n"
       << "CascadeChoice " << p << "Cascade(vec3 worldPos) {\n"
       << "    return selectCascade(dot(worldPos - " << P << "CAMERA_EYE, " << P << "CAMERA_FORWARD), " << P
@@ -303,9 +312,185 @@ std::string codeCube(const ShadowExport& e, const ShaderTarget& t) {
     return o.str();
 }
 
+std::string vec4Text(const glm::vec4& v) {
+    return "vec4(" + lit(v.x) + ", " + lit(v.y) + ", " + lit(v.z) + ", " + lit(v.w) + ")";
+}
+
+std::string mat4Text(const glm::dmat4& m) {
+    std::string out = "mat4(";
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) out += (c || r ? ", " : "") + lit(m[c][r]);
+    return out + ")";
+}
+
+// The defines the main pass compiles shaders/shadow/lookup.glsl with for this technique and one map array of this
+// light's kind (shading/variant_key.h's, those the lookup files read), and the file its alias names.
+std::vector<std::string> lookupDefines(const ShadowExport& e, gl::IncludeAliases& aliases) {
+    const FilterTechnique& technique = filterTechnique(e.filter.kind);
+    MainVariantKey key;
+    key.filter = e.filter.kind;
+    key.kernel = e.filter.kernel;
+    const bool cube = e.lightType == LightType::Point;
+    key.lights.mapArrays2D = cube ? 0 : 1;
+    key.lights.mapArraysCube = cube ? 1 : 0;
+    key.receiverPlane = e.receiverPlane;
+    std::vector<std::string> defines;
+    for (const std::string& d : key.defines())
+        for (const char* read : {"MOMENT_TECHNIQUE", "OWN_LOOKUP", "FILTER_", "MAP_ARRAYS_", "RECEIVER_PLANE"})
+            if (d.rfind(read, 0) == 0) defines.push_back(d);
+    if (technique.moments) aliases["alias:technique"] = technique.moments->glslFile;
+    if (technique.ownLookup) aliases["alias:lookup"] = technique.ownLookup->glslFile;
+    return defines;
+}
+
 }  // namespace
 
+std::string techniqueLookupCode(const ShadowExport& e, bool vulkan, std::vector<VulkanBinding>* bindings) {
+    const FilterTechnique& technique = filterTechnique(e.filter.kind);
+    const Words w(ShaderLanguage::Glsl);
+    const std::string p = "light" + std::to_string(e.lightIndex);
+    const std::string P = upper(p) + "_";
+    const bool cube = e.lightType == LightType::Point;
+    const bool spot = e.lightType == LightType::Spot;
+    gl::IncludeAliases aliases;
+    const std::vector<std::string> defines = lookupDefines(e, aliases);
+    // uFilterScale: the depth lookups' (filter_taps.glsl); the text holds every branch lookup.glsl includes.
+    const std::map<std::string, std::string> baked = {{"uTechnique", vec4Text(e.techniqueUniforms)},
+                                                      {"uFilterScale", lit(technique.scale(e.filter))}};
+    std::string lookup = bakeUniforms(gl::preprocessedSource("shadow/lookup.glsl", {}, {}, aliases), baked);
+    std::vector<VulkanBinding> own;
+    if (vulkan) lookup = vulkanUniforms(lookup, 0, bindings ? *bindings : own);
+    const std::string guard = std::string("SHADOWLAB_LOOKUP_") + (cube ? "CUBE" : "2D");
+
+    std::ostringstream o;
+    o << "// S of " << e.label << " (1 = lit), GLSL: ShadowLab's own lookup for filter.kind " << technique.name
+      << ", shaders/shadow/lookup.glsl with\n// " << (technique.moments ? std::string("shaders/") + technique.moments->glslFile
+                                                  : std::string("shaders/") + technique.ownLookup->glslFile)
+      << " as the main pass compiles it (#includes expanded, uTechnique = " << vec4Text(e.techniqueUniforms) << ").\n";
+    if (technique.moments)
+        o << "// It reads one bilinear sample of the view's blurred moments (the moments pass below): bind the moments image\n"
+          << "// as " << (cube ? "uMapsCube[0], a cube-map array" : "uMaps2D[0], a 2D array (one layer per view)")
+          << ", linear filtering, clamp to border with the border depth's moments.\n";
+    else
+        o << "// It reads the depth map twice: bind it as " << (cube ? "uMapsCube[0] (a cube-map array) with a comparison sampler (linear, "
+                                                               : "uMaps2D[0] (a 2D array, one layer per view) with a comparison sampler (linear, ")
+          << (e.reversedZ ? "GEQUAL" : "LEQUAL") << ")\n// and as " << (cube ? "uDepthCube[0]" : "uDepth2D[0]")
+          << " with a plain nearest sampler (the blocker search). The rotation hashes gl_FragCoord: fragment shaders only.\n";
+    if (vulkan) {
+        // The text keeps the branches the defines leave out (the depth lookups' samplers among them): name the
+        // descriptors this technique's lookup reads.
+        const std::string arrays = cube ? "[MAP_ARRAYS_CUBE]" : "[MAP_ARRAYS_2D]";
+        std::vector<std::pair<std::string, std::string>> reads;
+        if (technique.moments)
+            reads = {{std::string(cube ? "samplerCubeArray uMapsCube" : "sampler2DArray uMaps2D") + arrays, "the moments"}};
+        else
+            reads = {{std::string(cube ? "samplerCubeArrayShadow uMapsCube" : "sampler2DArrayShadow uMaps2D") + arrays,
+                      "the depth map, comparison sampler"},
+                     {std::string(cube ? "samplerCubeArray uDepthCube" : "sampler2DArray uDepth2D") + arrays,
+                      "the same depth map, plain nearest sampler"}};
+        o << "// Vulkan descriptors (set 0) it reads:";
+        for (const auto& [declaration, what] : reads)
+            for (const VulkanBinding& b : bindings ? *bindings : own)
+                if (b.declaration == declaration) o << " binding " << b.binding << " = " << declaration << " (" << what << ");";
+        o << "\n";
+    }
+    for (const std::string& d : defines) {
+        const std::string name = d.substr(0, d.find(' '));
+        o << "#undef " << name << "\n#define " << d << "\n";
+    }
+    o << "#ifndef " << guard << "\n#define " << guard << "\n" << lookup << "#endif\n";
+
+    // The light's numbers as the LightData block the main pass fills (renderer/shading/main_pass.cpp).
+    const std::size_t n = e.views.size();
+    std::vector<std::string> matrices, texels, nears, fars;
+    for (const ExportView& v : e.views) {
+        matrices.push_back(mat4Text(v.viewProjection));
+        texels.push_back(lit(e.perspective ? e.texelWorldPerDepth : v.texelWorldSize));
+        nears.push_back(lit(v.nearPlane));
+        fars.push_back(lit(v.farPlane));
+    }
+    const int flags = (e.reversedZ ? 1 : 0) + (e.shadow.receiverPlaneBias ? 2 : 0);
+    o << "\n// " << e.label << "'s numbers as the LightData the lookup reads. Matrices: ShadowLab's own (render-origin-relative\n"
+      << "// world -> its light clip space; the lookup's toLightTexture maps its depth convention), whatever the API.\n";
+    if (!cube) {
+        o << w.array("mat4", P + "VIEW_PROJECTION", n, matrices)
+          << "// " << (e.perspective ? "A texel's world size per unit of distance along the view's axis."
+                                     : "Each view's texel, world units (the normal offset" + std::string(e.receiverPlane ? " and receiver plane" : "") + " scale with it).") << "\n"
+          << w.array("float", P + "TEXEL_WORLD", n, texels) << w.array("float", P + "NEAR", n, nears)
+          << w.array("float", P + "FAR", n, fars);
+    }
+    o << "// The layer of this light's " << (cube ? "cube in uMapsCube[0]" : "view 0 in uMaps2D[0] (its views follow)")
+      << ": 0 when it is the only " << (cube ? "point" : "directional or spot") << " light exported; with several,\n"
+      << "// give each its own and set it here.\n"
+      << "const float " << P << "FIRST_LAYER = 0.0;\n";
+    o << "LightData " << p << "Data(int view) {\n"
+      << "    LightData L;\n"
+      << "    L.viewProjection = " << (cube ? "mat4(1.0)" : P + "VIEW_PROJECTION[view]") << ";\n"
+      << "    L.position = vec4(" << w.vec("vec3", e.lightPosition) << ", 0.0);  // minus the render origin\n"
+      << "    L.direction = vec4(" << w.vec("vec3", e.lightDirection) << ", 0.0);\n"
+      << "    L.radiance = vec4(1.0);\n"
+      << "    L.shadow = vec4(0.0, " << P << "FIRST_LAYER" << (cube ? "" : " + float(view)") << ", " << lit(1.0 / double(e.shadow.resolution))
+      << ", " << lit(e.shadow.normalOffset) << ");  // map, layer, 1 / resolution, normal offset (texels)\n"
+      << "    L.depth = vec4(" << (cube ? lit(e.nearPlane) + ", " + lit(e.farPlane) + ", " + lit(e.texelWorldPerDepth)
+                                     : P + "NEAR[view], " + P + "FAR[view], " + P + "TEXEL_WORLD[view]")
+      << ", " << flags << ".0);  // flags: 1 = reversed-Z, 2 = receiver-plane bias\n"
+      << "    L.views = vec4(0.0, 0.0, " << lit(e.lightSpread) << ", 0.0);  // z: the light's size as the lookup spreads it\n"
+      << "    return L;\n}\n";
+    o << "\n// worldPos: the receiver's world position minus the render origin; n: its unit normal, facing the viewer's side"
+      << (cube ? "" : "; view: which of the views above (0 for a single view)") << ".\n";
+    if (e.receiverPlane)
+        o << "// positionDx, positionDy: dFdx(worldPos), dFdy(worldPos), taken where control flow is uniform.\n";
+    o << "float " << p << "Shadow(" << (cube ? "" : "int view, ") << "vec3 worldPos, vec3 n"
+      << (e.receiverPlane ? ", vec3 positionDx, vec3 positionDy" : "") << ") {\n"
+      << "    LightData L = " << p << "Data(" << (cube ? "0" : "view") << ");\n";
+    if (e.receiverPlane) o << "    gPositionDx = positionDx;\n    gPositionDy = positionDy;\n";
+    if (cube)
+        o << "    vec3 a = abs(worldPos - L.position.xyz);\n"
+          << "    return shadowCube(L, worldPos + n * (L.shadow.w * (L.depth.z * max(a.x, max(a.y, a.z)))));\n";
+    else if (spot)
+        o << "    vec3 toLight = L.position.xyz - worldPos;\n"
+          << "    vec3 l = toLight / max(length(toLight), 1e-20);\n"
+          << "    float texelWorld = L.depth.z * dot(worldPos - L.position.xyz, L.direction.xyz);\n"
+          << "    return shadow2D(L, worldPos + n * (L.shadow.w * texelWorld), -l, texelWorld);\n";
+    else
+        o << "    return shadow2D(L, worldPos + n * (L.shadow.w * L.depth.z), L.direction.xyz, L.depth.z);\n";
+    o << "}\n";
+    if (e.cascaded) o << cascadeSelection(e, w, p, P, /*viewSelectIncluded=*/true);
+    return o.str();
+}
+
+MomentsPassShaders momentsPassShaders(const ShadowExport& e, bool vulkan) {
+    const FilterTechnique& technique = filterTechnique(e.filter.kind);
+    MomentsPassShaders out;
+    if (!technique.moments) return out;
+    const std::string format = "MOMENT_FORMAT " + e.momentFormat;
+    out.convert = bakeUniforms(gl::preprocessedSource("moments.comp.glsl", {"CONVERT", format}, {},
+                                                      {{"alias:technique", technique.moments->glslFile}}),
+                               {{"uTechnique", vec4Text(e.techniqueUniforms)},
+                                {"uSize", std::to_string(e.shadow.resolution)},
+                                {"uReversedZ", e.reversedZ ? "true" : "false"}});
+    out.blur = bakeUniforms(gl::preprocessedSource("moments.comp.glsl", {format}),
+                            {{"uSize", std::to_string(e.shadow.resolution)}});
+    if (vulkan) {
+        out.convert = vulkanUniforms(out.convert, 0, out.convertBindings);
+        out.blur = vulkanUniforms(out.blur, 0, out.blurBindings);
+    }
+    return out;
+}
+
 std::string shadowShaderCode(const ShadowExport& light, const ShaderTarget& target) {
+    if (light.momentTechnique || light.ownLookup) {
+        std::vector<VulkanBinding> bindings;
+        const std::string glsl = techniqueLookupCode(light, target.vulkan, &bindings);
+        if (target.language == ShaderLanguage::Glsl) return glsl;
+        // HLSL: the renderer's lookup is GLSL; its text to translate (vecN -> floatN, texture() -> Sample...).
+        std::string out = "// filter.kind " + std::string(filterTechnique(light.filter.kind).name) +
+                          ": ShadowLab's lookup is GLSL; translate it (vecN -> floatN, mix -> lerp, texture() -> Sample /"
+                          " SampleCmpLevelZero):\n";
+        std::istringstream lines(glsl);
+        for (std::string line; std::getline(lines, line);) out += "// " + line + "\n";
+        return out;
+    }
     return light.lightType == LightType::Point ? codeCube(light, target) : code2D(light, target);
 }
 

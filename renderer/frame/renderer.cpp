@@ -2,6 +2,7 @@
 #include "frame/renderer.h"
 
 #include "gl/gl_errors.h"
+#include "light/blur_texel.h"
 #include "light/volume_overlap.h"
 #include "scene/hash_combine.h"
 #include "scene/scene_animation.h"
@@ -374,10 +375,7 @@ FrameStats Renderer::render(const Scene& scene, const Settings& requested, const
         for (std::size_t v = 0; v < plan.views.size(); ++v) {
             const PlannedView& p = plan.views[v];
             const LightSpace& space = p.view.space;
-            // World blur widths: a perspective view's texel at the middle of its depth range.
-            const double texelWorld = space.perspective ? 2.0 * space.tanHalfFov / space.resolution * 0.5 *
-                                                              (space.nearPlane + space.farPlane)
-                                                        : space.texelWorldSize;
+            const double texelWorld = blurTexelWorldSize(space);  // world blur widths
             momentViews.push_back({p.view.id(), viewName(p.view), p.group, p.layer,
                                    p.action == ViewAction::Render || p.action == ViewAction::Clear, texelWorld,
                                    space.perspective, float(space.nearPlane), float(space.farPlane)});

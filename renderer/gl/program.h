@@ -4,8 +4,8 @@
 // embedded file (each file once per stage; #line keeps the compiler's line numbers, and a failure names the files),
 // so a snippet several shaders need is written once.
 #include "gl/gl_objects.h"
+#include "gl/shader_text.h"  // IncludeAliases, preprocessedSource
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -16,10 +16,6 @@ struct ShaderStage {
     std::string file;                  // name under shaders/, e.g. "main.frag.glsl"
     std::string text;                  // when not empty: the source itself (tests), `file` only names it
 };
-
-// `#include "alias:NAME"` includes the file the aliases map it to (a variant's choice of file, e.g. the filter
-// technique's lookup).
-using IncludeAliases = std::map<std::string, std::string>;
 
 // Defines are "NAME" or "NAME VALUE". Throws std::runtime_error with the compiler/linker log on failure
 // (a shader that does not compile is a bug in the tool, not a user error).
@@ -33,9 +29,5 @@ struct ProgramBuildTally {
     double milliseconds = 0.0;
 };
 ProgramBuildTally programBuildTally();
-
-// The full text handed to the compiler for one stage (for logs and tests): the embedded `file`, or `text` when given.
-std::string preprocessedSource(const std::string& file, const std::vector<std::string>& defines,
-                               const std::string& text = {}, const IncludeAliases& aliases = {});
 
 }  // namespace shadowlab::gl

@@ -55,10 +55,10 @@ protected:
     void SetUp() override {
         folder = testFolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
     }
-    void open(const std::string& preset = "default") {
+    void open(const std::string& preset = "default", int width = kWidth, int height = kHeight) {
         EditorOptions options = testOptions(folder);
         options.preset = preset;
-        harness = std::make_unique<EditorHarness>(options, kWidth, kHeight);
+        harness = std::make_unique<EditorHarness>(options, width, height);
         harness->settle();
     }
     // Frames at a host's modest rate until the running job ends; returns how many UI frames were built meanwhile.
@@ -331,6 +331,73 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     ASSERT_TRUE(back.settings.has_value());
     EXPECT_EQ(back.settings->lights[0].shadow.depthBias, best.depthBias);
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
+}
+
+// Suggest with a moments technique: the search combo (tune's --search) chooses the technique's own trade-off, the
+// tuner searches VSM's minVariance and bleedReduction (FilterTechnique::tradeOff) and the result goes into the preset;
+// the Tune tab says what was searched, for which light, and shows each candidate's keys. A small map keeps it fast.
+TEST_F(EditorAccuracy, SuggestWithAMomentsTechniqueSearchesItsTradeOffAndAppliesItToThePreset) {
+    const PresetLoadResult base = loadPresetFile(std::string(SHADOWLAB_SOURCE_DIR) + "/presets/default.json");
+    ASSERT_TRUE(base.settings.has_value());
+    Settings vsm = *base.settings;
+    vsm.filter.kind = FilterKind::Vsm;
+    vsm.filter.minVariance = 1e-3f;    // far off the best: a search must move a key
+    vsm.filter.bleedReduction = 0.6f;
+    vsm.lights[0].shadow.resolution = 256;
+    const std::string path = (folder / "vsm.json").string();
+    ASSERT_EQ(savePresetFile(path, vsm, "vsm"), "");
+    open(path, 1024, 576);  // a small window: each candidate measures the viewport's pixels
+    EditorHarness& h = *harness;
+    const AccuracyState& a = h.state().accuracy;
+    ASSERT_FALSE(h.state().preset.dirty(h.state().settings));
+    const Settings before = h.state().settings;
+
+    // The combo offers tune's four searches; "technique" = the technique's trade-off alone.
+    h.click("accuracy.search");
+    h.click("accuracy.search=technique");
+    ASSERT_EQ(a.search, TuneSearch::TradeOff);
+    h.click("accuracy.suggest");
+    // A frame every quarter second while it runs: on llvmpipe each UI frame draws the viewport, and at waitForJob's
+    // 50 frames a second the UI thread took more CPU than the search.
+    h.framesUntil([&] { return !a.running; }, "the technique search", kWorkerCeilingSeconds, 250);
+    h.frame(2);
+    ASSERT_TRUE(a.tune.has_value()) << a.error;
+    ASSERT_TRUE(a.tune->ok) << a.tune->error;
+    EXPECT_EQ(a.searched, TuneSearch::TradeOff);
+    EXPECT_EQ(a.searchedLight, 0u);
+    ASSERT_TRUE(a.tune->tradeOffSearched);
+    EXPECT_EQ(a.tune->tradeOffKeys, (std::vector<std::string>{"filter.minVariance", "filter.bleedReduction"}));
+    for (const TuneStep& s : a.tune->path) EXPECT_TRUE(s.tradeOffStep) << "candidate " << s.index << " searched the bias";
+    ASSERT_TRUE(a.tune->reachedLimit);
+    // Applied through the key table: the chosen values are the preset's, the bias untouched, the preset unsaved.
+    const FilterSettings& chosen = a.tune->best.filter;
+    EXPECT_EQ(h.state().settings.filter.minVariance, chosen.minVariance);
+    EXPECT_EQ(h.state().settings.filter.bleedReduction, chosen.bleedReduction);
+    EXPECT_TRUE(chosen.minVariance != before.filter.minVariance || chosen.bleedReduction != before.filter.bleedReduction)
+        << "the search kept the start";
+    EXPECT_EQ(h.state().settings.lights[0].shadow.depthBias, before.lights[0].shadow.depthBias);
+    EXPECT_TRUE(h.state().preset.dirty(h.state().settings));
+    EXPECT_EQ(a.stale, "") << "the numbers describe the applied settings";
+    // The search's best candidate is no worse than the start by the trade-off's criterion.
+    const TuneStep* best = nullptr;
+    for (const TuneStep& s : a.tune->path)
+        if (s.bestSoFar) best = &s;
+    ASSERT_NE(best, nullptr);
+    EXPECT_FALSE(betterTradeOff(a.tune->path.front(), *best));
+    std::printf("editor technique search at %dx%d: %zu candidates in %.1f s; start minVariance %g bleedReduction %g: error %.5f, "
+                "leak %.3f %%; chosen %g, %g: error %.5f, leak %.3f %%\n",
+                a.report->width, a.report->height, a.tune->path.size(), a.tune->seconds, double(before.filter.minVariance),
+                double(before.filter.bleedReduction), tradeOffError(a.tune->path.front()),
+                tradeOffBleeding(a.tune->path.front()), double(chosen.minVariance), double(chosen.bleedReduction),
+                tradeOffError(*best), tradeOffBleeding(*best));
+    // The panel: what was searched, for which light; the candidates with the keys' values; the status line.
+    EXPECT_TRUE(h.reveal("accuracy.searched"));
+    EXPECT_TRUE(h.reveal("accuracy.tradeOffSteps"));
+    EXPECT_TRUE(h.reveal("accuracy.result"));
+    ASSERT_NE(h.state().lastMessage(), nullptr);
+    EXPECT_NE(h.state().lastMessage()->text.find("filter.bleedReduction"), std::string::npos)
+        << h.state().lastMessage()->text;
+    h.saveWindow("accuracy-technique-suggested");
 }
 
 TEST_F(EditorAccuracy, OverlayViewShowsAcneInRed) {

@@ -8,6 +8,8 @@
 #include "accuracy/cause_shares.h"
 #include "editor/field_widgets.h"
 #include "editor/panels/panel_registry.h"
+#include "settings/settings_fields.h"
+#include "shading/filters/filter_technique.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -219,18 +221,76 @@ void costTab(const AccuracyState& a, const AccuracyReport& r) {
     }
 }
 
+// The technique's trade-off candidates: one column per key the search varies (its last word), acne, the error it
+// compares and the bleeding (soft numbers for a light with a size, else version 2's mean |S-V| and leak).
+void tradeOffTable(EditorState& state, const std::vector<TuneStep>& steps, float height) {
+    AccuracyState& a = state.accuracy;
+    const std::size_t keys = a.searchedKeys.size();
+    const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
+                                  ImGuiTableFlags_SizingFixedFit;
+    if (ImGui::BeginTable("tradeOffSteps", int(keys) + 4, flags, ImVec2(0, height))) {
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableSetupColumn("#");
+        for (std::size_t k = 0; k < keys; ++k) ImGui::TableSetupColumn(std::string(1, char('a' + k)).c_str());
+        const bool soft = !steps.empty() && steps.front().soft;
+        for (const char* h : {"acne", soft ? "soft |S-V|" : "|S-V|", soft ? "bleed" : "leak"}) ImGui::TableSetupColumn(h);
+        ImGui::TableHeadersRow();
+        for (const TuneStep& s : steps) {
+            ImGui::TableNextRow();
+            if (s.bestSoFar) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", s.index);
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("candidate %d: %s", s.index, s.phase.c_str());
+            for (std::size_t k = 0; k < keys; ++k) {
+                ImGui::TableNextColumn();
+                if (k < s.tradeOff.size()) ImGui::Text("%.3g", s.tradeOff[k]);
+            }
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", s.acnePercent);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.4f", tradeOffError(s));
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", tradeOffBleeding(s));
+        }
+        if (a.steps.size() != a.stepsFollowed) {  // follow the search: a new candidate scrolls into view
+            ImGui::SetScrollHereY(1.0f);
+            a.stepsFollowed = a.steps.size();
+        }
+        ImGui::EndTable();
+    }
+    state.controls.recordLastItem("accuracy.tradeOffSteps");
+}
+
 void biasSearchTab(PanelContext& ctx) {
     EditorState& state = ctx.state;
     AccuracyState& a = state.accuracy;
 
+    // What the running or newest search varies, and for which light.
+    if ((a.running && a.runningTune) || a.tune) {
+        std::string keys;
+        for (const std::string& k : a.searchedKeys) keys += (keys.empty() ? "" : ", ") + k;
+        const std::string what =
+            a.searched == TuneSearch::Bias       ? "the bias (DepthBias, slope, normal offset, cull, receiver plane)"
+            : a.searched == TuneSearch::TradeOff ? "filter.kind " + a.searchedTechnique + "'s trade-off: " + keys
+                                                 : "the bias, then filter.kind " + a.searchedTechnique + "'s trade-off: " + keys;
+        noteText("Searched " + what + ", for light " + std::to_string(a.searchedLight));
+        state.controls.recordLastItem("accuracy.searched");
+    }
     // The result first, so it is seen without scrolling; the path below follows the search.
     if (a.tune && a.tune->ok) {
-        // One line: the values are the highlighted row below (and in the Shadow map panel).
+        // The technique's chosen values (as keys of the whole preset), then the criterion's figures.
+        std::string values;
+        if (a.tune->tradeOffSearched)
+            for (const std::string& k : a.tune->tradeOffKeys)
+                values += keyOfLight(k, a.searchedLight) + " " + findSettingsField(k)->get(a.tune->closest).dump() + ", ";
         const std::string text =
             a.tune->reachedLimit
-                ? "applied: acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
+                ? "applied: " + values + "acne " + format("%.3f %%", a.tune->report.acnePercent) + " <= " +
                       format("%.1f %%", a.maxAcnePercent) + ", wrong pixels " +
-                      format("%.3f %%", a.tune->report.wrongPercent) + ", cull " + cullModeName(a.tune->best.lights.front().shadow.cullMode)
+                      format("%.3f %%", a.tune->report.wrongPercent) +
+                      (a.searched == TuneSearch::TradeOff
+                           ? ", leak " + format("%.3f %%", a.tune->report.leakPercent)
+                           : ", cull " + cullModeName(a.tune->best.lights.front().shadow.cullMode))
                 : "NO setting reached acne <= " + format("%.1f %%", a.maxAcnePercent) + " (least: " +
                       format("%.3f %%", a.tune->report.acnePercent) + "); stopped by " +
                       causeInfo(a.tune->blockingCause).name + ": " + causeInfo(a.tune->blockingCause).remedy +
@@ -246,6 +306,7 @@ void biasSearchTab(PanelContext& ctx) {
                               double(best.depthBias), double(best.slopeScaledDepthBias), double(best.normalOffset),
                               a.tune->path.size(), a.tune->seconds);
         }
+        for (const std::string& clamp : a.tune->startClamps) noteText("start: " + clamp);
         if (a.tune->reachedLimit) {
             if (ImGui::SmallButton("Save as preset...")) ctx.actions.openSaveAs();
             state.controls.recordLastItem("accuracy.saveAs");
@@ -253,52 +314,71 @@ void biasSearchTab(PanelContext& ctx) {
         }
         ImGui::TextDisabled("%zu candidates, %.1f s", a.tune->path.size(), a.tune->seconds);
     } else if (a.steps.empty()) {
-        noteText(format("Suggest bias: acne <= %.1f %%, then the fewest wrong pixels", a.maxAcnePercent));
+        noteText(format("Suggest: acne <= %.1f %%, then the fewest wrong pixels (bias) or the least error (a "
+                        "technique's trade-off)", a.maxAcnePercent));
     }
 
+    std::vector<TuneStep> biasSteps, tradeOffSteps;
+    for (const TuneStep& s : a.steps) (s.tradeOffStep ? tradeOffSteps : biasSteps).push_back(s);
+    const int tables = (biasSteps.empty() ? 0 : 1) + (tradeOffSteps.empty() ? 0 : 1);
     // Every column within the sidebar, none behind a horizontal scroll: short headers with their legend, and each
     // candidate's phase of the search on hovering its row (the newest one's above the table while it runs).
-    if (!a.steps.empty()) {
+    if (!biasSteps.empty()) {
         noteText("bias = DepthBias, slope = SlopeScaledDepthBias, normal = normal offset (texels); acne, leak, wrong "
                  "in %" + std::string(a.running ? "; now: " + a.steps.back().phase : std::string()));
         state.controls.recordLastItem("accuracy.stepsLegend");
     }
-    const float tableHeight = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
+    const float avail = std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(), ImGui::GetContentRegionAvail().y);
+    const float tableHeight = tables == 2 ? std::max(3.0f * ImGui::GetTextLineHeightWithSpacing(),
+                                                     0.5f * avail - 2.0f * ImGui::GetTextLineHeightWithSpacing())
+                                          : avail;
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit;
-    if (ImGui::BeginTable("steps", 8, flags, ImVec2(0, tableHeight))) {
-        ImGui::TableSetupScrollFreeze(0, 1);
-        for (const char* h : {"#", "bias", "slope", "normal", "cull", "acne", "leak", "wrong"}) ImGui::TableSetupColumn(h);
-        ImGui::TableHeadersRow();
-        for (const TuneStep& s : a.steps) {
-            ImGui::TableNextRow();
-            if (s.bestSoFar) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
-            ImGui::TableNextColumn();
-            ImGui::Text("%d", s.index);
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("candidate %d: %s", s.index, s.phase.c_str());
-            ImGui::TableNextColumn();
-            ImGui::Text("%.6g", double(s.depthBias));
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3g", double(s.slopeScaledDepthBias));
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3g", double(s.normalOffset));
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(cullModeName(s.cullMode).c_str());
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3f", s.acnePercent);
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3f", s.leakPercent);
-            ImGui::TableNextColumn();
-            ImGui::Text("%.3f", s.wrongPercent);
+    if (tradeOffSteps.empty() || !biasSteps.empty()) {  // the bias search's candidates (an empty table before any)
+        if (ImGui::BeginTable("steps", 8, flags, ImVec2(0, tableHeight))) {
+            ImGui::TableSetupScrollFreeze(0, 1);
+            for (const char* h : {"#", "bias", "slope", "normal", "cull", "acne", "leak", "wrong"}) ImGui::TableSetupColumn(h);
+            ImGui::TableHeadersRow();
+            for (const TuneStep& s : biasSteps) {
+                ImGui::TableNextRow();
+                if (s.bestSoFar) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg1, IM_COL32(40, 90, 50, 255));
+                ImGui::TableNextColumn();
+                ImGui::Text("%d", s.index);
+                if (ImGui::IsItemHovered()) ImGui::SetTooltip("candidate %d: %s", s.index, s.phase.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%.6g", double(s.depthBias));
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3g", double(s.slopeScaledDepthBias));
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3g", double(s.normalOffset));
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(cullModeName(s.cullMode).c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", s.acnePercent);
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", s.leakPercent);
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", s.wrongPercent);
+            }
+            // Follow the search: a new candidate scrolls into view.
+            if (a.steps.size() != a.stepsFollowed && tradeOffSteps.empty()) {
+                ImGui::SetScrollHereY(1.0f);
+                a.stepsFollowed = a.steps.size();
+            }
+            ImGui::EndTable();
         }
-        // Follow the search: a new candidate scrolls into view.
-        if (a.steps.size() != a.stepsFollowed) {
-            ImGui::SetScrollHereY(1.0f);
-            a.stepsFollowed = a.steps.size();
-        }
-        ImGui::EndTable();
+        state.controls.recordLastItem("accuracy.steps");
     }
-    state.controls.recordLastItem("accuracy.steps");
+    if (!tradeOffSteps.empty()) {
+        std::string legend;  // the key columns by letter: every column within the sidebar
+        for (std::size_t k = 0; k < a.searchedKeys.size(); ++k)
+            legend += std::string(1, char('a' + k)) + " = " + a.searchedKeys[k] + ", ";
+        noteText(legend + "acne %, the error it compares, " +
+                 (tradeOffSteps.front().soft ? "bleeding % (soft reference)" : "leak %") +
+                 (a.running ? "; now: " + a.steps.back().phase : std::string()));
+        state.controls.recordLastItem("accuracy.tradeOffLegend");
+        tradeOffTable(state, tradeOffSteps, tableHeight);
+    }
 }
 
 // Flicker: what moves, by how much, for how many frames; the figures beside the V-changed share; the overlay.
@@ -390,15 +470,47 @@ void drawAccuracyPanel(PanelContext& ctx) {
         ImGui::SetTooltip("Measure this view against the exact reference (shadow rays)");
     ImGui::SameLine();
     bool startedSearch = false;
-    if (ImGui::Button("Suggest bias")) {
+    // The button says what it will search for the chosen technique (the search combo beside it: tune's --search).
+    const FilterKind kind = state.settings.filter.kind;
+    const TuneSearch willSearch = resolveTuneSearch(TuneScope{a.search, true}, kind);
+    const std::string technique = filterTechnique(kind).name;
+    const std::string suggestLabel = willSearch == TuneSearch::Bias       ? "Suggest bias"
+                                     : willSearch == TuneSearch::TradeOff ? "Suggest " + technique
+                                                                          : "Suggest bias + " + technique;
+    if (ImGui::Button((suggestLabel + "###suggest").c_str())) {
         ctx.actions.suggestBias();
         startedSearch = true;
     }
     state.controls.recordLastItem("accuracy.suggest");
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        std::string keys;
+        for (const std::string& k : tradeOffKeysOf(TuneScope{a.search, true}, kind)) keys += (keys.empty() ? "" : ", ") + k;
+        const std::string bias = "DepthBias, slope, normal offset (and cull mode when culled casters cause wrong pixels) "
+                                 "for acne <= " + format("%.1f %%", a.maxAcnePercent) + " with the fewest wrong pixels";
+        const std::string tradeOff = "filter.kind " + technique + "'s trade-off (" + keys + ") for acne <= " +
+                                     format("%.1f %%", a.maxAcnePercent) +
+                                     ", then the least error (soft numbers for a light with a size)";
+        const std::string what = willSearch == TuneSearch::Bias       ? bias
+                                 : willSearch == TuneSearch::TradeOff ? tradeOff
+                                                                      : bias + ", then " + tradeOff;
+        ImGui::SetTooltip("Search %s, and apply the result to the selected light", what.c_str());
+    }
+    // What Suggest searches, as `shadowlab tune --search`: auto = the technique's trade-off when it declares one.
+    sameLineIfFits(100.0f);
+    ImGui::SetNextItemWidth(100.0f);
+    if (ImGui::BeginCombo("##search", tuneSearchName(a.search), ImGuiComboFlags_HeightLargest)) {
+        for (TuneSearch option : {TuneSearch::Auto, TuneSearch::Bias, TuneSearch::TradeOff, TuneSearch::Both}) {
+            const bool selected = option == a.search;
+            if (ImGui::Selectable(tuneSearchName(option), selected)) a.search = option;
+            state.controls.recordLastItem(std::string("accuracy.search=") + tuneSearchName(option));
+        }
+        ImGui::EndCombo();
+    }
+    state.controls.recordLastItem("accuracy.search");
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("Search DepthBias, slope, normal offset (and cull mode when culled casters cause wrong "
-                          "pixels) for acne <= %.1f %% with the fewest wrong pixels, and apply it",
-                          a.maxAcnePercent);
+        ImGui::SetTooltip("What Suggest searches (tune --search): auto = the technique's own trade-off when it declares "
+                          "one (vsm, evsm, msm, pcss), else the bias; bias; technique = its trade-off; both = the bias, "
+                          "then the trade-off from the bias found");
     // The soft reference's rays per pixel (reference.softRays): read only for a light of size > 0.
     int softRays = state.settings.reference.softRays;
     ImGui::SetNextItemWidth(110.0f);
@@ -420,7 +532,8 @@ void drawAccuracyPanel(PanelContext& ctx) {
     char overlay[160];
     if (a.running)
         std::snprintf(overlay, sizeof overlay, "%s %s (%.0f %%)",
-                      a.runningTune ? "bias search:" : a.runningFlicker ? "flicker:" : "measure:",
+                      a.runningTune ? (a.searched == TuneSearch::Bias ? "bias search:" : "search:")
+                      : a.runningFlicker ? "flicker:" : "measure:",
                       a.stage.c_str(), double(a.progress) * 100.0);
     else if (!a.error.empty())
         std::snprintf(overlay, sizeof overlay, "%s", a.stage.c_str());
@@ -428,7 +541,7 @@ void drawAccuracyPanel(PanelContext& ctx) {
         std::snprintf(overlay, sizeof overlay, "live count %dx%d in %.0f ms", a.report->width, a.report->height,
                       a.reportSeconds * 1e3);
     else if (a.report)
-        std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? "bias search at" : "measured",
+        std::snprintf(overlay, sizeof overlay, "%s %dx%d in %.2f s", a.reportFromSearch ? (a.searched == TuneSearch::Bias ? "bias search at" : "search at") : "measured",
                       a.report->width, a.report->height, a.reportSeconds);
     else
         std::snprintf(overlay, sizeof overlay, "not measured yet");
