@@ -133,16 +133,18 @@ std::string viewCell(const ViewFrame& v) {
     return state + " " + fixed(percentOf(v.texelsRendered, v.texels), 2) + "% " + fixed(v.ms, 3);
 }
 
-// The first caster a chosen animation moves (what the flagged-static policy names and --cache-error's camera sees).
-std::optional<std::size_t> firstMovingInstance(const Scene& scene, const std::vector<int>& chosen,
-                                               const CasterSettings& casters) {
+// The casters a chosen animation moves, in scene order (the first is what the flagged-static policy names; all are
+// what --cache-error's camera sees).
+std::vector<std::size_t> movingInstances(const Scene& scene, const std::vector<int>& chosen,
+                                         const CasterSettings& casters) {
     const std::vector<char> statics = staticInstances(scene, chosen, casters);
     const std::vector<char> casting = castingInstances(scene, casters);
+    std::vector<std::size_t> moving;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const int node = scene.instances[i].node;
-        if (!statics[i] && casting[i] && node >= 0 && std::size_t(node) < scene.nodes.size()) return i;
+        if (!statics[i] && casting[i] && node >= 0 && std::size_t(node) < scene.nodes.size()) moving.push_back(i);
     }
-    return std::nullopt;
+    return moving;
 }
 
 void addWarnings(std::vector<std::string>& into, const std::vector<std::string>& warnings) {
@@ -252,7 +254,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
         base = *isolated;
     }
     const double start = base.animation.time;
-    const std::optional<std::size_t> movingInstance = firstMovingInstance(scene, *chosen, base.casters);
+    const std::vector<std::size_t> moving = movingInstances(scene, *chosen, base.casters);
     std::vector<Policy> policies;
     std::string cachedName;
     if (o.cacheError) {
@@ -261,7 +263,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
         policies.push_back({"cachedStatic", withUpdate(base, "cachedStatic"), ""});
         for (int n : o.intervals)
             policies.push_back({"everyNthFrame " + std::to_string(n), withUpdate(base, "everyNthFrame", n), ""});
-        const std::string mover = movingInstance ? scene.nodes[std::size_t(scene.instances[*movingInstance].node)].path : "";
+        const std::string mover = moving.empty() ? "" : scene.nodes[std::size_t(scene.instances[moving[0]].node)].path;
         if (!mover.empty()) {
             Policy flagged{"cachedStatic, " + mover + " static", withUpdate(base, "cachedStatic"), mover};
             flagged.settings.casters.forcedStatic.push_back(mover);
@@ -296,8 +298,8 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
         std::vector<double> times;  // each frame's animation time (a walk alone: animation.time throughout)
         for (int f = 0; f < motion.frames; ++f) times.push_back(play ? animationTimeAtFrame(start, motion, f) : start);
         // --cache-error sees the first caster that moves where the settings leave the camera to auto-framing.
-        const bool onMover = o.cacheError && movingInstance && base.camera.autoFrame && base.camera.sceneCamera < 0;
-        const Camera camera = onMover ? cameraOnMover(scene, *chosen, *movingInstance, times, base.camera, aspect)
+        const bool onMover = o.cacheError && !moving.empty() && base.camera.autoFrame && base.camera.sceneCamera < 0;
+        const Camera camera = onMover ? cameraOnMovers(scene, *chosen, {moving.front()}, times, base.camera, aspect)
                                       : cameraFor(base.camera, scene, aspect);
         std::cout << "bench --animation: " << scene.name << " (" << scene.triangleCount() << " triangles), view "
                   << bench.width << "x" << bench.height << ", "
@@ -306,7 +308,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
                   << (play ? " of " + fixed(motion.step, 4) + " s from " + fixed(start, 4) + " s" : "")
                   << (o.cacheError ? ", light " + std::to_string(measuredLight) + " alone" : "") << "\n";
         if (onMover)
-            std::cout << "camera: on " << scene.nodes[std::size_t(scene.instances[*movingInstance].node)].path
+            std::cout << "camera: on " << scene.nodes[std::size_t(scene.instances[moving[0]].node)].path
                       << " (the first caster that moves; fix camera.position / target with camera.autoFrame=false, "
                          "or camera.sceneCamera, to measure from another view)\n";
         if (walk.direction)
