@@ -6,6 +6,7 @@
 #include "cli/command_input.h"
 #include "cli/json_output.h"
 #include "cli/measure_motion.h"
+#include "cli/mover_camera.h"
 #include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/renderer.h"
@@ -16,9 +17,11 @@
 #include "scene/scene_source.h"
 #include "settings/settings_fields.h"
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -69,10 +72,14 @@ struct ViewFrame {
     int castersDrawn = 0;
     std::size_t texelsRedrawn = 0;
     std::string reason;
+    // Texels its map got from a draw this frame (full: all of them; static + dynamic: the rectangle; scrolled: the
+    // strips that came into view; reused: none) of `texels` (resolution²).
+    std::size_t texelsRendered = 0, texels = 0;
 };
 struct PolicyFrame {
     double shadowMs = 0.0;  // the views that ran (0: none ran)
-    int rendered = 0, full = 0, staticPlusDynamic = 0, reused = 0;
+    int rendered = 0, full = 0, staticPlusDynamic = 0, scrolled = 0, reused = 0;
+    std::size_t texelsRendered = 0, texels = 0;  // over its views
     std::vector<ViewFrame> views;
     std::vector<std::string> warnings;
 };
@@ -83,40 +90,61 @@ PolicyFrame summarize(const FrameStats& stats) {
     f.warnings = stats.warnings;
     for (const ShadowViewStats& v : stats.views) {
         if (!v.hasView) continue;
+        const std::size_t texels = std::size_t(v.resolution) * std::size_t(v.resolution);
+        const std::size_t rendered = !v.ran ? 0 : v.cache == "full" ? texels : v.texelsRedrawn;
         f.views.push_back({v.name, v.ran ? v.cache : "reused", v.ran ? v.milliseconds.value_or(0.0) : 0.0,
-                           v.ran ? v.castersDrawn : 0, v.texelsRedrawn, v.reason});
+                           v.ran ? v.castersDrawn : 0, v.texelsRedrawn, v.reason, rendered, texels});
+        f.texelsRendered += rendered;
+        f.texels += texels;
         if (!v.ran) ++f.reused;
         else if (v.cache == "static + dynamic") ++f.staticPlusDynamic, ++f.rendered;
+        else if (v.cache == "scrolled") ++f.scrolled, ++f.rendered;
         else ++f.full, ++f.rendered;
     }
     return f;
 }
 
+double percentOf(std::size_t part, std::size_t whole) { return whole > 0 ? 100.0 * double(part) / double(whole) : 0.0; }
+
 nlohmann::json frameJson(const PolicyFrame& f) {
     nlohmann::json views = nlohmann::json::array();
     for (const ViewFrame& v : f.views)
         views.push_back({{"view", v.name}, {"cache", v.cache}, {"ms", v.ms}, {"castersDrawn", v.castersDrawn},
-                         {"texelsRedrawn", v.texelsRedrawn}, {"reason", v.reason}});
+                         {"texelsRedrawn", v.texelsRedrawn}, {"texelsRendered", v.texelsRendered},
+                         {"texels", v.texels}, {"texelsRenderedPercent", percentOf(v.texelsRendered, v.texels)},
+                         {"reason", v.reason}});
     return {{"shadowPassMs", f.shadowMs}, {"viewsRendered", f.rendered}, {"viewsFull", f.full},
-            {"viewsStaticPlusDynamic", f.staticPlusDynamic}, {"viewsReused", f.reused}, {"views", views}};
+            {"viewsStaticPlusDynamic", f.staticPlusDynamic}, {"viewsScrolled", f.scrolled},
+            {"viewsReused", f.reused}, {"texelsRendered", f.texelsRendered}, {"texels", f.texels},
+            {"texelsRenderedPercent", percentOf(f.texelsRendered, f.texels)}, {"views", views}};
 }
 
 std::string viewsText(const PolicyFrame& f) {
     std::string text = std::to_string(f.rendered);
     if (f.staticPlusDynamic > 0) text += " (" + std::to_string(f.staticPlusDynamic) + " s+d)";
+    if (f.scrolled > 0) text += " (" + std::to_string(f.scrolled) + " scr)";
     return text + " / " + std::to_string(f.reused);
 }
 
-// The node path of the first caster a chosen animation moves: what the flagged-static policy names.
-std::string firstMovingCaster(const Scene& scene, const std::vector<int>& chosen, const CasterSettings& casters) {
+// One view's cell of the per-frame table: its cache state, the share of its texels drawn, its ms.
+std::string viewCell(const ViewFrame& v) {
+    if (v.cache == "reused") return "reused";
+    const std::string state = v.cache == "static + dynamic" ? "s+d" : v.cache;
+    return state + " " + fixed(percentOf(v.texelsRendered, v.texels), 2) + "% " + fixed(v.ms, 3);
+}
+
+// The casters a chosen animation moves, in scene order (the first is what the flagged-static policy names; all are
+// what --cache-error's camera sees).
+std::vector<std::size_t> movingInstances(const Scene& scene, const std::vector<int>& chosen,
+                                         const CasterSettings& casters) {
     const std::vector<char> statics = staticInstances(scene, chosen, casters);
     const std::vector<char> casting = castingInstances(scene, casters);
+    std::vector<std::size_t> moving;
     for (std::size_t i = 0; i < scene.instances.size(); ++i) {
         const int node = scene.instances[i].node;
-        if (!statics[i] && casting[i] && node >= 0 && std::size_t(node) < scene.nodes.size())
-            return scene.nodes[std::size_t(node)].path;
+        if (!statics[i] && casting[i] && node >= 0 && std::size_t(node) < scene.nodes.size()) moving.push_back(i);
     }
-    return "";
+    return moving;
 }
 
 void addWarnings(std::vector<std::string>& into, const std::vector<std::string>& warnings) {
@@ -127,7 +155,7 @@ void addWarnings(std::vector<std::string>& into, const std::vector<std::string>&
 }  // namespace
 
 bool BenchAnimationOptions::requested(const CLI::App& bench) const {
-    return bench.get_option("--animation")->count() > 0;
+    return bench.get_option("--animation")->count() > 0 || bench.get_option("--walk")->count() > 0;
 }
 
 void addBenchAnimationOptions(CLI::App& bench, BenchAnimationOptions& o) {
@@ -136,6 +164,12 @@ void addBenchAnimationOptions(CLI::App& bench, BenchAnimationOptions& o) {
                      "time each frame's shadow pass with the lights' shadow.update against every view re-rendered")
         ->expected(0, 1)
         ->type_name("[NAME|INDEX]");
+    o.animationOption = animation;
+    bench.add_option("--walk", o.walk,
+                     "move the camera and its target by this vector every frame (world units; with or without "
+                     "--animation) and time each frame's shadow pass with the lights' shadow.update against every view "
+                     "re-rendered, with the share of texels each view re-rendered (stable cascades scroll)")
+        ->type_name("DX,DY,DZ");
     bench.add_option("--step", o.step, "with --animation: seconds per frame (default 1/30)")
         ->type_name("SECONDS")
         ->needs(animation);
@@ -182,11 +216,31 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
     if (!loaded.scene) return fail(loaded.error);
     const Scene& scene = *loaded.scene;
     if (error = motionError(motion, scene.bounds); !error.empty()) return fail(error);
-    const std::optional<std::vector<int>> chosen = chosenAnimations(scene, requested->animation.play, error);
-    if (!chosen) return fail(error);
-    if (chosen->empty())
-        return fail("bench --animation: the scene " + scene.name + " has no animation to play (animation.play " +
-                    requested->animation.play + ")");
+    // --animation plays the scene's animation; a walk alone keeps the pose of animation.time.
+    const bool play = o.animationOption && o.animationOption->count() > 0;
+    std::optional<std::vector<int>> chosen = std::vector<int>{};
+    if (play) {
+        chosen = chosenAnimations(scene, requested->animation.play, error);
+        if (!chosen) return fail(error);
+        if (chosen->empty())
+            return fail("bench --animation: the scene " + scene.name + " has no animation to play (animation.play " +
+                        requested->animation.play + ")");
+    }
+    // --walk: a camera motion (accuracy/motion.h) whose step is the vector's length, along it.
+    Motion walk;
+    walk.kind = MotionKind::Camera;
+    walk.frames = motion.frames;
+    if (!o.walk.empty()) {
+        const std::optional<glm::dvec3> by = parseVectorOption(o.walk, "--walk", error);
+        if (!by) return fail(error);
+        const double diameter = scene.bounds.empty ? 2.0 : 2.0 * double(scene.bounds.radius());
+        const double length = glm::length(*by);
+        if (!(length > 0.0) || !std::isfinite(length) || length > kMaxCameraStepDiameters * diameter)
+            return fail("--walk " + o.walk + ": the camera's move per frame must be non-zero and at most the scene " +
+                        scene.name + "'s diameter (" + fixed(diameter, 1) + " world units)");
+        walk.step = length;
+        walk.direction = *by;
+    }
 
     // --cache-error measures one light (the meter's rule): the frames are that light's alone, timed and measured.
     Settings base = withEffectiveLights(*requested, scene);
@@ -200,6 +254,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
         base = *isolated;
     }
     const double start = base.animation.time;
+    const std::vector<std::size_t> moving = movingInstances(scene, *chosen, base.casters);
     std::vector<Policy> policies;
     std::string cachedName;
     if (o.cacheError) {
@@ -208,7 +263,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
         policies.push_back({"cachedStatic", withUpdate(base, "cachedStatic"), ""});
         for (int n : o.intervals)
             policies.push_back({"everyNthFrame " + std::to_string(n), withUpdate(base, "everyNthFrame", n), ""});
-        const std::string mover = firstMovingCaster(scene, *chosen, base.casters);
+        const std::string mover = moving.empty() ? "" : scene.nodes[std::size_t(scene.instances[moving[0]].node)].path;
         if (!mover.empty()) {
             Policy flagged{"cachedStatic, " + mover + " static", withUpdate(base, "cachedStatic"), mover};
             flagged.settings.casters.forcedStatic.push_back(mover);
@@ -239,36 +294,51 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
             meter = std::make_unique<AccuracyMeter>();
             scratch = std::make_unique<Renderer>();
         }
-        const Camera camera = cameraFor(base.camera, scene, double(bench.width) / bench.height);
-        const std::string timing = renderers.front()->glInfo().softwareRasterizer ? "CPU" : "GPU";
+        const double aspect = double(bench.width) / bench.height;
+        std::vector<double> times;  // each frame's animation time (a walk alone: animation.time throughout)
+        for (int f = 0; f < motion.frames; ++f) times.push_back(play ? animationTimeAtFrame(start, motion, f) : start);
+        // --cache-error sees the first caster that moves where the settings leave the camera to auto-framing.
+        const bool onMover = o.cacheError && !moving.empty() && base.camera.autoFrame && base.camera.sceneCamera < 0;
+        const Camera camera = onMover ? cameraOnMovers(scene, *chosen, {moving.front()}, times, base.camera, aspect)
+                                      : cameraFor(base.camera, scene, aspect);
         std::cout << "bench --animation: " << scene.name << " (" << scene.triangleCount() << " triangles), view "
-                  << bench.width << "x" << bench.height << ", " << animationNote(scene, base.animation) << "\n"
-                  << motion.frames << " frames of " << motion.step << " s from " << start << " s"
-                  << (o.cacheError ? ", light " + std::to_string(measuredLight) + " alone" : "")
-                  << "\ngl: " << renderers.front()->glInfo().renderer << "\n";
+                  << bench.width << "x" << bench.height << ", "
+                  << (play ? animationNote(scene, base.animation) : "no animation played (a walk alone)") << "\n"
+                  << motion.frames << " frames"
+                  << (play ? " of " + fixed(motion.step, 4) + " s from " + fixed(start, 4) + " s" : "")
+                  << (o.cacheError ? ", light " + std::to_string(measuredLight) + " alone" : "") << "\n";
+        if (onMover)
+            std::cout << "camera: on " << scene.nodes[std::size_t(scene.instances[moving[0]].node)].path
+                      << " (the first caster that moves; fix camera.position / target with camera.autoFrame=false, "
+                         "or camera.sceneCamera, to measure from another view)\n";
+        if (walk.direction)
+            std::cout << "walk: the camera moves " << o.walk << " a frame (" << fixed(walk.step, 3)
+                      << " world units), from " << fixed(camera.position.x, 2) << "," << fixed(camera.position.y, 2)
+                      << "," << fixed(camera.position.z, 2) << "\n";
+        std::cout << "gl: " << renderers.front()->glInfo().renderer << "\n";
 
         Scene animated = scene;
         // [frame][policy]; the last frame is the still one (--cache-error plays no still frame).
         std::vector<std::vector<PolicyFrame>> frames;
         std::vector<std::vector<AccuracyNumbers>> accuracy;  // --cache-error: [frame][policy]
         std::vector<std::vector<CacheError>> cacheErrors;
-        std::vector<double> times;
         std::vector<std::vector<std::string>> warnings(policies.size());
         std::string timingSource;
         const int played = motion.frames + (o.cacheError ? 0 : 1);
         for (int f = 0; f < played; ++f) {
             const bool still = f == motion.frames;
-            const double t = animationTimeAtFrame(start, motion, still ? f - 1 : f);
+            const int at = still ? f - 1 : f;  // the still frame: the last pose and camera again
+            const double t = times[std::size_t(at)];
             AnimationSettings pose = base.animation;
             pose.time = float(t);
-            if (!still) poseScene(animated, *chosen, t);
-            times.push_back(t);
+            if (!still && play) poseScene(animated, *chosen, t);
+            const Camera frameCamera = walk.direction ? cameraAtFrame(camera, walk, at) : camera;
             frames.emplace_back();
             if (!o.cacheError) {
                 for (std::size_t p = 0; p < policies.size(); ++p) {
                     Settings s = policies[p].settings;
                     s.animation = pose;
-                    FrameStats stats = renderers[p]->render(animated, s, camera, target);
+                    FrameStats stats = renderers[p]->render(animated, s, frameCamera, target);
                     if (!stats.ok) return fail(policies[p].name + ", frame " + std::to_string(f) + ": " + stats.error);
                     renderers[p]->waitForTimings(stats);
                     timingSource = stats.timingSource;
@@ -282,7 +352,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
             full.animation = pose;
             scratch->invalidateShadowMap();
             meter->setToolRenderer(scratch.get());
-            const AccuracyReport baseline = meter->measure(animated, full, camera, bench.width, bench.height);
+            const AccuracyReport baseline = meter->measure(animated, full, frameCamera, bench.width, bench.height);
             if (!baseline.ok) return fail("frame " + std::to_string(f) + " re-rendered: " + baseline.error);
             accuracy.emplace_back();
             cacheErrors.emplace_back();
@@ -290,7 +360,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
                 Settings s = policies[p].settings;
                 s.animation = pose;
                 meter->setToolRenderer(renderers[p].get());
-                const AccuracyReport r = meter->measure(animated, s, camera, bench.width, bench.height);
+                const AccuracyReport r = meter->measure(animated, s, frameCamera, bench.width, bench.height);
                 if (!r.ok) return fail(policies[p].name + ", frame " + std::to_string(f) + ": " + r.error);
                 FrameStats stats = meter->lastToolFrame();
                 renderers[p]->waitForTimings(stats);
@@ -303,6 +373,8 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
             meter->setToolRenderer(nullptr);
         }
         const bool cpu = timingSource.rfind("CPU", 0) == 0;
+        // Who drew the frames, as the tables label them: "CPU: llvmpipe ..." or "GPU: NVIDIA H200 ...".
+        const std::string device = std::string(cpu ? "CPU: " : "GPU: ") + renderers.front()->glInfo().renderer;
         std::cout << "times: " << timingSource << (cpu ? " — CPU times, not a GPU's" : "") << "\n";
         for (std::size_t p = 0; p < policies.size(); ++p)
             for (const std::string& w : warnings[p]) std::cerr << "warning: " << policies[p].name << ": " << w << "\n";
@@ -314,66 +386,97 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
                               {"glRenderer", renderers.front()->glInfo().renderer},
                               {"timingSource", timingSource},
                               {"cpuTimes", cpu},
+                              {"device", device},
                               {"animation", base.animation.play},
                               {"startTime", start},
                               {"step", motion.step},
                               {"frames", motion.frames},
+                              {"played", play},
                               {"lights", benchLightsJson(base)}};
+        if (walk.direction) doc["walk"] = {walk.direction->x, walk.direction->y, walk.direction->z};
+        doc["camera"] = {{"position", {camera.position.x, camera.position.y, camera.position.z}},
+                         {"target", {camera.target.x, camera.target.y, camera.target.z}},
+                         {"onMover", onMover}};
         nlohmann::json policyNames = nlohmann::json::array();
         for (const Policy& p : policies) policyNames.push_back(p.name);
         doc["policies"] = policyNames;
 
         if (!o.cacheError) {
-            // Per frame: the cached policy (0) against the full re-render (1).
-            std::cout << "\nper frame (views rendered / reused; s+d = static + dynamic), shadow pass ms:\n"
-                      << std::left << std::setw(7) << "frame" << std::setw(9) << "time s" << std::setw(18)
-                      << "cached views" << std::setw(12) << "cached ms" << std::setw(14) << "full views"
-                      << std::setw(12) << "full ms" << "cached/full\n";
+            // Per frame: the cached policy (0) against the full re-render (1); "drawn %": the share of the views'
+            // texels a draw wrote this frame (full re-render: every texel of every view that ran).
+            std::cout << "\nper frame (views rendered / reused; s+d = static + dynamic, scr = scrolled), shadow pass "
+                         "ms, texels drawn %:\n"
+                      << std::left << std::setw(7) << "frame" << std::setw(9) << "time s" << std::setw(20)
+                      << "cached views" << std::setw(12) << "cached ms" << std::setw(10) << "drawn %" << std::setw(14)
+                      << "full views" << std::setw(12) << "full ms" << std::setw(10) << "drawn %" << "cached/full ms\n";
             nlohmann::json perFrame = nlohmann::json::array();
             std::vector<double> cachedMs, fullMs;
+            std::size_t cachedTexels = 0, fullTexels = 0, allTexels = 0;  // over the moving frames
             for (std::size_t f = 0; f < frames.size(); ++f) {
                 const PolicyFrame& c = frames[f][0];
                 const PolicyFrame& u = frames[f][1];
                 const bool still = int(f) == motion.frames;
+                const double time = times[std::min(f, times.size() - 1)];
                 const double share = u.shadowMs > 0.0 ? 100.0 * c.shadowMs / u.shadowMs : 0.0;
                 std::cout << std::left << std::setw(7) << (still ? "still" : std::to_string(f)) << std::setw(9)
-                          << fixed(times[f], 3) << std::setw(18) << viewsText(c) << std::setw(12)
-                          << fixed(c.shadowMs, 3) << std::setw(14) << viewsText(u) << std::setw(12)
-                          << fixed(u.shadowMs, 3) << fixed(share, 1) << " %" << (f == 0 ? "  (first frame: every view)" : "")
+                          << (play ? fixed(time, 3) : "-") << std::setw(20) << viewsText(c) << std::setw(12) << fixed(c.shadowMs, 3)
+                          << std::setw(10) << fixed(percentOf(c.texelsRendered, c.texels), 2) << std::setw(14)
+                          << viewsText(u) << std::setw(12) << fixed(u.shadowMs, 3) << std::setw(10)
+                          << fixed(percentOf(u.texelsRendered, u.texels), 2) << fixed(share, 1) << " %"
+                          << (f == 0 ? "  (first frame: every view)" : "")
                           << (still ? "  (the last pose again: nothing moved)" : "") << "\n";
-                perFrame.push_back({{"frame", f}, {"time", times[f]}, {"still", still},
+                perFrame.push_back({{"frame", f}, {"time", time}, {"still", still},
                                     {"cached", frameJson(c)}, {"full", frameJson(u)}});
                 if (f > 0 && !still) {
                     cachedMs.push_back(c.shadowMs);
                     fullMs.push_back(u.shadowMs);
+                    cachedTexels += c.texelsRendered;
+                    fullTexels += u.texelsRendered;
+                    allTexels += c.texels;
                 }
             }
             doc["perFrame"] = perFrame;
+            // Per frame and view, the cached policy: what each view got, the share of its texels drawn, its ms.
+            const std::vector<ViewFrame>& names = frames.front()[0].views;
+            std::cout << "\nper frame and view, cached (state, texels drawn %, ms):\n" << std::left << std::setw(7)
+                      << "frame";
+            for (const ViewFrame& v : names) std::cout << std::setw(28) << v.name;
+            std::cout << "\n";
+            for (std::size_t f = 0; f < frames.size(); ++f) {
+                std::cout << std::left << std::setw(7) << (int(f) == motion.frames ? "still" : std::to_string(f));
+                for (const ViewFrame& v : frames[f][0].views) std::cout << std::setw(28) << viewCell(v);
+                std::cout << "\n";
+            }
             // Per view, over the moving frames (1 .. N-1).
             std::cout << "\nper view, frames 1.." << motion.frames - 1 << " (median ms over the frames it rendered):\n"
                       << std::left << std::setw(22) << "view" << std::setw(7) << "full" << std::setw(7) << "s+d"
-                      << std::setw(9) << "reused" << std::setw(12) << "cached ms" << "full ms\n";
+                      << std::setw(10) << "scrolled" << std::setw(9) << "reused" << std::setw(12) << "cached ms"
+                      << std::setw(10) << "full ms" << "texels drawn % (cached)\n";
             nlohmann::json perView = nlohmann::json::array();
-            const std::vector<ViewFrame>& names = frames.front()[0].views;
             for (std::size_t v = 0; v < names.size(); ++v) {
-                int fullCount = 0, sd = 0, reused = 0;
+                int fullCount = 0, sd = 0, scrolled = 0, reused = 0;
+                std::size_t drawn = 0, texels = 0;
                 std::vector<double> c, u;
                 for (std::size_t f = 1; f < std::size_t(motion.frames); ++f) {
                     if (v >= frames[f][0].views.size() || v >= frames[f][1].views.size()) continue;
                     const ViewFrame& cv = frames[f][0].views[v];
+                    drawn += cv.texelsRendered;
+                    texels += cv.texels;
                     if (cv.cache == "reused") ++reused;
                     else {
-                        (cv.cache == "full" ? fullCount : sd) += 1;
+                        (cv.cache == "full" ? fullCount : cv.cache == "scrolled" ? scrolled : sd) += 1;
                         c.push_back(cv.ms);
                     }
                     if (frames[f][1].views[v].cache != "reused") u.push_back(frames[f][1].views[v].ms);
                 }
                 std::cout << std::left << std::setw(22) << names[v].name << std::setw(7) << fullCount << std::setw(7)
-                          << sd << std::setw(9) << reused << std::setw(12) << fixed(medianOf(c), 3)
-                          << fixed(medianOf(u), 3) << "\n";
+                          << sd << std::setw(10) << scrolled << std::setw(9) << reused << std::setw(12)
+                          << fixed(medianOf(c), 3) << std::setw(10) << fixed(medianOf(u), 3)
+                          << fixed(percentOf(drawn, texels), 2) << "\n";
                 perView.push_back({{"view", names[v].name}, {"framesFull", fullCount}, {"framesStaticPlusDynamic", sd},
-                                   {"framesReused", reused}, {"cachedMedianMs", medianOf(c)},
-                                   {"fullMedianMs", medianOf(u)}});
+                                   {"framesScrolled", scrolled}, {"framesReused", reused},
+                                   {"cachedMedianMs", medianOf(c)}, {"fullMedianMs", medianOf(u)},
+                                   {"cachedTexelsRenderedPercent", percentOf(drawn, texels)}});
             }
             doc["perView"] = perView;
             const double c = medianOf(cachedMs), u = medianOf(fullMs);
@@ -381,12 +484,16 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
             std::cout << "\nframes 1.." << motion.frames - 1 << ": shadow pass median " << fixed(c, 3) << " ms cached, "
                       << fixed(u, 3) << " ms full (" << fixed(u > 0 ? 100.0 * c / u : 0.0, 1) << " %); total "
                       << fixed(sumC, 1) << " ms against " << fixed(sumU, 1) << " ms ("
-                      << fixed(sumU > 0 ? 100.0 * sumC / sumU : 0.0, 1) << " %)"
-                      << (cpu ? " [CPU]" : "") << "\nstill frame: " << frames.back()[0].rendered
-                      << " views rendered cached, " << frames.back()[1].rendered << " full\n";
+                      << fixed(sumU > 0 ? 100.0 * sumC / sumU : 0.0, 1) << " %); texels drawn "
+                      << fixed(percentOf(cachedTexels, allTexels), 2) << " % cached, "
+                      << fixed(percentOf(fullTexels, allTexels), 2) << " % full [" << device << "]"
+                      << "\nstill frame: " << frames.back()[0].rendered << " views rendered cached, "
+                      << frames.back()[1].rendered << " full\n";
             doc["summary"] = {{"movingFrames", cachedMs.size()}, {"cachedMedianMs", c}, {"fullMedianMs", u},
                               {"cachedTotalMs", sumC}, {"fullTotalMs", sumU},
                               {"cachedOverFullPercent", u > 0 ? 100.0 * c / u : 0.0},
+                              {"cachedTexelsRenderedPercent", percentOf(cachedTexels, allTexels)},
+                              {"fullTexelsRenderedPercent", percentOf(fullTexels, allTexels)},
                               {"stillFrameViewsRendered", frames.back()[0].rendered},
                               {"stillFrameFullViewsRendered", frames.back()[1].rendered}};
         } else {
@@ -453,7 +560,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
                 if (!policies[p].flaggedStatic.empty()) row["flaggedStatic"] = policies[p].flaggedStatic;
                 rows.push_back(row);
             }
-            std::cout << "saved %: against everyFrame's shadow ms" << (cpu ? " [CPU]" : "")
+            std::cout << "saved %: against everyFrame's shadow ms" << " [" << device << "]"
                       << "; views: rendered per frame\n";
             doc["light"] = measuredLight;
             doc["cacheError"] = rows;

@@ -24,23 +24,6 @@ namespace shadowlab::cli {
 
 namespace {
 
-std::optional<glm::dvec3> parseDirection(const std::string& text, std::string& error) {
-    std::vector<std::string> parts;
-    std::stringstream in(text);
-    for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
-    if (parts.size() != 3) {
-        error = "--direction '" + text + "': expected three numbers x,y,z";
-        return std::nullopt;
-    }
-    glm::dvec3 v;
-    for (int i = 0; i < 3; ++i) {
-        const auto value = parseFiniteOption(parts[std::size_t(i)], "--direction", error);
-        if (!value) return std::nullopt;
-        v[i] = *value;
-    }
-    return v;
-}
-
 // The folder for --frames-out, created when missing; "" or why not.
 std::string prepareFolder(const std::string& path) {
     namespace fs = std::filesystem;
@@ -63,6 +46,23 @@ std::optional<double> parseFiniteOption(const std::string& text, const std::stri
         return std::nullopt;
     }
     return value;
+}
+
+std::optional<glm::dvec3> parseVectorOption(const std::string& text, const std::string& option, std::string& error) {
+    std::vector<std::string> parts;
+    std::stringstream in(text);
+    for (std::string part; std::getline(in, part, ',');) parts.push_back(part);
+    if (parts.size() != 3) {
+        error = option + " '" + text + "': expected three numbers x,y,z";
+        return std::nullopt;
+    }
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) {
+        const auto value = parseFiniteOption(parts[std::size_t(i)], option, error);
+        if (!value) return std::nullopt;
+        v[i] = *value;
+    }
+    return v;
 }
 
 bool wantsMotion(const MeasureOptions& o) {
@@ -89,7 +89,7 @@ int runMeasureMotion(const MeasureOptions& options) {
     if (!step) return fail(error);
     motion.step = *step;
     if (!options.direction.empty()) {
-        motion.direction = parseDirection(options.direction, error);
+        motion.direction = parseVectorOption(options.direction, "--direction", error);
         if (!motion.direction) return fail(error);
     }
 

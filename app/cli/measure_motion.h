@@ -5,6 +5,8 @@
 // frames (--frames-out DIR).
 #include "cli/measure_command.h"
 
+#include <glm/ext/vector_double3.hpp>
+
 #include <optional>
 #include <string>
 
@@ -13,6 +15,8 @@ namespace shadowlab::cli {
 // A finite number that is the whole of `text`, else nullopt with `error` naming the option ("--step 'x': not a
 // finite number"), so "nan" or "1e999" get a clear message.
 std::optional<double> parseFiniteOption(const std::string& text, const std::string& option, std::string& error);
+// Three finite numbers "x,y,z" (--direction, bench's --walk), else nullopt with `error` naming the option.
+std::optional<glm::dvec3> parseVectorOption(const std::string& text, const std::string& option, std::string& error);
 
 // Any of --motion, --frames, --step, --direction, --frames-out given.
 bool wantsMotion(const MeasureOptions& options);

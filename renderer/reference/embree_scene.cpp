@@ -1,6 +1,7 @@
 #include "reference/embree_scene.h"
 
 #include "frame/face_culling.h"
+#include "scene/scene_fingerprint.h"
 
 #include <embree3/rtcore.h>
 
@@ -30,10 +31,6 @@ struct EmbreeScene::MeshBvh {
     std::size_t triangles = 0;
     bool doubleSided = false;
     bool alphaMask = false;
-    // What the BVH was built from (sameGeometry compares it): the mesh's data and material.
-    const void* positionsData = nullptr;
-    std::size_t positionCount = 0, indexCount = 0;
-    int material = -1;
     ~MeshBvh() {
         if (scene) rtcReleaseScene(scene);
     }
@@ -112,12 +109,6 @@ void cullingFilter(const RTCFilterFunctionNArguments* args) {
     }
 }
 
-bool shadowFieldsEqual(const Material& a, const Material& b) {
-    return std::tie(a.alphaMode, a.alphaCutoff, a.baseColorFactor.a, a.baseColorImage, a.uvTransform,
-                    a.doubleSided) == std::tie(b.alphaMode, b.alphaCutoff, b.baseColorFactor.a, b.baseColorImage,
-                                               b.uvTransform, b.doubleSided);
-}
-
 // The centre of the finite vertices' box, in double (exact for float vertices), or the origin if none is finite.
 glm::dvec3 finiteCentre(const std::vector<glm::vec3>& positions) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
@@ -162,7 +153,7 @@ void placeInstance(RTCGeometry geometry, const glm::mat4& toWorld) {
 }  // namespace
 
 EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin, const std::vector<char>& castingInstances)
-    : source_(&scene), materials_(scene.materials) {
+    : layout_(layoutFingerprint(scene)) {
     const auto start = Clock::now();
     RTCDevice device = rtcNewDevice(nullptr);
     if (!device) throw std::runtime_error("Embree: cannot create a device (error " +
@@ -182,10 +173,6 @@ EmbreeScene::EmbreeScene(const Scene& scene, const glm::dvec3& origin, const std
         meshBvhOf_[m] = int(meshes_.size());
         auto bvh = std::make_unique<MeshBvh>();
         bvh->centre = finiteCentre(mesh.positions);
-        bvh->positionsData = mesh.positions.data();
-        bvh->positionCount = mesh.positions.size();
-        bvh->indexCount = mesh.indices.size();
-        bvh->material = mesh.material;
         bvh->triangles = mesh.triangleCount();
         bvh->scene = rtcNewScene(device);
         rtcSetSceneBuildQuality(bvh->scene, RTC_BUILD_QUALITY_MEDIUM);
@@ -264,27 +251,14 @@ EmbreeScene::~EmbreeScene() {
 }
 
 bool EmbreeScene::sameGeometry(const Scene& scene, const std::vector<char>& castingInstances) const {
-    if (&scene != source_ || scene.meshes.size() != meshBvhOf_.size() || scene.materials.size() != materials_.size())
-        return false;
-    for (std::size_t i = 0; i < materials_.size(); ++i)
-        if (!shadowFieldsEqual(scene.materials[i], materials_[i])) return false;
-    // Each BVH's mesh: the same data (as sceneFingerprint tells it) and material.
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-        if (meshBvhOf_[m] < 0) continue;
-        const Mesh& mesh = scene.meshes[m];
-        const MeshBvh& bvh = *meshes_[std::size_t(meshBvhOf_[m])];
-        if (mesh.positions.data() != bvh.positionsData || mesh.positions.size() != bvh.positionCount ||
-            mesh.indices.size() != bvh.indexCount || mesh.material != bvh.material)
-            return false;
-    }
-    // The same instances in the top level, in order, each on the same mesh.
+    // Only transforms changed: scene_fingerprint.h's layout key, by address (the alpha masks read the scene's own uv,
+    // index and image buffers, so a copy with the same contents is no match here).
+    if (layoutFingerprint(scene) != layout_) return false;
+    // The same casting instances in the top level, in order (the layout key holds each instance's mesh).
     std::size_t id = 0;
     for (std::size_t n = 0; n < scene.instances.size(); ++n) {
-        const auto m = std::size_t(scene.instances[n].mesh);
-        if (!casts(castingInstances, n) || scene.meshes[m].indices.empty()) continue;
-        if (meshBvhOf_[m] < 0 || id >= geometries_.size() || geometries_[id].instance != n ||
-            geometries_[id].mesh != unsigned(m))
-            return false;
+        if (!casts(castingInstances, n) || scene.meshes[std::size_t(scene.instances[n].mesh)].indices.empty()) continue;
+        if (id >= geometries_.size() || geometries_[id].instance != n) return false;
         ++id;
     }
     return id == geometries_.size();

@@ -65,9 +65,10 @@ public:
 
     bool hasAlphaMask() const { return !masks_.empty(); }
 
-    // Whether `scene` with these casters holds the geometry this was built from: the same Scene object, meshes
-    // (their data, as sceneFingerprint sees it), materials, instance-to-mesh map and casting instances. Then only
-    // transforms may differ, and updateTransforms() follows them.
+    // Whether only transforms changed since this was built: `scene`'s layoutFingerprint (scene/scene_fingerprint.h,
+    // the one definition the GPU upload uses too: the same Scene object, mesh and image buffers, instance-to-mesh
+    // map, depth-relevant material values) is the one it was built from, with the same casting instances. Then
+    // updateTransforms() follows the motion.
     bool sameGeometry(const Scene& scene, const std::vector<char>& castingInstances = {}) const;
 
     // Places every instance at `scene`'s transform relative to `origin` and re-commits the top level only (no mesh
@@ -100,8 +101,7 @@ private:
     struct MeshBvh;
     void* device_ = nullptr;  // RTCDevice
     void* scene_ = nullptr;   // RTCScene: the top level
-    const Scene* source_ = nullptr;
-    std::vector<Material> materials_;  // as built (sameGeometry compares their shadow fields)
+    std::size_t layout_ = 0;  // layoutFingerprint of the scene it was built from (sameGeometry)
     std::vector<std::unique_ptr<MeshBvh>> meshes_;
     std::vector<int> meshBvhOf_;  // per Scene::meshes entry: its index in meshes_, -1 = none
     std::vector<std::unique_ptr<AlphaMask>> masks_;

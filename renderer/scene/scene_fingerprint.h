@@ -1,8 +1,9 @@
 #pragma once
 // Keys of a Scene that tell what changed between two frames: its geometry (what the GPU upload and the shadow maps'
 // contents depend on) apart from its instances' transforms (an animation step). "Only the transforms changed" is
-// decided once, by GpuScene::sameGeometry from these keys; the renderer's motion logic reads the draws that moved
-// from the same update (frame/gpu_scene.h: SceneUpload::moved).
+// decided from these keys: GpuScene::sameGeometry (layout or contents: the GPU holds copies) and the reference's
+// EmbreeScene::sameGeometry (layout alone: its alpha masks read the scene's buffers); the renderer's motion logic
+// reads the draws that moved from the same update (frame/gpu_scene.h: SceneUpload::moved).
 #include "scene/scene.h"
 
 #include <cstddef>

@@ -130,6 +130,28 @@ TEST(ReferenceUpdate, TheGeometryTestTellsATransformChangeFromAGeometryChange) {
     EXPECT_FALSE(third.sameGeometry(edited)) << "an instance removed";
 }
 
+// "Only transforms changed" is scene_fingerprint.h's layout key, the GPU upload's too: a mesh whose triangles are
+// replaced by as many others (its winding flipped: the shadow pass culls the other faces) or a picture replaced is a
+// geometry change, though the Scene object, every count and the vertex buffer are the same.
+TEST(ReferenceUpdate, TrianglesOrPicturesReplacedInPlaceAreAGeometryChange) {
+    Scene scene = cityTraffic();
+    const glm::dvec3 origin = scene.bounds.centreOrOrigin();
+    const EmbreeScene bvh(scene, origin);
+    ASSERT_TRUE(bvh.sameGeometry(scene));
+    Mesh& mesh = scene.meshes[std::size_t(scene.instances[carInstance(scene, 0)].mesh)];
+    std::vector<std::uint32_t> flipped = mesh.indices;
+    for (std::size_t t = 0; t + 2 < flipped.size(); t += 3) std::swap(flipped[t + 1], flipped[t + 2]);
+    mesh.indices = std::move(flipped);
+    EXPECT_FALSE(bvh.sameGeometry(scene)) << "the car's triangles were replaced (same count, other winding)";
+
+    Scene pictured = cityTraffic();
+    pictured.images.push_back(Image{1, 1, std::vector<std::uint8_t>(4, 0)});
+    const EmbreeScene withImage(pictured, origin);
+    ASSERT_TRUE(withImage.sameGeometry(pictured));
+    pictured.images[0].rgba = std::vector<std::uint8_t>(4, 255);
+    EXPECT_FALSE(withImage.sameGeometry(pictured)) << "the picture an alpha mask would read was replaced";
+}
+
 // AlphaBlendModeTest's MASK casters moved by hand (an animation step of each): occlusion and the first hit, with its
 // MASK flag resolved through the instance id, equal a fresh build's at every sample.
 TEST(ReferenceUpdate, MovedAlphaMaskCastersEqualAFreshBuild) {

@@ -6,6 +6,8 @@
 # - bench --animation --cache-error: everyFrame, onChange and cachedStatic read a cache error of 0 against the frame
 #   re-rendered; everyNthFrame 4 does not, and saves time; the Spinner flagged static (casters.static) has a cache
 #   error and a warning naming it.
+# - bench --walk: the camera walks down builtin:city's street; stable cachedStatic cascades scroll and draw a small
+#   share of their texels, everyFrame all of them.
 # - sweep --play: shadow.update and updateInterval as axes, each point played from its animation.time and measured at
 #   its last frame: everyNthFrame 4 draws no view after the first frame and reads more wrong pixels than everyFrame.
 # Needs: SHADOWLAB, SOURCE_DIR, OUT_DIR.
@@ -93,6 +95,71 @@ if not nth["wrongPixelsPercent"] > full["wrongPixelsPercent"]:
 print("\n".join(problems) or {k: (p["shadowPassMs"], p["wrongPixelsPercent"]) for k, p in pts.items()})
 sys.exit(1 if problems else 0)
 PY
+
+# bench --cache-error on builtin:city-traffic (its sun, four cascades): the camera sees the first car that moves (from
+# the default street camera every policy read 0): everyNthFrame 4 reads a cache error there, everyFrame 0.
+expect_ok city-cache-error "$SHADOWLAB" bench --scene builtin:city-traffic --width 160 --height 90 --animation \
+  --frames 5 --step 0.1 --cache-error --intervals 4 --set useSceneLights=true --set lights.0.projection.fit=cascades \
+  --json city-cache-error.json
+python3 - <<'PY' && pass "bench --cache-error on the city: its camera sees car-0, everyNthFrame 4 reads an error" \
+  || fail "bench --cache-error city JSON (above)"
+import json, sys
+j = json.load(open("city-cache-error.json"))
+rows = {r["policy"]: r for r in j["cacheError"]}
+problems = []
+if not j["camera"]["onMover"]: problems.append("camera: %s" % j["camera"])
+for name in ("everyFrame", "cachedStatic"):
+    if rows[name]["cacheWrongPercentMax"] != 0 or rows[name]["cacheMeanErrorMax"] != 0: problems.append("%s: %s" % (name, rows[name]))
+nth = rows["everyNthFrame 4"]
+if not (nth["cacheWrongPercentMean"] > 0 and nth["cacheMeanErrorMean"] > 0): problems.append("everyNthFrame 4: %s" % nth)
+print("\n".join(problems) or {k: (r["cacheWrongPercentMean"], r["savedPercent"]) for k, r in rows.items()})
+sys.exit(1 if problems else 0)
+PY
+grep -q "^camera: on car-0 (the first caster that moves" city-cache-error.out && pass "the camera names the car it sees" \
+  || fail "no camera line: $(cat city-cache-error.out)"
+
+# bench --walk: the camera walks down builtin:city's street (0.4 m a frame) with a cachedStatic sun in four stable
+# cascades: the cached frames scroll some cascade (re-drawing a strip) and reuse others, so the texels drawn are a
+# small share of the full re-render's, which draws every texel of every cascade every frame.
+walk=(--scene builtin:city --width 160 --height 90 --set lights.0.projection.fit=cascades
+      --set lights.0.projection.cascadeCount=4 --set lights.0.projection.cascadeFit=stable
+      --set lights.0.projection.depthBounds=off --set lights.0.shadow.resolution=512
+      --set lights.0.shadow.update=cachedStatic)
+expect_ok walk "$SHADOWLAB" bench "${walk[@]}" --walk 0,0,-0.4 --frames 8 --json walk.json
+python3 - <<'PY' && pass "bench --walk: cascades scroll, a small share of texels drawn; everyFrame draws them all" \
+  || fail "bench --walk JSON (above)"
+import json, sys
+j = json.load(open("walk.json"))
+problems = []
+if j.get("walk") != [0, 0, -0.4]: problems.append("walk: %s" % j.get("walk"))
+if j["played"]: problems.append("a walk alone plays no animation")
+if j["device"].split(":")[0] != ("CPU" if j["cpuTimes"] else "GPU"): problems.append("device: %s" % j["device"])
+frames = j["perFrame"]
+if len(frames) != 9 or not frames[-1]["still"]: problems.append("8 frames and a still one expected: %d" % len(frames))
+scrolled = 0
+for f in frames[1:-1]:
+    c, u = f["cached"], f["full"]
+    scrolled += c["viewsScrolled"]
+    if u["viewsFull"] != 4 or u["texelsRenderedPercent"] != 100: problems.append("frame %d full: %s" % (f["frame"], u))
+    for v in c["views"]:
+        if v["cache"] == "scrolled" and not (0 < v["texelsRendered"] < v["texels"] / 10):
+            problems.append("frame %d %s scrolled: %s" % (f["frame"], v["view"], v))
+        if v["cache"] == "reused" and v["texelsRendered"] != 0: problems.append("reused view drew texels: %s" % v)
+if scrolled < 2: problems.append("only %d cascade draws scrolled" % scrolled)
+s = j["summary"]
+if not (0 < s["cachedTexelsRenderedPercent"] < 50): problems.append("cached texels drawn: %s" % s)
+if s["fullTexelsRenderedPercent"] != 100: problems.append("full texels drawn: %s" % s)
+if not (0 < s["cachedTotalMs"] < s["fullTotalMs"]): problems.append("cached not cheaper: %s" % s)
+if s["stillFrameViewsRendered"] != 0 or s["stillFrameFullViewsRendered"] != 4: problems.append("still frame: %s" % s)
+if sum(v["framesScrolled"] for v in j["perView"]) != scrolled: problems.append("perView: %s" % j["perView"])
+print("\n".join(problems) or s)
+sys.exit(1 if problems else 0)
+PY
+grep -q "scrolled [0-9.]*% " walk.out && pass "the per-view table shows the scrolled cascades" \
+  || fail "no scrolled cell: $(cat walk.out)"
+expect_error walk-zero "--walk 0,0,0: the camera's move per frame must be non-zero" "$SHADOWLAB" bench \
+  --scene builtin:city --walk 0,0,0
+expect_error walk-bad "--walk '1,2': expected three numbers x,y,z" "$SHADOWLAB" bench --scene builtin:city --walk 1,2
 
 expect_error no-animation "has no animation to play" "$SHADOWLAB" bench --scene builtin:textbook --width 64 \
   --height 36 --animation --frames 2
