@@ -7,6 +7,7 @@
 #include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
+#include "shading/filters/moment_filter.h"
 
 #include <cmath>
 
@@ -44,13 +45,6 @@ void setBlur(ExportView& v, const FilterSettings& filter, const LightSpace& ligh
 }
 
 }  // namespace
-
-std::string momentImageFormat(const FilterTechnique& technique, int momentBits) {
-    const MomentTechnique* m = technique.moments;
-    if (!m) return "";
-    if (momentBits == 16) return m->channels == 2 ? "rg16f" : m->unorm16 ? "rgba16" : "rgba16f";
-    return m->channels == 2 ? "rg32f" : "rgba32f";
-}
 
 std::string lightLabel(std::size_t index, LightType type) {
     return "light " + std::to_string(index) + " (" + lightTypeName(type) + ")";

@@ -349,7 +349,7 @@ std::string techniqueLookupCode(const ShadowExport& e, bool vulkan, std::vector<
     const FilterTechnique& technique = filterTechnique(e.filter.kind);
     const Words w(ShaderLanguage::Glsl);
     const std::string p = "light" + std::to_string(e.lightIndex);
-    const std::string P = upper(p) + "_";
+    const std::string P = upperCase(p) + "_";
     const bool cube = e.lightType == LightType::Point;
     const bool spot = e.lightType == LightType::Spot;
     gl::IncludeAliases aliases;

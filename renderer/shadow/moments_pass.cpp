@@ -3,6 +3,7 @@
 #include "gl/gl_errors.h"
 #include "gl/program.h"
 #include "shading/filters/filter_technique.h"
+#include "shading/filters/moment_filter.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -17,14 +18,18 @@ std::uint64_t nextStorageGeneration() {
     return ++generation;
 }
 
+// The GL formats of the names momentImageFormat chooses (shading/filters/moment_filter.h).
+struct NamedFormat {
+    const char* name;
+    GLenum format;
+};
+constexpr NamedFormat kMomentFormats[] = {
+    {"rg16f", GL_RG16F}, {"rg32f", GL_RG32F}, {"rgba16f", GL_RGBA16F}, {"rgba16", GL_RGBA16}, {"rgba32f", GL_RGBA32F}};
+
 const char* imageFormatName(GLenum format) {
-    switch (format) {
-        case GL_RG16F: return "rg16f";
-        case GL_RG32F: return "rg32f";
-        case GL_RGBA16F: return "rgba16f";
-        case GL_RGBA16: return "rgba16";
-        default: return "rgba32f";
-    }
+    for (const NamedFormat& f : kMomentFormats)
+        if (f.format == format) return f.name;
+    return "rgba32f";
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -42,9 +47,10 @@ int momentLevels(int resolution, bool mips) {
 }
 
 GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits) {
-    const MomentTechnique& m = *technique.moments;
-    if (momentBits == 16) return m.channels == 2 ? GL_RG16F : m.unorm16 ? GL_RGBA16 : GL_RGBA16F;
-    return m.channels == 2 ? GL_RG32F : GL_RGBA32F;
+    const std::string name = momentImageFormat(technique, momentBits);
+    for (const NamedFormat& f : kMomentFormats)
+        if (name == f.name) return f.format;
+    return GL_RGBA32F;
 }
 
 struct MomentsPass::Storage {

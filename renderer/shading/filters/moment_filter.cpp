@@ -4,6 +4,13 @@
 
 namespace shadowlab {
 
+std::string momentImageFormat(const FilterTechnique& technique, int momentBits) {
+    const MomentTechnique* m = technique.moments;
+    if (!m) return "";
+    if (momentBits == 16) return m->channels == 2 ? "rg16f" : m->unorm16 ? "rgba16" : "rgba16f";
+    return m->channels == 2 ? "rg32f" : "rgba32f";
+}
+
 FilterTechnique momentsFilter(FilterKind kind, const char* name, std::initializer_list<const char*> ownKeys,
                               const MomentTechnique& moments) {
     FilterTechnique t{kind, name, /*bilinear=*/true,

@@ -5,6 +5,7 @@
 #include "shading/filters/filter_technique.h"
 
 #include <initializer_list>
+#include <string>
 
 namespace shadowlab {
 
@@ -17,6 +18,11 @@ FilterTechnique momentsFilter(FilterKind kind, const char* name, std::initialize
 // low: light in the umbra where casters overlap; too high: darker, narrower penumbrae).
 inline const TradeOffRange kMinVarianceTradeOff{"filter.minVariance", 1e-7, 1e-3, 5, /*geometric=*/true};
 inline const TradeOffRange kBleedReductionTradeOff{"filter.bleedReduction", 0.0, 0.6, 7};
+
+// A moments technique's storage as a GLSL image format ("rg16f", "rg32f", "rgba16f", "rgba32f", "rgba16": MSM's
+// quantized 16 bits are unorm): the one choice the moments pass allocates (shadow/moments_pass.h's
+// momentInternalFormat) and the export writes. "" for a technique without moments.
+std::string momentImageFormat(const FilterTechnique& technique, int momentBits);
 
 // Chebyshev's one-tailed upper bound of the lit share for a receiver at `z` over moments (mean, E[x^2]), variance at
 // least `minVariance` (chebyshev.glsl's chebyshevUpperBound); 1 when the receiver is not beyond the mean.
