@@ -1,5 +1,7 @@
 #include "vulkan_depth_pass.h"
 
+#include "vulkan_support.h"
+
 #include "shadow_depth_vk.vert.h"  // glslangValidator -V output: shadowDepthVkVert[]
 
 #include <cstdlib>
@@ -83,33 +85,9 @@ VulkanPassState parseVulkanPassState(const std::string& snippet, const std::stri
     return state;
 }
 
-namespace {
-
-void check(VkResult result, const char* what) {
-    if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed (VkResult " + std::to_string(result) + ")");
-}
-
-// Destroys what was created, in reverse order, however the pass ends.
-struct Cleanup {
-    std::vector<std::function<void()>> steps;
-    ~Cleanup() {
-        for (auto it = steps.rbegin(); it != steps.rend(); ++it) (*it)();
-    }
-};
-
-std::uint32_t memoryType(VkPhysicalDevice gpu, std::uint32_t bits, VkMemoryPropertyFlags flags) {
-    VkPhysicalDeviceMemoryProperties props;
-    vkGetPhysicalDeviceMemoryProperties(gpu, &props);
-    for (std::uint32_t i = 0; i < props.memoryTypeCount; ++i)
-        if ((bits & (1u << i)) && (props.memoryTypes[i].propertyFlags & flags) == flags) return i;
-    throw std::runtime_error("no suitable Vulkan memory type");
-}
-
-}  // namespace
-
 DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
     DepthPassResult result;
-    Cleanup cleanup;
+    VkCleanup cleanup;
     try {
         VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
         app.pApplicationName = "shadowlab-vulkan-check";
@@ -193,36 +171,14 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
             deviceInfo.ppEnabledExtensionNames = &clipControlName;
         }
         VkDevice device = VK_NULL_HANDLE;
-        check(vkCreateDevice(gpu, &deviceInfo, nullptr, &device), "vkCreateDevice");
+        vkCheck(vkCreateDevice(gpu, &deviceInfo, nullptr, &device), "vkCreateDevice");
         cleanup.steps.push_back([=] { vkDestroyDevice(device, nullptr); });
         VkQueue queue = VK_NULL_HANDLE;
         vkGetDeviceQueue(device, family, 0, &queue);
 
         // Host-visible buffers: vertices, indices, the read-back copy.
         auto makeBuffer = [&](VkDeviceSize size, VkBufferUsageFlags usage, const void* data) {
-            VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-            info.size = std::max<VkDeviceSize>(size, 4);
-            info.usage = usage;
-            VkBuffer buffer = VK_NULL_HANDLE;
-            check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
-            cleanup.steps.push_back([=] { vkDestroyBuffer(device, buffer, nullptr); });
-            VkMemoryRequirements req;
-            vkGetBufferMemoryRequirements(device, buffer, &req);
-            VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-            alloc.allocationSize = req.size;
-            alloc.memoryTypeIndex = memoryType(gpu, req.memoryTypeBits,
-                                               VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-            VkDeviceMemory memory = VK_NULL_HANDLE;
-            check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
-            cleanup.steps.push_back([=] { vkFreeMemory(device, memory, nullptr); });
-            check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
-            if (data) {
-                void* mapped = nullptr;
-                check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
-                std::memcpy(mapped, data, std::size_t(size));
-                vkUnmapMemory(device, memory);
-            }
-            return std::make_pair(buffer, memory);
+            return vkHostBuffer(gpu, device, cleanup, size, usage, data);
         };
         const auto vertices = makeBuffer(input.positions.size() * sizeof(glm::vec3), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
                                          input.positions.data());
@@ -243,24 +199,24 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
         imageInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
         imageInfo.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
         VkImage image = VK_NULL_HANDLE;
-        check(vkCreateImage(device, &imageInfo, nullptr, &image), "vkCreateImage");
+        vkCheck(vkCreateImage(device, &imageInfo, nullptr, &image), "vkCreateImage");
         cleanup.steps.push_back([=] { vkDestroyImage(device, image, nullptr); });
         VkMemoryRequirements imageReq;
         vkGetImageMemoryRequirements(device, image, &imageReq);
         VkMemoryAllocateInfo imageAlloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         imageAlloc.allocationSize = imageReq.size;
-        imageAlloc.memoryTypeIndex = memoryType(gpu, imageReq.memoryTypeBits, 0);
+        imageAlloc.memoryTypeIndex = vkMemoryType(gpu, imageReq.memoryTypeBits, 0);
         VkDeviceMemory imageMemory = VK_NULL_HANDLE;
-        check(vkAllocateMemory(device, &imageAlloc, nullptr, &imageMemory), "vkAllocateMemory (image)");
+        vkCheck(vkAllocateMemory(device, &imageAlloc, nullptr, &imageMemory), "vkAllocateMemory (image)");
         cleanup.steps.push_back([=] { vkFreeMemory(device, imageMemory, nullptr); });
-        check(vkBindImageMemory(device, image, imageMemory, 0), "vkBindImageMemory");
+        vkCheck(vkBindImageMemory(device, image, imageMemory, 0), "vkBindImageMemory");
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = image;
         viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
         viewInfo.format = input.format;
         viewInfo.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
         VkImageView view = VK_NULL_HANDLE;
-        check(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
+        vkCheck(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
         cleanup.steps.push_back([=] { vkDestroyImageView(device, view, nullptr); });
 
         VkAttachmentDescription depthAttachment{};
@@ -291,7 +247,7 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
         passInfo.dependencyCount = 1;
         passInfo.pDependencies = &toCopy;
         VkRenderPass renderPass = VK_NULL_HANDLE;
-        check(vkCreateRenderPass(device, &passInfo, nullptr, &renderPass), "vkCreateRenderPass");
+        vkCheck(vkCreateRenderPass(device, &passInfo, nullptr, &renderPass), "vkCreateRenderPass");
         cleanup.steps.push_back([=] { vkDestroyRenderPass(device, renderPass, nullptr); });
         VkFramebufferCreateInfo fbInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
         fbInfo.renderPass = renderPass;
@@ -301,21 +257,21 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
         fbInfo.height = res;
         fbInfo.layers = 1;
         VkFramebuffer framebuffer = VK_NULL_HANDLE;
-        check(vkCreateFramebuffer(device, &fbInfo, nullptr, &framebuffer), "vkCreateFramebuffer");
+        vkCheck(vkCreateFramebuffer(device, &fbInfo, nullptr, &framebuffer), "vkCreateFramebuffer");
         cleanup.steps.push_back([=] { vkDestroyFramebuffer(device, framebuffer, nullptr); });
 
         VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
         moduleInfo.codeSize = sizeof(shadowDepthVkVert);
         moduleInfo.pCode = shadowDepthVkVert;
         VkShaderModule module = VK_NULL_HANDLE;
-        check(vkCreateShaderModule(device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
+        vkCheck(vkCreateShaderModule(device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
         cleanup.steps.push_back([=] { vkDestroyShaderModule(device, module, nullptr); });
         VkPushConstantRange pushRange{VK_SHADER_STAGE_VERTEX_BIT, 0, 2 * sizeof(glm::mat4)};
         VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         layoutInfo.pushConstantRangeCount = 1;
         layoutInfo.pPushConstantRanges = &pushRange;
         VkPipelineLayout layout = VK_NULL_HANDLE;
-        check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
+        vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
         cleanup.steps.push_back([=] { vkDestroyPipelineLayout(device, layout, nullptr); });
 
         // One pipeline per (cull mode, front face) the draws need: the exported state, with double-sided
@@ -386,7 +342,7 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
             info.pColorBlendState = &blend;
             info.layout = layout;
             info.renderPass = renderPass;
-            check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+            vkCheck(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
                   "vkCreateGraphicsPipelines");
             const VkPipeline created = pipeline;
             cleanup.steps.push_back([=] { vkDestroyPipeline(device, created, nullptr); });
@@ -396,17 +352,17 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
         VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         poolInfo.queueFamilyIndex = family;
         VkCommandPool pool = VK_NULL_HANDLE;
-        check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
+        vkCheck(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
         cleanup.steps.push_back([=] { vkDestroyCommandPool(device, pool, nullptr); });
         VkCommandBufferAllocateInfo cbInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         cbInfo.commandPool = pool;
         cbInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         cbInfo.commandBufferCount = 1;
         VkCommandBuffer cb = VK_NULL_HANDLE;
-        check(vkAllocateCommandBuffers(device, &cbInfo, &cb), "vkAllocateCommandBuffers");
+        vkCheck(vkAllocateCommandBuffers(device, &cbInfo, &cb), "vkAllocateCommandBuffers");
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        check(vkBeginCommandBuffer(cb, &begin), "vkBeginCommandBuffer");
+        vkCheck(vkBeginCommandBuffer(cb, &begin), "vkBeginCommandBuffer");
         VkClearValue clear{};
         clear.depthStencil = {input.reversedZ ? 0.0f : 1.0f, 0};
         VkRenderPassBeginInfo passBegin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
@@ -440,19 +396,19 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
         toHost.size = VK_WHOLE_SIZE;
         vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost,
                              0, nullptr);
-        check(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
+        vkCheck(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
         VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         VkFence fence = VK_NULL_HANDLE;
-        check(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
+        vkCheck(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
         cleanup.steps.push_back([=] { vkDestroyFence(device, fence, nullptr); });
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = &cb;
-        check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
-        check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+        vkCheck(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
+        vkCheck(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 
         void* mapped = nullptr;
-        check(vkMapMemory(device, readback.second, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory (read back)");
+        vkCheck(vkMapMemory(device, readback.second, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory (read back)");
         result.depth.resize(std::size_t(res) * res);
         for (std::size_t i = 0; i < result.depth.size(); ++i) {
             if (d16) {

@@ -1,5 +1,7 @@
 #include "vulkan_lookup_pass.h"
 
+#include "vulkan_support.h"
+
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -11,26 +13,6 @@
 namespace shadowlab::test {
 
 namespace {
-
-void check(VkResult result, const char* what) {
-    if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed (VkResult " + std::to_string(result) + ")");
-}
-
-// Destroys what was created, in reverse order, however the pass ends.
-struct Cleanup {
-    std::vector<std::function<void()>> steps;
-    ~Cleanup() {
-        for (auto it = steps.rbegin(); it != steps.rend(); ++it) (*it)();
-    }
-};
-
-std::uint32_t memoryType(VkPhysicalDevice gpu, std::uint32_t bits, VkMemoryPropertyFlags flags) {
-    VkPhysicalDeviceMemoryProperties props;
-    vkGetPhysicalDeviceMemoryProperties(gpu, &props);
-    for (std::uint32_t i = 0; i < props.memoryTypeCount; ++i)
-        if ((bits & (1u << i)) && (props.memoryTypes[i].propertyFlags & flags) == flags) return i;
-    throw std::runtime_error("no suitable Vulkan memory type");
-}
 
 bool hasExtension(VkPhysicalDevice gpu, const char* name) {
     std::uint32_t count = 0;
@@ -71,7 +53,7 @@ std::vector<std::uint32_t> compileCompute(const std::string& text, const std::st
 
 LookupPassResult runLookupVulkan(const LookupPassInput& input) {
     LookupPassResult result;
-    Cleanup cleanup;
+    VkCleanup cleanup;
     try {
         VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
         app.pApplicationName = "shadowlab-vulkan-lookup-check";
@@ -127,35 +109,13 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
             deviceInfo.ppEnabledExtensionNames = &customBorderName;
         }
         VkDevice device = VK_NULL_HANDLE;
-        check(vkCreateDevice(gpu, &deviceInfo, nullptr, &device), "vkCreateDevice");
+        vkCheck(vkCreateDevice(gpu, &deviceInfo, nullptr, &device), "vkCreateDevice");
         cleanup.steps.push_back([=] { vkDestroyDevice(device, nullptr); });
         VkQueue queue = VK_NULL_HANDLE;
         vkGetDeviceQueue(device, family, 0, &queue);
 
         auto makeBuffer = [&](VkDeviceSize size, VkBufferUsageFlags usage, const void* data) {
-            VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-            info.size = std::max<VkDeviceSize>(size, 4);
-            info.usage = usage;
-            VkBuffer buffer = VK_NULL_HANDLE;
-            check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
-            cleanup.steps.push_back([=] { vkDestroyBuffer(device, buffer, nullptr); });
-            VkMemoryRequirements req;
-            vkGetBufferMemoryRequirements(device, buffer, &req);
-            VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-            alloc.allocationSize = req.size;
-            alloc.memoryTypeIndex = memoryType(gpu, req.memoryTypeBits,
-                                               VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-            VkDeviceMemory memory = VK_NULL_HANDLE;
-            check(vkAllocateMemory(device, &alloc, nullptr, &memory), "vkAllocateMemory");
-            cleanup.steps.push_back([=] { vkFreeMemory(device, memory, nullptr); });
-            check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
-            if (data) {
-                void* mapped = nullptr;
-                check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
-                std::memcpy(mapped, data, std::size_t(size));
-                vkUnmapMemory(device, memory);
-            }
-            return std::make_pair(buffer, memory);
+            return vkHostBuffer(gpu, device, cleanup, size, usage, data);
         };
         const VkDeviceSize pointBytes = input.points.size() * sizeof(glm::vec4);
         const std::size_t pointCount = input.points.size() / 2;
@@ -175,24 +135,24 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
         imageInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
         imageInfo.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
         VkImage image = VK_NULL_HANDLE;
-        check(vkCreateImage(device, &imageInfo, nullptr, &image), "vkCreateImage");
+        vkCheck(vkCreateImage(device, &imageInfo, nullptr, &image), "vkCreateImage");
         cleanup.steps.push_back([=] { vkDestroyImage(device, image, nullptr); });
         VkMemoryRequirements imageReq;
         vkGetImageMemoryRequirements(device, image, &imageReq);
         VkMemoryAllocateInfo imageAlloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
         imageAlloc.allocationSize = imageReq.size;
-        imageAlloc.memoryTypeIndex = memoryType(gpu, imageReq.memoryTypeBits, 0);
+        imageAlloc.memoryTypeIndex = vkMemoryType(gpu, imageReq.memoryTypeBits, 0);
         VkDeviceMemory imageMemory = VK_NULL_HANDLE;
-        check(vkAllocateMemory(device, &imageAlloc, nullptr, &imageMemory), "vkAllocateMemory (image)");
+        vkCheck(vkAllocateMemory(device, &imageAlloc, nullptr, &imageMemory), "vkAllocateMemory (image)");
         cleanup.steps.push_back([=] { vkFreeMemory(device, imageMemory, nullptr); });
-        check(vkBindImageMemory(device, image, imageMemory, 0), "vkBindImageMemory");
+        vkCheck(vkBindImageMemory(device, image, imageMemory, 0), "vkBindImageMemory");
         VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
         viewInfo.image = image;
         viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
         viewInfo.format = input.format;
         viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
         VkImageView view = VK_NULL_HANDLE;
-        check(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
+        vkCheck(vkCreateImageView(device, &viewInfo, nullptr, &view), "vkCreateImageView");
         cleanup.steps.push_back([=] { vkDestroyImageView(device, view, nullptr); });
 
         VkSamplerCustomBorderColorCreateInfoEXT customBorder{VK_STRUCTURE_TYPE_SAMPLER_CUSTOM_BORDER_COLOR_CREATE_INFO_EXT};
@@ -209,7 +169,7 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
                                                                     : VK_BORDER_COLOR_FLOAT_CUSTOM_EXT;
         if (!standardBorder) samplerInfo.pNext = &customBorder;
         VkSampler sampler = VK_NULL_HANDLE;
-        check(vkCreateSampler(device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
+        vkCheck(vkCreateSampler(device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
         cleanup.steps.push_back([=] { vkDestroySampler(device, sampler, nullptr); });
 
         // Descriptors: the map, the points, the shadows.
@@ -221,7 +181,7 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
         setLayoutInfo.bindingCount = 3;
         setLayoutInfo.pBindings = bindings;
         VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-        check(vkCreateDescriptorSetLayout(device, &setLayoutInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
+        vkCheck(vkCreateDescriptorSetLayout(device, &setLayoutInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
         cleanup.steps.push_back([=] { vkDestroyDescriptorSetLayout(device, setLayout, nullptr); });
         const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
                                                {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
@@ -230,14 +190,14 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
         descriptorPoolInfo.poolSizeCount = 2;
         descriptorPoolInfo.pPoolSizes = sizes;
         VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-        check(vkCreateDescriptorPool(device, &descriptorPoolInfo, nullptr, &descriptorPool), "vkCreateDescriptorPool");
+        vkCheck(vkCreateDescriptorPool(device, &descriptorPoolInfo, nullptr, &descriptorPool), "vkCreateDescriptorPool");
         cleanup.steps.push_back([=] { vkDestroyDescriptorPool(device, descriptorPool, nullptr); });
         VkDescriptorSetAllocateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
         setInfo.descriptorPool = descriptorPool;
         setInfo.descriptorSetCount = 1;
         setInfo.pSetLayouts = &setLayout;
         VkDescriptorSet set = VK_NULL_HANDLE;
-        check(vkAllocateDescriptorSets(device, &setInfo, &set), "vkAllocateDescriptorSets");
+        vkCheck(vkAllocateDescriptorSets(device, &setInfo, &set), "vkAllocateDescriptorSets");
         const VkDescriptorImageInfo imageDescriptor{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
         const VkDescriptorBufferInfo pointsDescriptor{points.first, 0, VK_WHOLE_SIZE};
         const VkDescriptorBufferInfo shadowsDescriptor{shadows.first, 0, VK_WHOLE_SIZE};
@@ -258,13 +218,13 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
         moduleInfo.codeSize = input.spirv.size() * 4;
         moduleInfo.pCode = input.spirv.data();
         VkShaderModule module = VK_NULL_HANDLE;
-        check(vkCreateShaderModule(device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
+        vkCheck(vkCreateShaderModule(device, &moduleInfo, nullptr, &module), "vkCreateShaderModule");
         cleanup.steps.push_back([=] { vkDestroyShaderModule(device, module, nullptr); });
         VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
         layoutInfo.setLayoutCount = 1;
         layoutInfo.pSetLayouts = &setLayout;
         VkPipelineLayout layout = VK_NULL_HANDLE;
-        check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
+        vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout), "vkCreatePipelineLayout");
         cleanup.steps.push_back([=] { vkDestroyPipelineLayout(device, layout, nullptr); });
         VkComputePipelineCreateInfo pipelineInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
         pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
@@ -273,24 +233,24 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
         pipelineInfo.stage.pName = "main";
         pipelineInfo.layout = layout;
         VkPipeline pipeline = VK_NULL_HANDLE;
-        check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline),
+        vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline),
               "vkCreateComputePipelines");
         cleanup.steps.push_back([=] { vkDestroyPipeline(device, pipeline, nullptr); });
 
         VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         poolInfo.queueFamilyIndex = family;
         VkCommandPool pool = VK_NULL_HANDLE;
-        check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
+        vkCheck(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
         cleanup.steps.push_back([=] { vkDestroyCommandPool(device, pool, nullptr); });
         VkCommandBufferAllocateInfo cbInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
         cbInfo.commandPool = pool;
         cbInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
         cbInfo.commandBufferCount = 1;
         VkCommandBuffer cb = VK_NULL_HANDLE;
-        check(vkAllocateCommandBuffers(device, &cbInfo, &cb), "vkAllocateCommandBuffers");
+        vkCheck(vkAllocateCommandBuffers(device, &cbInfo, &cb), "vkAllocateCommandBuffers");
         VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        check(vkBeginCommandBuffer(cb, &begin), "vkBeginCommandBuffer");
+        vkCheck(vkBeginCommandBuffer(cb, &begin), "vkBeginCommandBuffer");
         VkImageMemoryBarrier toCopy{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
         toCopy.srcAccessMask = 0;
         toCopy.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
@@ -323,18 +283,18 @@ LookupPassResult runLookupVulkan(const LookupPassInput& input) {
         toHost.size = VK_WHOLE_SIZE;
         vkCmdPipelineBarrier(cb, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1,
                              &toHost, 0, nullptr);
-        check(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
+        vkCheck(vkEndCommandBuffer(cb), "vkEndCommandBuffer");
         VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
         VkFence fence = VK_NULL_HANDLE;
-        check(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
+        vkCheck(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
         cleanup.steps.push_back([=] { vkDestroyFence(device, fence, nullptr); });
         VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         submit.commandBufferCount = 1;
         submit.pCommandBuffers = &cb;
-        check(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
-        check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+        vkCheck(vkQueueSubmit(queue, 1, &submit, fence), "vkQueueSubmit");
+        vkCheck(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
         void* mapped = nullptr;
-        check(vkMapMemory(device, shadows.second, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory (read back)");
+        vkCheck(vkMapMemory(device, shadows.second, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory (read back)");
         result.shadow.resize(pointCount);
         std::memcpy(result.shadow.data(), mapped, pointCount * sizeof(float));
         vkUnmapMemory(device, shadows.second);
