@@ -280,6 +280,7 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
       << shortestFloatText(b.x) << ", " << shortestFloatText(b.y) << ", " << shortestFloatText(b.z) << ", " << shortestFloatText(b.w)
       << "). The comparison sampler above is not read by this lookup.\n";
     for (const std::string& clamp : e.techniqueClamps) o << "// Clamped: " << clamp << ".\n";
+    for (const std::string& left : e.notExported) o << "// Not exported: " << left << ".\n";
     o << "// 1. Convert (" << p << "MomentsConvert): uDepth = the depth map as a plain 2D array (a cube map's faces as its\n"
       << "//    layers), uLayer = the view's layer, uOut = the moments image's layer (rgba image binding 0); dispatch\n"
       << "//    ceil(" << e.shadow.resolution << " / 8) x ceil(" << e.shadow.resolution << " / 8) groups.\n"
@@ -574,6 +575,7 @@ nlohmann::json jsonOf(const ShadowExport& e) {
                                     {"glFormat", momentFormatName(e.momentFormat, ExportFormat::GL)},
                                     {"border", {b.x, b.y, b.z, b.w}},
                                     {"clamps", e.techniqueClamps},
+                                    {"notExported", e.notExported},
                                     {"blur", blur},
                                     {"convertGlsl", shaders.convert},
                                     {"blurGlsl", shaders.blur}};

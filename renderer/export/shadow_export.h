@@ -104,6 +104,9 @@ struct ShadowExport {
     std::string momentFormat;
     glm::vec4 momentBorder{0.0f};  // the moments sampler's border colour: the border depth's moments
     std::vector<std::string> techniqueClamps;
+    // Settings of this light's technique the export does not write, each with what is written instead (the snippet
+    // and the JSON say so: nothing is dropped silently).
+    std::vector<std::string> notExported;
 };
 
 // A moments technique's storage as a GLSL image format ("rg16f", "rg32f", "rgba16f", "rgba32f", "rgba16": MSM's

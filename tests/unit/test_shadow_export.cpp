@@ -471,5 +471,23 @@ TEST(DepthFormatChange, NoBiasOrSameFormatChangesNothingButTheFormat) {
     EXPECT_EQ(changeDepthFormat(shadow, shadow.format, 0.75).note, "");
 }
 
+// A setting the export cannot write is named in the snippet and the JSON (filter.momentMips: the main pass's trilinear
+// read needs the pixel's screen derivatives), never dropped silently.
+TEST(ShadowExportTechniques, MomentMipsAreNamedAsNotExported) {
+    Settings s;
+    s.filter.kind = FilterKind::Vsm;
+    for (const bool mips : {false, true}) {
+        s.filter.momentMips = mips;
+        const ShadowExportSet set = exportSet(s);
+        ASSERT_FALSE(set.lights.empty());
+        ASSERT_TRUE(set.lights[0].shadow.has_value());
+        const std::string glsl = exportSnippet(set, ExportFormat::GL);
+        const nlohmann::json json = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json));
+        const std::string jsonText = json.dump();
+        EXPECT_EQ(count(glsl, "// Not exported: filter.momentMips"), mips ? 1u : 0u) << "mips " << mips;
+        EXPECT_EQ(count(jsonText, "filter.momentMips = true"), mips ? 1u : 0u) << "mips " << mips;
+    }
+}
+
 }  // namespace
 }  // namespace shadowlab
