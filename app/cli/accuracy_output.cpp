@@ -134,8 +134,8 @@ void printAccuracyCost(std::ostream& out, const AccuracyReport& r) {
         << " pixels far from a visible edge probed for hidden ones)\n";
     out << "  tool frame     " << c.toolFrameMs << " ms (render " << c.toolRenderMs
         << ": scene upload, shadow pass, shadow-factor pass; read-back " << c.toolReadBackMs << ")\n";
-    out << "  metrics        " << c.metricsMs << " ms (causes " << c.causesMs << ", overlays " << c.overlaysMs
-        << ", distances and numbers " << std::max(0.0, c.metricsMs - c.causesMs - c.overlaysMs) << ")\n";
+    out << "  metrics        " << c.metricsMs << " ms (causes " << c.causesMs << "; overlays and per-pixel copies "
+        << c.overlaysMs << ", made on other threads beside the numbers)\n";
     if (c.programsBuilt > 0)
         out << "  programs       " << c.programsBuilt << " GL programs built in " << c.programBuildMs
             << " ms (first use; inside the stages above)\n";

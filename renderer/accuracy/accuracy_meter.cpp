@@ -16,6 +16,7 @@
 #include "reference/parallel_rows.h"
 #include "reference/soft_visibility.h"
 #include "reference/visibility.h"
+#include "shading/main_pass.h"
 #include "scene/scene_casters.h"
 #include "views/shadow_view.h"
 
@@ -335,17 +336,19 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     const std::size_t count = std::size_t(width) * std::size_t(height);
     std::vector<float> shadowFactor(count);
     std::vector<std::uint8_t> toolCovered(count);
+    // Red and green only (half the bytes of the RGBA32F frame): the shadow view writes grey, S in every channel,
+    // and the clear colour's red and green differ, so red == green tells a drawn pixel.
+    static_assert(kClearColour[0] != kClearColour[1], "the tool frame's coverage test needs red != green");
     const bool readBack = m.toolReadBack.read(
-        m.toolTarget.colorTexture(), GL_RGBA, GL_FLOAT, count * 4 * sizeof(float), [&](const void* pixels) {
+        m.toolTarget.colorTexture(), GL_RG, GL_FLOAT, count * 2 * sizeof(float), [&](const void* pixels) {
             const float* frame = static_cast<const float*>(pixels);
             parallelRows(height, [&](int row) {
                 const std::size_t src = std::size_t(height - 1 - row) * std::size_t(width);
                 const std::size_t dst = std::size_t(row) * std::size_t(width);
                 for (std::size_t x = 0; x < std::size_t(width); ++x) {
-                    const float* px = &frame[(src + x) * 4];
+                    const float* px = &frame[(src + x) * 2];
                     shadowFactor[dst + x] = px[0];
-                    // The shadow view writes grey; the clear colour is not grey.
-                    toolCovered[dst + x] = px[0] == px[1] && px[1] == px[2] ? 1 : 0;
+                    toolCovered[dst + x] = px[0] == px[1] ? 1 : 0;
                 }
             });
         });
@@ -507,6 +510,30 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
     input.worldPerPixel = [&](std::size_t i) { return units.worldPerPixel(i); };
     MetricsResult metrics = computeMetrics(input);
     static_cast<AccuracyNumbers&>(report) = metrics;
+    report.width = width;
+    report.height = height;
+    // The pictures and the per-pixel copies need nothing computed below: they are made on other threads while this
+    // one computes the rest of the numbers (their fresh buffers are first written on one thread each).
+    const auto overlaysStart = Clock::now();
+    auto overlay = [&](OverlayKind kind) {
+        return std::async(std::launch::async, [&, kind] {
+            return makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
+                               boundary, settings.ambient);
+        });
+    };
+    auto errorOverlay = overlay(OverlayKind::Error);
+    auto causeOverlay = overlay(OverlayKind::Cause);
+    std::future<std::vector<std::uint8_t>> softOverlay;
+    if (disc.soft())
+        softOverlay = std::async(std::launch::async, [&] {
+            return makeSoftOverlay(width, height, m.visibility.classes, shadowFactor, m.visibility.lambert,
+                                   m.soft.visibility, metrics.measured, settings.ambient);
+        });
+    auto copies = std::async(std::launch::async, [&] {
+        report.pixelClass = m.visibility.classes;
+        report.pixelLambert = m.visibility.lambert;
+        if (disc.soft()) report.pixelSoftVisibility = m.soft.visibility;
+    });
     report.texelDensity = texelDensityOf(metrics.measured, units, width, height);
     if (disc.soft()) {
         SoftMetricsInput softInput;
@@ -527,7 +554,6 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         report.soft.size = double(settings.lights[0].size);
         report.soft.sizeUnit = settings.lights[0].type == LightType::Directional ? "degrees" : "world units";
         report.soft.rays = disc.rays;
-        report.pixelSoftVisibility = m.soft.visibility;
     }
     // Per row on all cores (a shadowed pixel's distance is a nearest-point query), the counts summed after.
     report.pixelOnBoundary.assign(count, 0);
@@ -547,21 +573,12 @@ AccuracyReport AccuracyMeter::measure(const Scene& scene, const Settings& given,
         report.counts.shadowedNearEdge += shadowedNearEdge[std::size_t(row)];
     }
     report.coarseMapWarning = coarseMapWarning(report);
-    report.width = width;
-    report.height = height;
-    const auto overlaysStart = Clock::now();
-    for (OverlayKind kind : {OverlayKind::Error, OverlayKind::Cause})
-        (kind == OverlayKind::Error ? report.overlayRgba : report.causeOverlayRgba) =
-            makeOverlay(kind, width, height, m.visibility.classes, shadowFactor, m.visibility.lambert, metrics,
-                        boundary, settings.ambient);
-    if (disc.soft())
-        report.softOverlayRgba = makeSoftOverlay(width, height, m.visibility.classes, shadowFactor,
-                                                 m.visibility.lambert, m.soft.visibility, metrics.measured,
-                                                 settings.ambient);
+    report.overlayRgba = errorOverlay.get();
+    report.causeOverlayRgba = causeOverlay.get();
+    if (softOverlay.valid()) report.softOverlayRgba = softOverlay.get();
+    copies.get();
     report.cost.overlaysMs = msSince(overlaysStart);
-    report.pixelClass = m.visibility.classes;
     report.pixelShadow = std::move(shadowFactor);
-    report.pixelLambert = m.visibility.lambert;
     report.pixelCause = std::move(metrics.causes);  // the overlays above were the last to read them
     report.pixelMark = std::move(metrics.marks);
     report.pixelMeasured = std::move(metrics.measured);

@@ -104,7 +104,7 @@ struct AccuracyCost {
     int programsBuilt = 0;         // GL programs built during this measurement (first use of a pass or variant)
     double programBuildMs = 0.0;   // their preprocess + compile + link wall time (inside the stages above)
     double causesMs = 0.0;         // metricsMs's part: a cause for each mismatched pixel (rays)
-    double overlaysMs = 0.0;       // metricsMs's part: the overlay pictures
+    double overlaysMs = 0.0;       // the overlays and per-pixel copies (beside the numbers)
     double metricsMs = 0.0;        // metrics + overlay (live: the GPU count)
     double uploadMs = 0.0;         // live: the reference uploaded to the GPU counter (once per reference and light space)
     double totalMs = 0.0;

@@ -51,7 +51,8 @@ struct MetricsResult : AccuracyNumbers {
     std::vector<MismatchCause> causes;   // per pixel, for the cause overlay
 };
 
-// counts.boundaryPixels and counts.shadowedNearEdge are left for the caller.
+// counts.boundaryPixels and counts.shadowedNearEdge are left for the caller. Runs on every core: the input's functions
+// are called from several threads at once (for different pixels).
 MetricsResult computeMetrics(const MetricsInput& input);
 
 // The 0-based index of the p-th percentile (0..100) of n sorted values by nearest rank, ceil(p n / 100) - 1 (at

@@ -97,7 +97,7 @@ std::set<std::string> MainPass::run(const MainPassInput& in, RenderTarget& targe
 
     glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer());
     glViewport(0, 0, target.width(), target.height());
-    glClearColor(0.10f, 0.11f, 0.13f, 1.0f);
+    glClearColor(kClearColour[0], kClearColour[1], kClearColour[2], kClearColour[3]);
     glClearDepth(1.0);
     glDepthMask(GL_TRUE);
     glEnable(GL_DEPTH_TEST);

@@ -16,6 +16,9 @@
 
 namespace shadowlab {
 
+// Where no surface is drawn. Not grey: the shadow view writes S as grey, so a reader tells drawn pixels by colour.
+inline constexpr float kClearColour[4] = {0.10f, 0.11f, 0.13f, 1.0f};
+
 // A cascade as the main pass sees it: its view and its layer in the light's map array.
 struct MainPassCascade {
     const ShadowView* view = nullptr;
