@@ -63,36 +63,50 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
     right_ = glm::dvec3(light.view[0][0], light.view[1][0], light.view[2][0]);
     up_ = glm::dvec3(light.view[0][1], light.view[1][1], light.view[2][1]);
 
-    // Every per-pixel buffer is set by the rows below, on every core (PixelVector: no serial initialization first).
+    // Each row's pixels with visibility are counted, then numbered in pixel order (slot_), and their state is set
+    // by the rows below, on every core (PixelVector: no serial initialization first).
     const std::size_t count = samples.size();
-    texel_.resize(count);
-    onBoundary_.resize(count);
-    visibleDistance_.resize(count);
-    probedTo_.resize(count);
-    flipAt_.resize(count);
-    point_ = probe.light.type == LightType::Point;
-    if (point_) face_.resize(count);
-    if (!cascades_.empty()) texelScale_.resize(count);
     const std::size_t w = std::size_t(samples.width);
+    const std::size_t rowCount = std::size_t(std::max(samples.height, 0));
+    std::vector<std::size_t> rowStart(rowCount + 1, 0);
     parallelRows(samples.height, [&](int row) {
+        std::size_t n = 0;
+        for (std::size_t i = std::size_t(row) * w; i < std::size_t(row + 1) * w; ++i) n += hasVisibility(classes[i]);
+        rowStart[std::size_t(row) + 1] = n;
+    });
+    for (std::size_t row = 0; row < rowCount; ++row) rowStart[row + 1] += rowStart[row];
+    const std::size_t slots = rowStart[rowCount];
+    slot_.resize(count);
+    texel_.resize(slots);
+    onBoundary_.resize(slots);
+    visibleDistance_.resize(slots);
+    probedTo_.resize(slots);
+    flipAt_.resize(slots);
+    point_ = probe.light.type == LightType::Point;
+    if (point_) face_.resize(slots);
+    if (!cascades_.empty()) texelScale_.resize(slots);
+    parallelRows(samples.height, [&](int row) {
+        std::size_t s = rowStart[std::size_t(row)];
         for (std::size_t i = std::size_t(row) * w; i < std::size_t(row + 1) * w; ++i) {
-            texel_[i] = glm::dvec2(std::numeric_limits<double>::quiet_NaN());
-            onBoundary_[i] = 0;
-            visibleDistance_[i] = -1.0f;  // not yet computed
-            probedTo_[i] = 0.0f;
-            flipAt_[i] = std::numeric_limits<float>::infinity();
-            if (point_) face_[i] = 0;
-            if (!cascades_.empty()) texelScale_[i] = 1.0f;
-            if (!hasVisibility(classes[i])) continue;
+            if (!hasVisibility(classes[i])) {
+                slot_[i] = -1;
+                continue;
+            }
+            slot_[i] = std::int32_t(s);
+            onBoundary_[s] = 0;
+            visibleDistance_[s] = -1.0f;  // not yet computed
+            probedTo_[s] = 0.0f;
+            flipAt_[s] = std::numeric_limits<float>::infinity();
             if (point_) {
                 const glm::dvec3 d = samples.point[i] - probe.light.position;
-                face_[i] = std::uint8_t(cubeFaceOf(d));  // the face the lookup selects
-                texel_[i] = faceTexels(d, face_[i], light.resolution);
+                face_[s] = std::uint8_t(cubeFaceOf(d));  // the face the lookup selects
+                texel_[s] = faceTexels(d, face_[s], light.resolution);
             } else {
-                texel_[i] = toTexels(light, samples.point[i]);
+                texel_[s] = toTexels(light, samples.point[i]);
             }
             // Beyond the shadow distance no cascade holds a pixel: the last one's texels measure it.
-            if (!cascades_.empty()) texelScale_[i] = float(light.texelWorldSize / texelWorldSizeAt(samples.point[i]));
+            if (!cascades_.empty()) texelScale_[s] = float(light.texelWorldSize / texelWorldSizeAt(samples.point[i]));
+            ++s;
         }
     });
 
@@ -120,7 +134,7 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
                     kept = true;
                 }
             } else {
-                const glm::dvec2 mid = 0.5 * (texel_[i] + texel_[j]);
+                const glm::dvec2 mid = 0.5 * (texel_[std::size_t(slot_[i])] + texel_[std::size_t(slot_[j])]);
                 if (!finite2(mid)) return;
                 out.points.push_back(mid);
                 kept = true;
@@ -139,7 +153,7 @@ ShadowBoundary::ShadowBoundary(const SurfaceSamples& samples, const std::vector<
         points.insert(points.end(), row.points.begin(), row.points.end());
         for (std::size_t f = 0; f < 6; ++f)
             facePoints[f].insert(facePoints[f].end(), row.facePoints[f].begin(), row.facePoints[f].end());
-        for (std::size_t i : row.marked) onBoundary_[i] = 1;
+        for (std::size_t i : row.marked) onBoundary_[std::size_t(slot_[i])] = 1;
     }
     tree_ = PointTree(std::move(points));
     for (std::size_t f = 0; f < 6; ++f) faceTrees_[f] = PointTree(std::move(facePoints[f]));
@@ -174,8 +188,9 @@ bool ShadowBoundary::alongTheRays(std::size_t i) const {
 }
 
 double ShadowBoundary::probe(std::size_t i, double k) {
-    if (flipAt_[i] <= k) return flipAt_[i];
-    if (!probe_.bvh || probedTo_[i] >= k) return kInfinity;
+    const std::size_t s = std::size_t(slot_[i]);  // distance() asks only pixels with visibility
+    if (flipAt_[s] <= k) return flipAt_[s];
+    if (!probe_.bvh || probedTo_[s] >= k) return kInfinity;
     const glm::dvec3& p = samples_->point[i];
     const glm::dvec3& n = samples_->normal[i];
     const bool lit = isLit((*classes_)[i]);
@@ -187,15 +202,15 @@ double ShadowBoundary::probe(std::size_t i, double k) {
     // The ring lies on the light's image plane: a point light's is the plane of the pixel's cube face.
     glm::dvec3 right = right_, up = up_;
     if (point_) {
-        const int axis = face_[i] / 2;
+        const int axis = face_[s] / 2;
         right = glm::dvec3(0.0);
         up = glm::dvec3(0.0);
         right[(axis + 1) % 3] = 1.0;
         up[(axis + 2) % 3] = 1.0;
     }
-    if (probedTo_[i] == 0.0f) ++probedPixels_;
+    if (probedTo_[s] == 0.0f) ++probedPixels_;
     std::size_t rays = 0;
-    double radius = double(probedTo_[i]);
+    double radius = double(probedTo_[s]);
     double found = kInfinity;
     while (radius < k && found == kInfinity) {
         radius = std::min(radius + kProbeStepTexels, k);
@@ -212,24 +227,26 @@ double ShadowBoundary::probe(std::size_t i, double k) {
         }
     }
     probeRays_ += rays;
-    probedTo_[i] = float(radius);
-    flipAt_[i] = float(found);
+    probedTo_[s] = float(radius);
+    flipAt_[s] = float(found);
     return found;
 }
 
 double ShadowBoundary::visibleDistance(std::size_t i) {
-    if (visibleDistance_[i] < 0.0f) {
-        const glm::dvec2& t = texel_[i];
-        const PointTree& tree = point_ ? faceTrees_[face_[i]] : tree_;
-        const double scale = texelScale_.empty() ? 1.0 : double(texelScale_[i]);
-        visibleDistance_[i] = finite2(t) ? float(tree.nearestDistance(t) * scale) : float(kInfinity);
+    if (slot_[i] < 0) return kInfinity;  // no surface the light reaches: on no side of a boundary
+    const std::size_t s = std::size_t(slot_[i]);
+    if (visibleDistance_[s] < 0.0f) {
+        const glm::dvec2& t = texel_[s];
+        const PointTree& tree = point_ ? faceTrees_[face_[s]] : tree_;
+        const double scale = texelScale_.empty() ? 1.0 : double(texelScale_[s]);
+        visibleDistance_[s] = finite2(t) ? float(tree.nearestDistance(t) * scale) : float(kInfinity);
     }
-    return visibleDistance_[i];
+    return visibleDistance_[s];
 }
 
 double ShadowBoundary::distance(std::size_t i, double k) {
     const double visible = visibleDistance(i);
-    if (visible <= k) return visible;
+    if (visible <= k || slot_[i] < 0) return visible;
     return std::min(visible, probe(i, k));
 }
 
@@ -244,7 +261,10 @@ void ShadowBoundary::prepareVisible() {
 }
 
 DistanceState ShadowBoundary::state(std::size_t i, double k) const {
-    DistanceState s{visibleDistance_[i], flipAt_[i], probedTo_[i]};
+    const std::int32_t slot = slot_[i];
+    DistanceState s = slot >= 0 ? DistanceState{visibleDistance_[std::size_t(slot)], flipAt_[std::size_t(slot)],
+                                                probedTo_[std::size_t(slot)]}
+                                : DistanceState{-1.0f, float(kInfinity), 0.0f};
     if (s.visible < 0.0f) s.visible = float(kInfinity);  // not computed: no surface here
     // distance(i, k) answers "farther than k" without probing when the tangent plane runs along the light's rays.
     if (s.visible > k && s.flipAt > k && s.probedTo < k && probes()) {

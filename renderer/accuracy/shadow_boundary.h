@@ -73,7 +73,7 @@ public:
     // World size of one shadow-map texel at p (directional: constant, a cascaded light's: the holding cascade's;
     // spot: at p's depth along the axis; point: at p's depth in its cube face).
     double texelWorldSizeAt(const glm::dvec3& p) const;
-    bool onBoundary(std::size_t i) const { return !onBoundary_.empty() && onBoundary_[i] != 0; }
+    bool onBoundary(std::size_t i) const { return !slot_.empty() && slot_[i] >= 0 && onBoundary_[slot_[i]] != 0; }
     std::size_t probedPixels() const { return probedPixels_.load(); }
     std::size_t probeRays() const { return probeRays_.load(); }
 
@@ -87,6 +87,10 @@ private:
     LightSpace light_;
     BoundaryProbe probe_;
     glm::dvec3 right_{1.0, 0.0, 0.0}, up_{0.0, 1.0, 0.0};  // the light's image axes in world space
+    // Only pixels with visibility (about a tenth of a typical view) hold state: slot_ maps a pixel to its index in
+    // the arrays below (-1: no surface the light reaches). Dense arrays over every pixel were most of this object's
+    // cost: the OS zeroing their fresh pages.
+    PixelVector<std::int32_t> slot_;
     PixelVector<glm::dvec2> texel_;
     PixelVector<std::uint8_t> onBoundary_;  // the lit pixel of each boundary pair: the thin line in the overlay
     PixelVector<float> visibleDistance_;    // to the visible boundary; -1 = not yet computed
@@ -96,9 +100,9 @@ private:
     std::atomic<std::size_t> probeRays_{0};
     PointTree tree_;
     std::array<PointTree, 6> faceTrees_;  // point light: the boundary on each cube face's plane
-    PixelVector<std::uint8_t> face_;      // point light: the face that sees each pixel
+    PixelVector<std::uint8_t> face_;      // point light: the face that sees each pixel (by slot)
     std::vector<ShadowView> cascades_;    // a cascaded light's cascades
-    PixelVector<float> texelScale_;       // cascades: the first cascade's texel over the holding cascade's, per pixel
+    PixelVector<float> texelScale_;       // cascades: the first cascade's texel over the holding cascade's (by slot)
     bool point_ = false;
 };
 
