@@ -47,6 +47,7 @@ std::vector<std::string> rowCells(const SweepPointResult& p, bool soft) {
             formatted("%.3f", p.shadowMs),
             formatted("%.3f", p.momentsMs),
             formatted("%.3f", p.blurMs),
+            formatted("%.3f", p.mipsMs),
             formatted("%.3f", p.mainMs),
             formatted("%.3f", p.costMs),
             formatted("%.2fx", p.shadowOverBare),
@@ -161,9 +162,9 @@ int runSweep(const SweepOptions& options) {
                     else
                         std::fprintf(stderr,
                                      "[%zu/%zu] %-24s shadow %.3f ms (%.2fx bare)  moments %.3f ms  blur %.3f ms  "
-                                     "main %.3f ms  wrong %.3f %%%s%s\n",
+                                     "mips %.3f ms  main %.3f ms  wrong %.3f %%%s%s\n",
                                      done, total, p.label.c_str(), p.shadowMs, p.shadowOverBare, p.momentsMs,
-                                     p.blurMs, p.mainMs, p.accuracy.wrongPercent,
+                                     p.blurMs, p.mipsMs, p.mainMs, p.accuracy.wrongPercent,
                                      p.soft.measured ? ("  soft |S-V| " + formatted("%.5f", p.soft.meanError)).c_str()
                                                      : "",
                                      p.referenceReused ? "" : "  (reference computed)");
@@ -193,7 +194,7 @@ int runSweep(const SweepOptions& options) {
         labelWidth = std::max(labelWidth, head.size());
         const bool soft = sweepSoftError(result);
         std::vector<std::string> header = {head,      "map",     "map MiB",  "shadow ms", "moments ms", "blur ms",
-                                           "main ms", "cost ms", "x bare",   "wrong %",   "mean|S-V|",  "acne %",
+                                           "mips ms", "main ms", "cost ms", "x bare",   "wrong %",   "mean|S-V|",  "acne %",
                                            "leak %",  "edge tx", "edge world", "edge px"};
         if (soft)
             for (const char* column : {"soft|S-V|", "soft wrong", "bleed %", "dark %", "penumbra"})
@@ -201,7 +202,7 @@ int runSweep(const SweepOptions& options) {
         printRow(std::cout, labelWidth, header);
         for (const SweepPointResult& p : result.points) printRow(std::cout, labelWidth, rowCells(p, soft));
         if (result.preset) printRow(std::cout, labelWidth, rowCells(*result.preset, soft));
-        std::cout << "(* = on the Pareto front; cost = shadow + moments + blur + main; x bare = shadow pass / bare "
+        std::cout << "(* = on the Pareto front; cost = shadow + moments + blur + mips + main; x bare = shadow pass / bare "
                      "depth draw; wrong = |S-V| >= 0.5, edges included; edge = p95 distance of mismatched pixels to "
                      "the true edge"
                   << (soft ? "; soft columns against the soft reference: mean |S-V|, wrong, bleeding (lit umbra), "

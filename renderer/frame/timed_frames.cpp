@@ -11,7 +11,8 @@ TimedFrames timeFrames(Renderer& renderer, const Scene& scene, const Settings& s
         renderer.waitForTimings(stats);
         if (!stats.ok) return stats.error;
         ms = {stats.shadowPass.milliseconds.value_or(0.0), stats.mainPass.milliseconds.value_or(0.0),
-              stats.momentsPass.milliseconds.value_or(0.0), stats.blurPass.milliseconds.value_or(0.0)};
+              stats.momentsPass.milliseconds.value_or(0.0), stats.blurPass.milliseconds.value_or(0.0),
+              stats.mipsPass.milliseconds.value_or(0.0)};
         result.last = std::move(stats);
         return "";
     }, renderer.glInfo().softwareRasterizer ? 0.0 : kGpuWarmUpMs);
@@ -22,6 +23,7 @@ TimedFrames timeFrames(Renderer& renderer, const Scene& scene, const Settings& s
     result.mainMs = timing.medianMs.size() > 1 ? timing.medianMs[1] : 0.0;
     result.momentsMs = timing.medianMs.size() > 2 ? timing.medianMs[2] : 0.0;
     result.blurMs = timing.medianMs.size() > 3 ? timing.medianMs[3] : 0.0;
+    result.mipsMs = timing.medianMs.size() > 4 ? timing.medianMs[4] : 0.0;
     result.shadowMinMs = timing.minMs.size() > 0 ? timing.minMs[0] : 0.0;
     result.mainMinMs = timing.minMs.size() > 1 ? timing.minMs[1] : 0.0;
     result.wallMsPerFrame = timing.wallMsPerRun;

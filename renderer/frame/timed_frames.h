@@ -16,8 +16,9 @@ struct TimedFrames {
     std::string error;
     double shadowMs = 0.0;        // median over the timed frames
     double mainMs = 0.0;
-    double momentsMs = 0.0;       // a moments technique's conversion and blur (0 for depth techniques)
+    double momentsMs = 0.0;       // a moments technique's conversion, blur and mips (0 for depth techniques)
     double blurMs = 0.0;
+    double mipsMs = 0.0;          // filter.momentMips's mips pass (0 while it is off)
     double shadowMinMs = 0.0;     // the fastest timed frame: robust to other processes on a loaded CPU
     double mainMinMs = 0.0;
     double wallMsPerFrame = 0.0;

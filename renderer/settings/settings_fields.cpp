@@ -595,8 +595,9 @@ std::vector<SettingsField> buildGlobalFields() {
                                     {{BlurUnit::Texels, "texels"}, {BlurUnit::World, "world"}},
                                     [](auto& s) -> auto& { return s.filter.blurUnit; }));
     f.push_back(tagged(boolField("filter.momentMips",
-                                 "Moments techniques: mip levels of the blurred moments (each level the 2x2 mean of "
-                                 "the one below, built when a view's moments are), read trilinearly at the level of "
+                                 "Moments techniques: mip levels of the moments (each level the 2x2 mean of the "
+                                 "texels below that hold a caster, built before the blur when a view's moments are), "
+                                 "read trilinearly at the level of "
                                  "the pixel's footprint in the map: a distant or grazing receiver averages the texels "
                                  "it covers instead of picking one (less aliasing and flicker)",
                                  [](auto& s) -> auto& { return s.filter.momentMips; }),

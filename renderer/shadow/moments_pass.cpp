@@ -4,6 +4,7 @@
 #include "gl/program.h"
 #include "shading/filters/filter_technique.h"
 #include "shading/filters/moment_filter.h"
+#include "shading/filters/moments_mirror.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -200,9 +201,11 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
     timer.end(TimedPass::Moments);
     result.moments = {true, joined(reasons), timer.latestMilliseconds(TimedPass::Moments)};
 
+    // The mips before the blur: level 1 from the unblurred moments, so that no level mixes the blur's fringe of
+    // "no caster" (the far plane) around the casters' outline into a caster's texels (mipViews).
+    mipViews(work, format, filter, joined(reasons), timer, result);
     if (!anyBlur) result.blur = {false, "filter.blurWidth is 1 texel: no blur", std::nullopt};
     else blurViews(work, format, filter, joined(reasons), timer, result);
-    mipViews(work, format, filter, joined(reasons), timer, result);
     glUseProgram(0);
     return result;
 }
@@ -263,6 +266,8 @@ void MomentsPass::mipViews(const std::vector<Work>& work, GLenum format, const F
                                        {"MIPS", std::string("MOMENT_FORMAT ") + imageFormatName(format)});
     timer.begin(TimedPass::Mips);
     glUseProgram(mips.id());
+    const glm::vec4 empty = emptyMoments(filter);
+    glUniform4fv(glGetUniformLocation(mips.id(), "uEmpty"), 1, &empty.x);
     int levels = 1;
     for (const Work& w : work) {
         const Storage& s = storage_.at(w.view->group);

@@ -36,6 +36,7 @@ nlohmann::json pointToJson(const SweepResult& result, const SweepPointResult& p)
             {"shadowPassMs", p.shadowMs},
             {"momentsPassMs", p.momentsMs},
             {"blurPassMs", p.blurMs},
+            {"mipsPassMs", p.mipsMs},
             {"mainPassMs", p.mainMs},
             {"costMs", p.costMs},
             {"shadowPassMinMs", p.shadowMinMs},
@@ -120,7 +121,7 @@ nlohmann::json sweepToJson(const SweepResult& result) {
 
 std::string sweepToCsv(const SweepResult& result) {
     std::ostringstream out;
-    out << "label,preset,paretoFront,shadowPassMs,momentsPassMs,blurPassMs,mainPassMs,costMs,bareDrawMs,"
+    out << "label,preset,paretoFront,shadowPassMs,momentsPassMs,blurPassMs,mipsPassMs,mainPassMs,costMs,bareDrawMs,"
            "shadowPassOverBareDraw,resolution,depthFormat,shadowMapBytes,wrongPixelsPercent,meanError,acnePercent,"
            "acneSeverity,leakPercent,edgeErrorP95Texels,edgeErrorP95World,edgeErrorP95ScreenPixels,"
            "softWrongPixelsPercent,softMeanError,softBleedingPercent,softOverDarkeningPercent,"
@@ -136,7 +137,7 @@ std::string sweepToCsv(const SweepResult& result) {
     auto row = [&](const SweepPointResult& p, bool preset) {
         const AccuracyNumbers& n = p.accuracy;
         out << csvField(p.label) << "," << (preset ? 1 : 0) << "," << (p.onFront ? 1 : 0) << "," << p.shadowMs << ","
-            << p.momentsMs << "," << p.blurMs << "," << p.mainMs << "," << p.costMs << "," << p.bareDrawMs << ","
+            << p.momentsMs << "," << p.blurMs << "," << p.mipsMs << "," << p.mainMs << "," << p.costMs << "," << p.bareDrawMs << ","
             << p.shadowOverBare << "," << p.resolution << "," << depthFormatName(p.format) << "," << p.mapBytes
             << "," << n.wrongPercent << "," << n.meanError << "," << n.acnePercent << "," << n.acneSeverity << ","
             << n.leakPercent << "," << n.edgeErrorP95Texels << "," << n.edgeErrorP95World << ","
@@ -165,7 +166,7 @@ LinePlot sweepChart(const SweepResult& result) {
     plot.title = "What accuracy costs: " + axes + " (" + std::to_string(result.width) + "x" +
                  std::to_string(result.height) + ", median of " + std::to_string(result.frames) + " frames)";
     const bool cpu = result.softwareRasterizer();
-    plot.xLabel = std::string("cost: shadow pass + moments + blur + main pass, ms") +
+    plot.xLabel = std::string("cost: shadow pass + moments + blur + mips + main pass, ms") +
                   (cpu ? " (CPU time, software rasterizer)" : " (GPU)");
     const bool soft = sweepSoftError(result);
     plot.yLabel = sweepErrorName(soft);

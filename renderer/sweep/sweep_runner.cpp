@@ -163,7 +163,8 @@ SweepResult runSweep(const Scene& scene, const Settings& base, const SweepPlan& 
         r.mainMs = timed.mainMs;
         r.momentsMs = timed.momentsMs;
         r.blurMs = timed.blurMs;
-        r.costMs = r.shadowMs + r.momentsMs + r.blurMs + r.mainMs;  // a moments technique's passes count
+        r.mipsMs = timed.mipsMs;
+        r.costMs = r.shadowMs + r.momentsMs + r.blurMs + r.mipsMs + r.mainMs;  // a moments technique's passes count
         r.shadowMinMs = timed.shadowMinMs;
         r.mainMinMs = timed.mainMinMs;
         r.wallMsPerFrame = timed.wallMsPerFrame;

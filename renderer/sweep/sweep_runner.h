@@ -4,7 +4,7 @@
 // the timing loop of `bench`), the map's memory, the error numbers of metrics version 2 against one exact reference
 // (AccuracyMeter caches it: it depends only on scene, light, camera and view size) and, for a light with a size, the
 // soft numbers against the soft reference, and the shadow pass as a multiple of a bare depth-only draw of the same
-// triangles into a map of the same size and format. Then the Pareto front of cost (shadow + moments + blur + main ms)
+// triangles into a map of the same size and format. Then the Pareto front of cost (shadow + moments + blur + mips + main ms)
 // against the error (sweepError: wrong pixels, or a soft light's mean |S-V|). Knows no window, UI or CLI; needs a
 // current GL 4.5 context on the calling thread.
 #include "accuracy/accuracy_meter.h"
@@ -29,7 +29,8 @@ struct SweepPointResult {
     double mainMs = 0.0;              // median main pass
     double momentsMs = 0.0;           // median moments pass (a moments technique; 0 for a depth technique)
     double blurMs = 0.0;              // median blur pass (likewise)
-    double costMs = 0.0;              // shadow + moments + blur + main: the cost the front uses
+    double mipsMs = 0.0;              // median mips pass (filter.momentMips; 0 while it is off)
+    double costMs = 0.0;              // shadow + moments + blur + mips + main: the cost the front uses
     double shadowMinMs = 0.0;         // the fastest timed frame of each pass (robust to a loaded CPU)
     double mainMinMs = 0.0;
     double wallMsPerFrame = 0.0;

@@ -367,4 +367,36 @@ TEST_F(SweepTest, TechniqueByBlurWidthCostsTheMomentsAndBlurAndShowsTheSoftError
         EXPECT_NE(header.find(column), std::string::npos) << column;
 }
 
+// The mips pass is its own line of the cost split: nonzero with filter.momentMips, zero without, counted in the cost,
+// and a column of the JSON and CSV.
+TEST_F(SweepTest, MomentMipsAreTheirOwnCostColumn) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings base = loadShippedPreset("default");
+    base.filter.kind = FilterKind::Vsm;
+    base.lights[0].shadow.resolution = 512;
+    const SweepPlan plan = planSweep(base, {"filter.momentMips=false,true"});
+    ASSERT_EQ(plan.error, "");
+    SweepRunOptions options;
+    options.width = 160;
+    options.height = 90;
+    options.frames = 2;
+    options.measurePreset = false;
+    const SweepResult r = runSweep(scene, base, plan, options);
+    ASSERT_TRUE(r.ok) << r.error;
+    ASSERT_EQ(r.points.size(), 2u);
+    for (const SweepPointResult& p : r.points) {
+        SCOPED_TRACE(p.label);
+        ASSERT_FALSE(p.failed()) << p.error;
+        std::printf("%-22s moments %.3f blur %.3f mips %.3f ms\n", p.label.c_str(), p.momentsMs, p.blurMs, p.mipsMs);
+        EXPECT_EQ(p.mipsMs > 0.0, p.settings.filter.momentMips);
+        EXPECT_GT(p.blurMs, 0.0);
+        EXPECT_NEAR(p.costMs, p.shadowMs + p.momentsMs + p.blurMs + p.mipsMs + p.mainMs, 1e-9);
+    }
+    const nlohmann::json json = sweepToJson(r);
+    EXPECT_EQ(json["points"][0]["mipsPassMs"], 0.0);
+    EXPECT_GT(json["points"][1]["mipsPassMs"].get<double>(), 0.0);
+    const std::string csv = sweepToCsv(r);
+    EXPECT_NE(csv.substr(0, csv.find('\n')).find("blurPassMs,mipsPassMs,mainPassMs"), std::string::npos);
+}
+
 }  // namespace shadowlab::test

@@ -128,4 +128,16 @@ ok = d["planner"]["lights"] == 8 and d["planner"]["views"] == 28 and d["planner"
 print(json.dumps(d, indent=1)[:2000]) if not ok else None
 sys.exit(0 if ok else 1)
 PY
+# A moments technique's cost split: the mips pass is its own column, nonzero with filter.momentMips, zero without.
+mips=(--scene builtin:textbook --preset default --width 64 --height 36 --frames 2 --resolutions 64 --filters vsm)
+expect_ok bench-mips "$SHADOWLAB" bench "${mips[@]}" --set filter.momentMips=true --json mips.json
+expect_ok bench-no-mips "$SHADOWLAB" bench "${mips[@]}" --json no-mips.json
+grep -Eq "^resolution +filter +map MiB +shadow ms +moments ms +blur ms +mips ms +main ms" bench-mips.out \
+  && python3 - <<'PY' && pass "bench: the mips pass's column" || fail "bench mips column: $(cat bench-mips.out)"
+import json, sys
+on, off = json.load(open("mips.json"))["rows"][0], json.load(open("no-mips.json"))["rows"][0]
+ok = on["mipsPassMs"] > 0 and on["blurPassMs"] > 0 and off["mipsPassMs"] == 0 and off["blurPassMs"] > 0
+print(on, off) if not ok else None
+sys.exit(0 if ok else 1)
+PY
 finish

@@ -56,8 +56,19 @@ std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resol
     return moments;
 }
 
+glm::vec4 emptyMoments(const FilterSettings& filter) {
+    const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
+    return storedMoments(technique.encode(1.0f, technique.uniforms(filter)), technique, filter.momentBits);
+}
+
+bool isEmptyMoments(const glm::vec4& stored, const glm::vec4& empty) {
+    // moments.comp.glsl's emptyMoments: one storage step (fp16 near 1: 2^-11) relative, beyond float rounding.
+    return std::abs(stored.x - empty.x) <= 1e-3f * std::max(1.0f, std::abs(empty.x));
+}
+
 std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int size, const FilterSettings& filter) {
     const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
+    const glm::vec4 empty = emptyMoments(filter);
     const int below = std::max(size / 2, 1);
     const auto at = [&](int x, int y) {
         return level[std::size_t(std::min(y, size - 1)) * std::size_t(size) + std::size_t(std::min(x, size - 1))];
@@ -65,11 +76,17 @@ std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int 
     std::vector<glm::vec4> out(std::size_t(below) * std::size_t(below));
     for (int y = 0; y < below; ++y)
         for (int x = 0; x < below; ++x) {
-            // The shader's order: (a + b) + c + d, then a quarter.
-            glm::vec4 sum = at(2 * x, 2 * y) + at(2 * x + 1, 2 * y);
-            sum += at(2 * x, 2 * y + 1);
-            sum += at(2 * x + 1, 2 * y + 1);
-            out[std::size_t(y) * std::size_t(below) + std::size_t(x)] = storedMoments(sum * 0.25f, technique, filter.momentBits);
+            // The shader's order: the texels holding a caster summed from (0, 0), (1, 0), (0, 1), (1, 1), then / n.
+            glm::vec4 sum(0.0f);
+            float n = 0.0f;
+            for (int i = 0; i < 4; ++i) {
+                const glm::vec4 m = at(2 * x + (i & 1), 2 * y + (i >> 1));
+                if (isEmptyMoments(m, empty)) continue;
+                sum += m;
+                n += 1.0f;
+            }
+            out[std::size_t(y) * std::size_t(below) + std::size_t(x)] =
+                n > 0.0f ? storedMoments(sum / n, technique, filter.momentBits) : empty;
         }
     return out;
 }

@@ -31,8 +31,14 @@ std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resol
                                       const MomentDepthConvention& convention, const FilterSettings& filter,
                                       double blurWidthTexels);
 
+// "No caster" as the storage holds it: the moments of the far plane (a cleared depth texel, in the moments' depth
+// convention: 1), and whether stored moments are those (their first moment within a storage step of it).
+glm::vec4 emptyMoments(const FilterSettings& filter);
+bool isEmptyMoments(const glm::vec4& stored, const glm::vec4& empty);
+
 // The mip level below a level of `size` x `size` texels (filter.momentMips): size / 2 (at least 1), each texel the
-// mean of the 2x2 texels under it (an odd size's last row and column are left out), stored at the precision.
+// mean of the 2x2 texels under it that hold a caster (emptyMoments where none does; an odd size's last row and column
+// are left out), stored at the precision. The GPU builds level 1 from the unblurred moments (the blur runs after).
 std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int size, const FilterSettings& filter);
 
 }  // namespace shadowlab
