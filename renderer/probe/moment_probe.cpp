@@ -1,5 +1,6 @@
 #include "probe/moment_probe.h"
 
+#include "shading/filters/cube_face_frame.h"
 #include "shading/filters/filter_technique.h"
 #include "shading/filters/moments_mirror.h"
 #include "shadow/moments_pass.h"
@@ -38,46 +39,66 @@ void probeMomentLookup(PixelProbeReport& r, const Renderer& renderer, const Shad
         r.momentLevel = level;
     }
 
-    // Stored moments, read back a few texels at a time per level; outside the map (clamp-to-border) the border
-    // depth's moments.
+    // Stored moments, read back a few texels at a time per level (and cube face); outside the map (clamp-to-border)
+    // the border depth's moments. A cube face is filtered seamlessly: a texel beyond its edge is the neighbouring
+    // face's (cube_face_frame.h), and beyond both edges (a cube corner) the mean of the three texels around the
+    // corner (the specification's recommendation, llvmpipe's); `corner` 1-3 takes one of them alone instead, for
+    // the bounds of an implementation that does otherwise.
     const glm::vec4 border = m.encode(settings.sampler.borderDepth, uniforms);
+    const bool cube = view.kind == ShadowViewKind::CubeFace;
     struct Block {
         int x0 = 0, y0 = 0, w = 0, h = 0;
         std::vector<glm::vec4> texels;
     };
-    std::map<int, Block> blocks;
-    bool missing = false;
-    const auto texelAt = [&](int lvl, int tx, int ty) {
+    std::map<std::pair<int, int>, Block> blocks;  // by level and face
+    bool missing = false, cornerRead = false;
+    const auto storedAt = [&](int lvl, int face, int ax, int ay) {
         const int size = std::max(res >> lvl, 1);
-        const std::optional<int> ax = addressTexel(tx, size, r.addressMode), ay = addressTexel(ty, size, r.addressMode);
-        if (!ax || !ay) return border;
-        Block& b = blocks[lvl];
-        if (*ax < b.x0 || *ax >= b.x0 + b.w || *ay < b.y0 || *ay >= b.y0 + b.h) {
-            b.x0 = std::clamp(*ax - 1, 0, std::max(size - 4, 0)), b.y0 = std::clamp(*ay - 1, 0, std::max(size - 4, 0));
+        Block& b = blocks[{lvl, face}];
+        if (ax < b.x0 || ax >= b.x0 + b.w || ay < b.y0 || ay >= b.y0 + b.h) {
+            b.x0 = std::clamp(ax - 1, 0, std::max(size - 4, 0)), b.y0 = std::clamp(ay - 1, 0, std::max(size - 4, 0));
             b.w = std::min(4, size - b.x0), b.h = std::min(4, size - b.y0);
-            b.texels = renderer.viewMoments(view, b.x0, b.y0, b.w, b.h, lvl);
+            b.texels = renderer.viewMoments(cube ? ShadowViewId{view.light, view.kind, face} : view, b.x0, b.y0, b.w,
+                                            b.h, lvl);
             if (b.texels.size() != std::size_t(b.w * b.h)) {
                 missing = true;
                 b.w = b.h = 0;
                 return border;
             }
         }
-        glm::vec4 value = b.texels[std::size_t(*ay - b.y0) * std::size_t(b.w) + std::size_t(*ax - b.x0)];
+        glm::vec4 value = b.texels[std::size_t(ay - b.y0) * std::size_t(b.w) + std::size_t(ax - b.x0)];
         for (int c = m.channels; c < 4; ++c) value[c] = 0.0f;  // RG storage: only its channels count
         return value;
     };
+    const auto texelAt = [&](int lvl, int tx, int ty, int corner = 0) {
+        const int size = std::max(res >> lvl, 1);
+        if (cube) {
+            const auto seamless = [&](int x, int y) {
+                const CubeTexel at = *seamlessTexel(view.index, x, y, size);
+                return storedAt(lvl, at.face, at.x, at.y);
+            };
+            if (seamlessTexel(view.index, tx, ty, size)) return seamless(tx, ty);
+            cornerRead = true;
+            const int ix = std::clamp(tx, 0, size - 1), iy = std::clamp(ty, 0, size - 1);
+            const glm::vec4 around[3] = {seamless(ix, iy), seamless(tx, iy), seamless(ix, ty)};
+            return corner == 0 ? (around[0] + around[1] + around[2]) / 3.0f : around[corner - 1];
+        }
+        const std::optional<int> ax = addressTexel(tx, size, r.addressMode), ay = addressTexel(ty, size, r.addressMode);
+        if (!ax || !ay) return border;
+        return storedAt(lvl, view.index, *ax, *ay);
+    };
 
-    // Where the GPU reads (float, as moments_lookup.glsl): inside the map, half a texel of the coarser level read
-    // from its edge.
+    // Where the GPU reads (float, as moments_lookup.glsl): inside a 2D map, half a texel of the coarser level read
+    // from its edge; a cube face at the lookup's direction.
     const float step = 1.0f / float(res);
     const glm::vec2 lookupTex(float(r.lightTexture.x), float(r.lightTexture.y));
     const auto readAt = [&](double lambda) {
         const float edge = 0.5f * step * std::exp2(float(std::ceil(lambda)));
-        return r.insideMap ? glm::clamp(lookupTex, glm::vec2(edge), glm::vec2(1.0f - edge)) : lookupTex;
+        return r.insideMap && !cube ? glm::clamp(lookupTex, glm::vec2(edge), glm::vec2(1.0f - edge)) : lookupTex;
     };
     // One level's bilinear read; `round` rounds the sub-texel weights as the GPU's 8 bits may (1: both down, 2: both
-    // up, 3 / 4: one each way).
-    const auto bilinear = [&](int lvl, const glm::vec2& tex, int round) {
+    // up, 3 / 4: one each way); `corner`: texelAt's.
+    const auto bilinear = [&](int lvl, const glm::vec2& tex, int round, int corner) {
         const int size = std::max(res >> lvl, 1);
         const glm::dvec2 u = glm::dvec2(tex) * double(size) - 0.5;
         const glm::ivec2 i0(int(std::floor(u.x)), int(std::floor(u.y)));
@@ -85,20 +106,22 @@ void probeMomentLookup(PixelProbeReport& r, const Renderer& renderer, const Shad
         const auto down = [](double w) { return std::floor(w * 256.0) / 256.0; };
         const auto up = [](double w) { return std::ceil(w * 256.0) / 256.0; };
         if (round) f = {round == 1 || round == 3 ? down(f.x) : up(f.x), round == 1 || round == 4 ? down(f.y) : up(f.y)};
-        const glm::vec4 bottom = texelAt(lvl, i0.x, i0.y) * float(1.0 - f.x) + texelAt(lvl, i0.x + 1, i0.y) * float(f.x);
-        const glm::vec4 top = texelAt(lvl, i0.x, i0.y + 1) * float(1.0 - f.x) + texelAt(lvl, i0.x + 1, i0.y + 1) * float(f.x);
+        const glm::vec4 bottom = texelAt(lvl, i0.x, i0.y, corner) * float(1.0 - f.x) +
+                                 texelAt(lvl, i0.x + 1, i0.y, corner) * float(f.x);
+        const glm::vec4 top = texelAt(lvl, i0.x, i0.y + 1, corner) * float(1.0 - f.x) +
+                              texelAt(lvl, i0.x + 1, i0.y + 1, corner) * float(f.x);
         return bottom * float(1.0 - f.y) + top * float(f.y);
     };
     // The trilinear read at level lambda; `levelRound` rounds the levels' weight to 8 bits down (1) or up (2).
-    const auto filteredAt = [&](double lambda, int round, int levelRound) {
+    const auto filteredAt = [&](double lambda, int round, int levelRound, int corner = 0) {
         const int low = int(std::floor(lambda));
         double frac = lambda - low;
         if (levelRound == 1) frac = std::floor(frac * 256.0) / 256.0;
         if (levelRound == 2) frac = std::ceil(frac * 256.0) / 256.0;
         const glm::vec2 tex = readAt(lambda);
-        const glm::vec4 lower = bilinear(low, tex, round);
+        const glm::vec4 lower = bilinear(low, tex, round, corner);
         if (frac <= 0.0 || low >= maxLevel) return lower;
-        return lower * float(1.0 - frac) + bilinear(low + 1, tex, round) * float(frac);
+        return lower * float(1.0 - frac) + bilinear(low + 1, tex, round, corner) * float(frac);
     };
 
     // The report's tap: the four texels of the (lower) level read.
@@ -116,8 +139,13 @@ void probeMomentLookup(PixelProbeReport& r, const Renderer& renderer, const Shad
                 ProbeTexel texel;
                 const std::optional<int> ax = addressTexel(i0.x + dx, size, r.addressMode),
                                          ay = addressTexel(i0.y + dy, size, r.addressMode);
-                texel.border = !ax || !ay;
+                texel.border = !cube && (!ax || !ay);
                 texel.texel = texel.border ? glm::ivec2(i0.x + dx, i0.y + dy) : glm::ivec2(*ax, *ay);
+                if (cube) {  // the neighbouring face's texel beyond an edge (a corner: shown at the face's own)
+                    const std::optional<CubeTexel> at = seamlessTexel(view.index, i0.x + dx, i0.y + dy, size);
+                    texel.face = at ? at->face : view.index;
+                    texel.texel = at ? glm::ivec2(at->x, at->y) : glm::clamp(i0 + glm::ivec2(dx, dy), 0, size - 1);
+                }
                 texel.stored = texelAt(lvl, i0.x + dx, i0.y + dy).x;
                 texel.weight = (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y);
                 tap.texels.push_back(texel);
@@ -146,11 +174,12 @@ void probeMomentLookup(PixelProbeReport& r, const Renderer& renderer, const Shad
     if (mips && level > 0.0) lambdas = {level, std::max(level - 1.0 / 64.0, 0.0), std::min(level + 1.0 / 64.0, double(maxLevel))};
     for (const double lambda : lambdas)
         for (int round = 0; round <= 4; ++round)
-            for (int levelRound = 0; levelRound <= (mips ? 2 : 0); ++levelRound) {
-                const double s = double(m.shadow(filteredAt(lambda, round, levelRound), z, uniforms)) * cone;
-                r.shadowLow = std::min(r.shadowLow, s);
-                r.shadowHigh = std::max(r.shadowHigh, s);
-            }
+            for (int levelRound = 0; levelRound <= (mips ? 2 : 0); ++levelRound)
+                for (int corner = 0; corner <= (cornerRead ? 3 : 0); ++corner) {
+                    const double s = double(m.shadow(filteredAt(lambda, round, levelRound, corner), z, uniforms)) * cone;
+                    r.shadowLow = std::min(r.shadowLow, s);
+                    r.shadowHigh = std::max(r.shadowHigh, s);
+                }
     // The GPU filters stored values at its own precision (llvmpipe: unorm16 in fixed point): each filtered moment
     // may differ by a couple of storage steps, which MSM's decoding and ill-conditioned bound amplify.
     for (int c = 0; c < m.channels; ++c)

@@ -2,9 +2,12 @@
 
 #include "gl/gl_errors.h"
 #include "gl/program.h"
+#include "shading/filters/cube_face_frame.h"
 #include "shading/filters/filter_technique.h"
 #include "shading/filters/moment_filter.h"
 #include "shading/filters/moments_mirror.h"
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -155,8 +158,17 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
                             v.layer,      filter.momentMips, v.perspective, v.nearPlane, v.farPlane};
         const auto it = current_.find(v.id);
         const bool current = it != current_.end() && it->second == inputs;
-        if (v.rendered || !current) work.push_back({&v, width, !current && !v.rendered});
+        if (v.rendered || !current) work.push_back({&v, width, v.rendered ? "map re-rendered" : "moments settings changed"});
         current_[v.id] = inputs;
+    }
+    // A cube's faces are blurred across their edges: a face whose neighbour changed is made again, from its depth.
+    for (const MomentsView& v : views) {
+        if (!v.group.cube || !storage_.count(v.group)) continue;
+        const auto sameCube = [&](const Work& w) { return w.view->group == v.group && w.view->layer / 6 == v.layer / 6; };
+        if (std::any_of(work.begin(), work.end(), [&](const Work& w) { return w.view == &v; }) ||
+            std::none_of(work.begin(), work.end(), sameCube))
+            continue;
+        work.push_back({&v, blurTexels(filter, v.texelWorldSize), "a neighbouring face changed"});
     }
     if (!clampedBlur.empty())
         result.warnings.push_back("filter.blurWidth: wider than " + std::to_string(int(kMaxBlurTexels)) +
@@ -193,7 +205,7 @@ MomentsPassResult MomentsPass::run(const FilterSettings& filter, const std::map<
         glUniform1i(glGetUniformLocation(convert.id(), "uSize"), s.resolution);
         glBindImageTexture(0, s.texture.id(), 0, GL_FALSE, v.layer, GL_WRITE_ONLY, format);
         glDispatchCompute(GLuint((s.resolution + 7) / 8), GLuint((s.resolution + 7) / 8), 1);
-        reasons.push_back(v.name + (w.settingsChanged ? " (moments settings changed)" : " (map re-rendered)"));
+        reasons.push_back(v.name + " (" + w.why + ")");
         anyBlur = anyBlur || w.blurTexels > 1.0;
         ++lastConverted_;
     }
@@ -220,7 +232,7 @@ void MomentsPass::blurViews(const std::vector<Work>& work, GLenum format, const 
     for (const Work& w : work) {
         const std::vector<float> weights = blurWeights(w.blurTexels);
         const int r = int(weights.size() / 2);
-        if (r == 0) continue;
+        if (r == 0 || w.view->group.cube) continue;
         const MomentsView& v = *w.view;
         const Storage& s = storage_.at(v.group);
         if (!temp_ || tempResolution_ != s.resolution || tempFormat_ != format) {
@@ -245,6 +257,7 @@ void MomentsPass::blurViews(const std::vector<Work>& work, GLenum format, const 
         glDispatchCompute(groups, groups, 1);
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     }
+    blurCubes(work, format);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     timer.end(TimedPass::Blur);
     char width[64];
@@ -253,6 +266,86 @@ void MomentsPass::blurViews(const std::vector<Work>& work, GLenum format, const 
                    std::string("filter.blurWidth ") + width +
                        (filter.blurUnit == BlurUnit::World ? " world units" : " texels") + ": " + reasons,
                    timer.latestMilliseconds(TimedPass::Blur)};
+}
+
+void MomentsPass::blurCubes(const std::vector<Work>& work, GLenum format) {
+    // Each cube once, all its faces converted (run() adds a changed face's neighbours).
+    std::vector<std::pair<MapGroup, int>> cubes;
+    for (const Work& w : work) {
+        const std::pair<MapGroup, int> cube{w.view->group, w.view->layer / 6};
+        if (w.view->group.cube && blurWeights(w.blurTexels).size() > 1 &&
+            std::find(cubes.begin(), cubes.end(), cube) == cubes.end())
+            cubes.push_back(cube);
+    }
+    if (cubes.empty()) return;
+    const std::string imageFormat = std::string("MOMENT_FORMAT ") + imageFormatName(format);
+    auto& first = cubeBlurPrograms_[{int(format), 1}];
+    auto& second = cubeBlurPrograms_[{int(format), 2}];
+    if (!first) first = gl::buildProgram({{GL_COMPUTE_SHADER, "moments_cube_blur.comp.glsl", {}}}, {"FIRST", imageFormat});
+    if (!second) second = gl::buildProgram({{GL_COMPUTE_SHADER, "moments_cube_blur.comp.glsl", {}}}, {imageFormat});
+    if (!nearest_) {
+        nearest_ = gl::createSampler();
+        glSamplerParameteri(nearest_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glSamplerParameteri(nearest_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    for (const auto& [group, cube] : cubes) {
+        const Storage& s = storage_.at(group);
+        if (!tempCube_ || tempCubeResolution_ != s.resolution || tempCubeFormat_ != format) {
+            // Two cubes: every face's blur along its frame's s, and along its t (near the edges).
+            tempCube_ = gl::createTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
+            glTextureStorage3D(tempCube_.id(), 1, format, s.resolution, s.resolution, 12);
+            tempCubeResolution_ = s.resolution;
+            tempCubeFormat_ = format;
+        }
+        std::vector<const Work*> faces;
+        for (const Work& w : work)
+            if (w.view->group == group && w.view->layer / 6 == cube) faces.push_back(&w);
+        const GLuint groups = GLuint((s.resolution + 7) / 8);
+        const auto setFace = [&](GLuint program, const Work& w) {
+            const std::vector<float> weights = blurWeights(w.blurTexels);
+            const int r = int(weights.size() / 2);
+            const glm::mat3 basis = cubeFaceBasis(w.view->layer % 6);
+            glUniformMatrix3fv(glGetUniformLocation(program, "uFace"), 1, GL_FALSE, &basis[0][0]);
+            glUniform1fv(glGetUniformLocation(program, "uWeights"), GLsizei(r + 1), weights.data() + r);
+            glUniform1i(glGetUniformLocation(program, "uRadius"), r);
+            glUniform1i(glGetUniformLocation(program, "uSize"), s.resolution);
+            glUniform1i(glGetUniformLocation(program, "uIn"), 0);
+        };
+        // First pass: the moments (nearest, level 0) -> the temporary cubes. A face's blur along its t is made only
+        // where the second pass reads it: a face whose t is the s of a face crossing into it along that face's t.
+        const auto frameOf = [](int face) { return cubeFaceFrame(cubeFaceBasis(face)[2], 1.0f); };
+        const auto readAlongT = [&](int face) {
+            for (int other = 0; other < 6; ++other)
+                if (other / 2 != face / 2 && std::abs(glm::dot(frameOf(other).t, cubeFaceBasis(face)[2])) > 0.5f &&
+                    std::abs(glm::dot(frameOf(other).s, frameOf(face).t)) > 0.5f)
+                    return true;
+            return false;
+        };
+        glUseProgram(first.id());
+        glBindTextureUnit(0, s.texture.id());
+        glBindSampler(0, nearest_.id());
+        glUniform1i(glGetUniformLocation(first.id(), "uCube"), cube);
+        for (const Work* w : faces) {
+            setFace(first.id(), *w);
+            for (int axis = 0; axis < (readAlongT(w->view->layer % 6) ? 2 : 1); ++axis) {
+                glUniform1i(glGetUniformLocation(first.id(), "uAxis"), axis);
+                glBindImageTexture(0, tempCube_.id(), 0, GL_FALSE, 6 * axis + w->view->layer % 6, GL_WRITE_ONLY, format);
+                glDispatchCompute(groups, groups, 1);
+            }
+        }
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        // Second pass: the temporary cubes -> the moments.
+        glUseProgram(second.id());
+        glBindTextureUnit(0, tempCube_.id());
+        for (const Work* w : faces) {
+            setFace(second.id(), *w);
+            glBindImageTexture(0, s.texture.id(), 0, GL_FALSE, w->view->layer, GL_WRITE_ONLY, format);
+            glDispatchCompute(groups, groups, 1);
+        }
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        glBindSampler(0, 0);
+        glBindTextureUnit(0, 0);
+    }
 }
 
 void MomentsPass::mipViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,

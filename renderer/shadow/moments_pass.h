@@ -2,9 +2,10 @@
 // The moments pass of a moments technique (VSM, EVSM, MSM; shading/filters/): after the shadow pass, each view whose
 // depth map changed (or whose moments settings changed) is converted to the technique's moments and blurred by a
 // separable box of filter.blurWidth, into moments storage of its own, one array per map group (2D layers, cascades,
-// point lights' cube faces); with filter.momentMips its mip levels follow. Perspective views (spot, cube faces)
+// point lights' cube faces: blurred across their edges, so a face whose neighbour changed is made again); with
+// filter.momentMips its mip levels follow. Perspective views (spot, cube faces)
 // store moments of their linear depth (shaders/shadow/linear_depth.glsl). Nothing runs for a depth technique, and nothing for views whose moments are current.
-// Compute shaders: shaders/moments.comp.glsl; its CPU mirror: shading/filters/moments_mirror.h.
+// Compute shaders: shaders/moments.comp.glsl, moments_cube_blur.comp.glsl; their CPU mirror: shading/filters/moments_mirror.h.
 #include "frame/frame_stats.h"
 #include "gl/gl_objects.h"
 #include "settings/settings.h"
@@ -94,10 +95,12 @@ private:
     struct Work {
         const MomentsView* view;
         double blurTexels;
-        bool settingsChanged;
+        const char* why;  // for the pass's reason
     };
     void blurViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,
                    const std::string& reasons, PassTimer& timer, MomentsPassResult& result);
+    // A point light's cubes: each face blurred across its edges (shaders/moments_cube_blur.comp.glsl).
+    void blurCubes(const std::vector<Work>& work, GLenum format);
     void mipViews(const std::vector<Work>& work, GLenum format, const FilterSettings& filter,
                   const std::string& reasons, PassTimer& timer, MomentsPassResult& result);
     std::map<MapGroup, Storage> storage_;
@@ -108,6 +111,11 @@ private:
     gl::Texture temp_;  // one layer's horizontal blur
     int tempResolution_ = 0;
     GLenum tempFormat_ = 0;
+    std::map<std::pair<int, int>, gl::Program> cubeBlurPrograms_;  // by GL internal format and pass (1, 2)
+    gl::Texture tempCube_;  // a cube's first blur pass: two cubes (along each face's s, and along its t)
+    int tempCubeResolution_ = 0;
+    GLenum tempCubeFormat_ = 0;
+    gl::Sampler nearest_;  // the cube blur's reads
     gl::Sampler sampler_;
     int lastConverted_ = 0;
 };

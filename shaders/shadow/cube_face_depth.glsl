@@ -1,6 +1,6 @@
 // A point light's cube faces as its lookups read them: the lookup face's tangent frame (taps move across it) and the
-// receiver's depth in the face a tap's direction selects (the depth, PCSS and moments lookups share both). CPU
-// mirror: renderer/shading/cube_face_frame.cpp.
+// receiver's depth in the face a tap's direction selects (the depth, PCSS and moments lookups share both; the moments
+// pass's cube blur moves its taps in the same frame). CPU mirror: renderer/shading/filters/cube_face_frame.cpp.
 #include "shadow/light_data.glsl"
 #include "shadow/view_select.glsl"
 
@@ -23,7 +23,8 @@ struct CubeFaceFrame {
     float texel;
 };
 
-CubeFaceFrame cubeFaceFrame(vec3 fromLight, LightData L) {
+// `texelStep`: 1 / the face's resolution (LightData.shadow.z; the moments pass's cube blur gives its own).
+CubeFaceFrame cubeFaceFrame(vec3 fromLight, float texelStep) {
     vec3 a = abs(fromLight);
     int axis = cubeFaceOf(fromLight) / 2;
     CubeFaceFrame f;
@@ -31,9 +32,11 @@ CubeFaceFrame cubeFaceFrame(vec3 fromLight, LightData L) {
     f.s = axis == 0 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     f.t = axis == 1 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
     f.major = max(a.x, max(a.y, a.z));
-    f.texel = 2.0 * L.shadow.z * f.major;
+    f.texel = 2.0 * texelStep * f.major;
     return f;
 }
+
+CubeFaceFrame cubeFaceFrame(vec3 fromLight, LightData L) { return cubeFaceFrame(fromLight, L.shadow.z); }
 
 // The direction of a tap `offsetTexels` across the face from the lookup: it may select a neighbouring face.
 vec3 cubeFaceTap(CubeFaceFrame f, vec2 offsetTexels) {

@@ -71,9 +71,25 @@ std::optional<CubeTexel> seamlessTexel(int face, int x, int y, int resolution) {
     // The texel's centre on the face's plane, extended past its edge, is a direction of the neighbouring face.
     const FaceAxes& f = faceAxes(face);
     const double sc = 2.0 * (x + 0.5) / resolution - 1.0, tc = 2.0 * (y + 0.5) / resolution - 1.0;
-    const CubeCoordinate c = cubeCoordinate(f.ma + sc * f.sc + tc * f.tc);
+    return nearestCubeTexel(f.ma + sc * f.sc + tc * f.tc, resolution);
+}
+
+glm::mat3 cubeFaceBasis(int face) {
+    const FaceAxes& f = faceAxes(face);
+    return glm::mat3(glm::vec3(f.sc), glm::vec3(f.tc), glm::vec3(f.ma));
+}
+
+glm::vec3 cubeTexelDirection(int face, int x, int y, int resolution) {
+    const glm::mat3 basis = cubeFaceBasis(face);
+    const float step = 1.0f / float(resolution);
+    const glm::vec2 c = (glm::vec2(float(x), float(y)) + 0.5f) * (2.0f * step) - 1.0f;
+    return basis[2] + c.x * basis[0] + c.y * basis[1];
+}
+
+CubeTexel nearestCubeTexel(const glm::dvec3& direction, int resolution) {
+    const CubeCoordinate c = cubeCoordinate(direction);
     const auto texelOf = [resolution](double u) { return std::clamp(int(std::floor(u * resolution)), 0, resolution - 1); };
-    return CubeTexel{c.face, texelOf(c.st.x), texelOf(c.st.y)};
+    return {c.face, texelOf(c.st.x), texelOf(c.st.y)};
 }
 
 }  // namespace shadowlab

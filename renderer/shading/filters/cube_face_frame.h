@@ -3,9 +3,11 @@
 // shaders/shadow/cube_face_depth.glsl (the lookup face's tangent frame, a tap's direction across it, the receiver's
 // depth in the face a direction selects), and what the sampler then does with a direction (OpenGL 4.5, 8.13: the face
 // it selects and its texture coordinate; with seamless filtering, a texel beyond a face's edge is the neighbouring
-// face's). PCSS's mirror (pcss_filter.cpp) and the pixel probe read cube taps through these.
+// face's). PCSS's mirror (pcss_filter.cpp), the pixel probe and the moments pass's cube blur mirror
+// (moments_mirror.cpp) read cube taps through these.
 #include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_double3.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -45,5 +47,13 @@ struct CubeTexel {
 // face, else the texel of the neighbouring face that holds the extended texel's centre. nullopt beyond both edges
 // (a corner, where the specification leaves the texel to the implementation).
 std::optional<CubeTexel> seamlessTexel(int face, int x, int y, int resolution);
+
+// A face's s and t directions and its axis (table 8.19) as the columns of a matrix: the moments pass's cube blur gets
+// them as a uniform (shaders/moments_cube_blur.comp.glsl).
+glm::mat3 cubeFaceBasis(int face);
+// The direction of texel (x, y)'s centre on `face`, in float as moments_cube_blur.comp.glsl computes it.
+glm::vec3 cubeTexelDirection(int face, int x, int y, int resolution);
+// The texel a nearest sampler reads for a direction: the face it selects, its texel holding s, t.
+CubeTexel nearestCubeTexel(const glm::dvec3& direction, int resolution);
 
 }  // namespace shadowlab

@@ -1,5 +1,8 @@
 #include "shading/filters/moments_mirror.h"
 
+#include "shading/filters/cube_face_frame.h"
+
+#include <glm/geometric.hpp>
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
@@ -26,19 +29,34 @@ float momentDepth(float window, const MomentDepthConvention& c) {
     return (distance - n) / (f - n);
 }
 
+namespace {
+
+// The conversion: each depth's moments, stored at the precision.
+std::vector<glm::vec4> unblurredMoments(const std::vector<float>& depth, const MomentDepthConvention& convention,
+                                        const FilterSettings& filter) {
+    const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
+    const glm::vec4 uniforms = technique.uniforms(filter);
+    std::vector<glm::vec4> moments(depth.size());
+    for (std::size_t i = 0; i < depth.size(); ++i)
+        moments[i] = storedMoments(technique.encode(momentDepth(depth[i], convention), uniforms), technique,
+                                   filter.momentBits);
+    return moments;
+}
+
+std::size_t mirrorTexelIndex(int x, int y, int resolution) {
+    return std::size_t(y) * std::size_t(resolution) + std::size_t(x);
+}
+
+}  // namespace
+
 std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resolution,
                                       const MomentDepthConvention& convention, const FilterSettings& filter,
                                       double blurWidthTexels) {
     const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
-    const glm::vec4 uniforms = technique.uniforms(filter);
-    const int bits = filter.momentBits;
-    std::vector<glm::vec4> moments(depth.size());
-    for (std::size_t i = 0; i < depth.size(); ++i)
-        moments[i] = storedMoments(technique.encode(momentDepth(depth[i], convention), uniforms), technique, bits);
+    std::vector<glm::vec4> moments = unblurredMoments(depth, convention, filter);
     const std::vector<float> weights = blurWeights(blurWidthTexels);
     const int r = int(weights.size() / 2);
     if (r == 0) return moments;
-    const auto at = [resolution](int x, int y) { return std::size_t(y) * std::size_t(resolution) + std::size_t(x); };
     std::vector<glm::vec4> pass(moments.size());
     for (int dir = 0; dir < 2; ++dir) {
         for (int y = 0; y < resolution; ++y)
@@ -47,15 +65,16 @@ std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resol
                 for (int i = -r; i <= r; ++i) {
                     const int sx = dir == 0 ? std::clamp(x + i, 0, resolution - 1) : x;
                     const int sy = dir == 1 ? std::clamp(y + i, 0, resolution - 1) : y;
-                    sum += weights[std::size_t(std::abs(i) + r)] * moments[at(sx, sy)];
+                    sum += weights[std::size_t(std::abs(i) + r)] * moments[mirrorTexelIndex(sx, sy, resolution)];
                 }
-                pass[at(x, y)] = storedMoments(sum, technique, bits);
+                pass[mirrorTexelIndex(x, y, resolution)] = storedMoments(sum, technique, filter.momentBits);
             }
         std::swap(moments, pass);
     }
     return moments;
 }
 
+<<<<<<< HEAD
 glm::vec4 emptyMoments(const FilterSettings& filter) {
     const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
     return storedMoments(technique.encode(1.0f, technique.uniforms(filter)), technique, filter.momentBits);
@@ -64,6 +83,56 @@ glm::vec4 emptyMoments(const FilterSettings& filter) {
 bool isEmptyMoments(const glm::vec4& stored, const glm::vec4& empty) {
     // moments.comp.glsl's emptyMoments: one storage step (fp16 near 1: 2^-11) relative, beyond float rounding.
     return std::abs(stored.x - empty.x) <= 1e-3f * std::max(1.0f, std::abs(empty.x));
+=======
+CubeMoments momentsOfCube(const std::array<std::vector<float>, 6>& depth, int resolution,
+                          const MomentDepthConvention& convention, const FilterSettings& filter,
+                          double blurWidthTexels) {
+    const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
+    CubeMoments raw;
+    for (int f = 0; f < 6; ++f) raw[std::size_t(f)] = unblurredMoments(depth[std::size_t(f)], convention, filter);
+    const std::vector<float> weights = blurWeights(blurWidthTexels);
+    const int r = int(weights.size() / 2);
+    if (r == 0) return raw;
+    const float step = 1.0f / float(resolution);
+    // Texel (x, y) of `face` blurred: tap i at tapOf(i) texels across its frame, read from read(tap, frame)'s faces.
+    const auto blurred = [&](int face, int x, int y, auto&& tapOf, auto&& read) {
+        const CubeFaceFrame frame = cubeFaceFrame(cubeTexelDirection(face, x, y, resolution), step);
+        glm::vec4 sum(0.0f);
+        for (int i = -r; i <= r; ++i) {
+            const glm::vec3 tap = cubeFaceTap(frame, tapOf(i));
+            const CubeTexel t = nearestCubeTexel(glm::dvec3(tap), resolution);
+            sum += weights[std::size_t(std::abs(i) + r)] * read(tap, frame)[std::size_t(t.face)][mirrorTexelIndex(t.x, t.y, resolution)];
+        }
+        return storedMoments(sum, technique, filter.momentBits);
+    };
+    // First pass: each face along its frame's s (cube 0) and t (cube 1; only within r of an edge, where it is read).
+    std::array<CubeMoments, 2> first;
+    for (int axis = 0; axis < 2; ++axis)
+        for (int f = 0; f < 6; ++f) {
+            std::vector<glm::vec4>& out = first[std::size_t(axis)][std::size_t(f)];
+            out.assign(raw[std::size_t(f)].size(), glm::vec4(0.0f));
+            for (int y = 0; y < resolution; ++y)
+                for (int x = 0; x < resolution; ++x) {
+                    if (axis == 1 && std::min({x, y, resolution - 1 - std::max(x, y)}) > r) continue;
+                    out[mirrorTexelIndex(x, y, resolution)] = blurred(
+                        f, x, y, [&](int i) { return axis == 0 ? glm::vec2(float(i), 0.0f) : glm::vec2(0.0f, float(i)); },
+                        [&](const glm::vec3&, const CubeFaceFrame&) -> const CubeMoments& { return raw; });
+                }
+        }
+    // Second pass: along t, each tap reading its face's first-pass blur along this face's s (the same world axis).
+    CubeMoments out;
+    for (int f = 0; f < 6; ++f) {
+        out[std::size_t(f)].resize(raw[std::size_t(f)].size());
+        for (int y = 0; y < resolution; ++y)
+            for (int x = 0; x < resolution; ++x)
+                out[std::size_t(f)][mirrorTexelIndex(x, y, resolution)] = blurred(
+                    f, x, y, [](int i) { return glm::vec2(0.0f, float(i)); },
+                    [&](const glm::vec3& tap, const CubeFaceFrame& frame) -> const CubeMoments& {
+                        return first[std::abs(glm::dot(cubeFaceFrame(tap, step).s, frame.s)) > 0.5f ? 0 : 1];
+                    });
+    }
+    return out;
+>>>>>>> cube31
 }
 
 std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int size, const FilterSettings& filter) {

@@ -2,11 +2,12 @@
 // The moments pass on the CPU, for tests and the probe: a depth layer converted to the technique's moments (of the
 // depth momentDepth gives), stored at its precision, blurred by the box of blurWeights (horizontal, then vertical,
 // edge texels repeated, each result stored at the precision again), and its mip levels, as shaders/moments.comp.glsl
-// computes them.
+// computes them; a point light's cube blurred across its faces' edges (shaders/moments_cube_blur.comp.glsl).
 #include "shading/filters/filter_technique.h"
 
 #include <glm/vec4.hpp>
 
+#include <array>
 #include <vector>
 
 namespace shadowlab {
@@ -35,6 +36,17 @@ std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resol
 // convention: 1), and whether stored moments are those (their first moment within a storage step of it).
 glm::vec4 emptyMoments(const FilterSettings& filter);
 bool isEmptyMoments(const glm::vec4& stored, const glm::vec4& empty);
+
+// A point light's cube: its six faces in GL order (+X, -X, +Y, -Y, +Z, -Z), each resolution x resolution texels.
+using CubeMoments = std::array<std::vector<glm::vec4>, 6>;
+
+// A cube's depths (each face's in the map's convention) converted, then blurred across the faces' edges as
+// shaders/moments_cube_blur.comp.glsl does: each texel's taps move by direction in the lookups' cube-face frame
+// (cube_face_frame.h) and read the nearest texel of the face they reach; first along the frame's s (and its t near
+// the edges), then along t reading each tap's face's blur along this face's s; each pass stored at the precision.
+CubeMoments momentsOfCube(const std::array<std::vector<float>, 6>& depth, int resolution,
+                          const MomentDepthConvention& convention, const FilterSettings& filter,
+                          double blurWidthTexels);
 
 // The mip level below a level of `size` x `size` texels (filter.momentMips): size / 2 (at least 1), each texel the
 // mean of the 2x2 texels under it that hold a caster (emptyMoments where none does; an odd size's last row and column
