@@ -74,7 +74,6 @@ std::vector<glm::vec4> momentsOfDepth(const std::vector<float>& depth, int resol
     return moments;
 }
 
-<<<<<<< HEAD
 glm::vec4 emptyMoments(const FilterSettings& filter) {
     const MomentTechnique& technique = *filterTechnique(filter.kind).moments;
     return storedMoments(technique.encode(1.0f, technique.uniforms(filter)), technique, filter.momentBits);
@@ -83,7 +82,8 @@ glm::vec4 emptyMoments(const FilterSettings& filter) {
 bool isEmptyMoments(const glm::vec4& stored, const glm::vec4& empty) {
     // moments.comp.glsl's emptyMoments: one storage step (fp16 near 1: 2^-11) relative, beyond float rounding.
     return std::abs(stored.x - empty.x) <= 1e-3f * std::max(1.0f, std::abs(empty.x));
-=======
+}
+
 CubeMoments momentsOfCube(const std::array<std::vector<float>, 6>& depth, int resolution,
                           const MomentDepthConvention& convention, const FilterSettings& filter,
                           double blurWidthTexels) {
@@ -132,7 +132,6 @@ CubeMoments momentsOfCube(const std::array<std::vector<float>, 6>& depth, int re
                     });
     }
     return out;
->>>>>>> cube31
 }
 
 std::vector<glm::vec4> momentsMipLevel(const std::vector<glm::vec4>& level, int size, const FilterSettings& filter) {
