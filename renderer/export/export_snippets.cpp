@@ -5,6 +5,7 @@
 #include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
+#include "shading/filters/moment_filter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -271,12 +272,16 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
     const MomentsPassShaders shaders = momentsPassShaders(e, vulkan);
     const std::string p = "light" + std::to_string(e.lightIndex);
     const glm::vec4& b = e.momentBorder;
+    const bool mips = e.filter.momentMips;
+    const int levels = momentLevels(e.shadow.resolution, mips);
     std::ostringstream o;
     o << "\n// ---- Moments pass (filter.kind " << filterTechnique(e.filter.kind).name
-      << "): two compute passes after the shadow pass, per view ----\n"
+      << "): " << (mips ? "three" : "two") << " compute passes after the shadow pass, per view ----\n"
       << "// Storage: a moments image beside the depth map, the same size and layers, " << momentFormatName(e.momentFormat, api)
-      << " (filter.momentBits " << e.filter.momentBits << "). The lookup samples it with LINEAR min/mag filtering, no\n"
-      << "// comparison, address mode " << addressName(e.sampler.addressMode, api) << ", border colour = the border depth's moments ("
+      << " (filter.momentBits " << e.filter.momentBits << ")"
+      << (mips ? ", " + std::to_string(levels) + " mip levels (filter.momentMips)" : std::string())
+      << ". The lookup samples it with LINEAR" << (mips ? "_MIPMAP_LINEAR min, LINEAR mag" : " min/mag")
+      << " filtering, no\n// comparison, address mode " << addressName(e.sampler.addressMode, api) << ", border colour = the border depth's moments ("
       << shortestFloatText(b.x) << ", " << shortestFloatText(b.y) << ", " << shortestFloatText(b.z) << ", " << shortestFloatText(b.w)
       << "). The comparison sampler above is not read by this lookup.\n";
     for (const std::string& clamp : e.techniqueClamps) o << "// Clamped: " << clamp << ".\n";
@@ -298,14 +303,23 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
         for (std::size_t i = r; r > 0 && i < weights.size(); ++i) o << (i > r ? ", " : "") << shortestFloatText(weights[i]);
         if (r > 0) o << "}\n";
     }
-    if (vulkan)
+    if (mips)
+        o << "// 3. Mips (" << p << "MomentsMips), after the blur: for each level l = 1.." << levels - 1
+          << ": uIn (binding 1) = level l - 1 of the view's layer,\n//    uOut (binding 0) = level l, uSize = max("
+          << e.shadow.resolution << " >> l, 1); dispatch ceil(uSize / 8) x ceil(uSize / 8) groups; barrier. Each texel is\n"
+          << "//    the mean of the 2x2 below it (what glGenerateMipmap may approximate; this is ShadowLab's own pass).\n";
+    if (vulkan) {
         o << "// Vulkan descriptors (set 0). Convert: " << bindingList(shaders.convertBindings, {"uOut", "uDepth", "uLayer"})
-          << ".\n// Blur: " << bindingList(shaders.blurBindings, {"uOut", "uIn", "uDirection", "uRadius", "uWeights"}) << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
+          << ".\n// Blur: " << bindingList(shaders.blurBindings, {"uOut", "uIn", "uDirection", "uRadius", "uWeights"});
+        if (mips) o << ".\n// Mips: " << bindingList(shaders.mipsBindings, {"uOut", "uIn", "uSize"});
+        o << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
           << "// stride per float, uDirection an ivec2).\n";
+    }
     if (api == ExportFormat::D3D12 || api == ExportFormat::D3D11)
         o << "// GLSL compute shaders (ShadowLab's): translate to HLSL (imageLoad / imageStore -> RWTexture2D reads / writes).\n";
     o << "static const char* " << p << "MomentsConvert = R\"glsl(\n" << shaders.convert << ")glsl\";\n"
       << "static const char* " << p << "MomentsBlur = R\"glsl(\n" << shaders.blur << ")glsl\";\n";
+    if (mips) o << "static const char* " << p << "MomentsMips = R\"glsl(\n" << shaders.mips << ")glsl\";\n";
     return o.str();
 }
 
@@ -578,7 +592,10 @@ nlohmann::json jsonOf(const ShadowExport& e) {
                                     {"notExported", e.notExported},
                                     {"blur", blur},
                                     {"convertGlsl", shaders.convert},
-                                    {"blurGlsl", shaders.blur}};
+                                    {"blurGlsl", shaders.blur},
+                                    {"levels", momentLevels(e.shadow.resolution, e.filter.momentMips)},
+                                    {"minFilter", e.filter.momentMips ? "linear-mipmap-linear" : "linear"}};
+            if (e.filter.momentMips) technique["moments"]["mipsGlsl"] = shaders.mips;
         }
         j["technique"] = technique;
     }

@@ -107,11 +107,6 @@ ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, 
         e.momentFormat = momentImageFormat(technique, settings.filter.momentBits);
         e.momentBorder = m->encode(settings.sampler.borderDepth, e.techniqueUniforms);  // as MomentsPass's sampler
         if (m->clamps) e.techniqueClamps = m->clamps(settings.filter);
-        if (settings.filter.momentMips)
-            e.notExported.push_back(
-                "filter.momentMips = true: no mips pass and a single-level (bilinear) lookup are written, because the "
-                "main pass's trilinear read takes its level from the pixel's screen derivatives; the exported shadow "
-                "is ShadowLab's with filter.momentMips = false");
     } else if (const OwnLookup* own = technique.ownLookup) {
         e.ownLookup = true;
         e.techniqueUniforms = own->uniforms(settings.filter);
