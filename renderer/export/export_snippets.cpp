@@ -280,7 +280,10 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
       << "// Storage: a moments image beside the depth map, the same size and layers, " << momentFormatName(e.momentFormat, api)
       << " (filter.momentBits " << e.filter.momentBits << ")"
       << (mips ? ", " + std::to_string(levels) + " mip levels (filter.momentMips)" : std::string())
-      << ". The lookup samples it with LINEAR" << (mips ? "_MIPMAP_LINEAR min, LINEAR mag" : " min/mag")
+      << ". The lookup samples it with "
+      << (!mips ? "LINEAR min/mag"
+          : vulkan ? "LINEAR min/mag, mipmapMode LINEAR, maxLod " + std::to_string(levels - 1)
+                   : "LINEAR_MIPMAP_LINEAR min, LINEAR mag")
       << " filtering, no\n// comparison, address mode " << addressName(e.sampler.addressMode, api) << ", border colour = the border depth's moments ("
       << shortestFloatText(b.x) << ", " << shortestFloatText(b.y) << ", " << shortestFloatText(b.z) << ", " << shortestFloatText(b.w)
       << "). The comparison sampler above is not read by this lookup.\n";
