@@ -103,6 +103,29 @@ GLint wrapOf(const std::string& address) {
     return address == "wrap" ? GL_REPEAT : address == "clamp" ? GL_CLAMP_TO_EDGE : GL_CLAMP_TO_BORDER;
 }
 
+// The exported S against the main pass's at the points, printed (`what`: which lookup, `extra`: more of the setup)
+// and checked. Measured (llvmpipe): VSM, EVSM4, PCSS none over 1e-3 (max 1.5e-4); MSM 11-18 pixels (0.2-0.3 %, max
+// 0.018): Hamburger's bound is ill-conditioned near the caster, so the G-buffer's point (the probe's) against the main
+// pass's interpolated one moves it there. Bound: 0.5 % of the pixels, mean 1e-4.
+void expectMainPassShadow(const std::string& name, const char* what, const std::string& extra,
+                          const std::vector<float>& exported, const std::vector<Point>& points) {
+    double maxDiff = 0.0, sumDiff = 0.0;
+    std::size_t over = 0, partial = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double d = std::abs(double(exported[i]) - double(points[i].shadowLab));
+        maxDiff = std::max(maxDiff, d);
+        sumDiff += d;
+        over += d > 1e-3;
+        partial += points[i].shadowLab > 0.0f && points[i].shadowLab < 1.0f;
+    }
+    std::printf("[ export ] %s: exported %s vs ShadowLab's main pass at %zu surface pixels (%zu partly lit%s): "
+                "max |dS| %.3g, mean %.3g, %zu pixels over 1e-3\n",
+                name.c_str(), what, points.size(), partial, extra.c_str(), maxDiff, sumDiff / double(points.size()), over);
+    EXPECT_GT(partial, 50u) << "soft edges are compared, not only 0 and 1";
+    EXPECT_LE(double(over), 0.005 * double(points.size())) << "pixels whose exported S differs by more than 1e-3";
+    EXPECT_LT(sumDiff / double(points.size()), 1e-4);
+}
+
 }  // namespace
 
 TEST_F(ExportTechniques, ExportedLookupRendersShadowLabsShadowForEveryMomentsTechniqueAndPcss) {
@@ -191,24 +214,7 @@ TEST_F(ExportTechniques, ExportedLookupRendersShadowLabsShadowForEveryMomentsTec
         const std::vector<float> exported =
             c.kind == FilterKind::Pcss ? exportedShadow(technique["lookupGlsl"], points, false, {{"uMaps2D[0]", 0}, {"uDepth2D[0]", 1}})
                                        : exportedShadow(technique["lookupGlsl"], points, false, {{"uMaps2D[0]", 0}});
-        double maxDiff = 0.0, sumDiff = 0.0;
-        std::size_t over = 0, partial = 0;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const double d = std::abs(double(exported[i]) - double(points[i].shadowLab));
-            maxDiff = std::max(maxDiff, d);
-            sumDiff += d;
-            over += d > 1e-3;
-            partial += points[i].shadowLab > 0.0f && points[i].shadowLab < 1.0f;
-        }
-        std::printf("[ export ] %s: exported lookup vs ShadowLab's main pass at %zu surface pixels (%zu partly lit): "
-                    "max |dS| %.3g, mean %.3g, %zu pixels over 1e-3\n",
-                    name.c_str(), points.size(), partial, maxDiff, sumDiff / double(points.size()), over);
-        // Measured (llvmpipe): VSM, EVSM4, PCSS none over 1e-3 (max 1.5e-4); MSM 11-18 pixels (0.2-0.3 %, max 0.018):
-        // Hamburger's bound is ill-conditioned near the caster, so the G-buffer's point (the probe's) against the main
-        // pass's interpolated one moves it there. Bound: 0.5 % of the pixels, mean 1e-4.
-        EXPECT_GT(partial, 50u) << "soft edges are compared, not only 0 and 1";
-        EXPECT_LE(double(over), 0.005 * double(points.size())) << "pixels whose exported S differs by more than 1e-3";
-        EXPECT_LT(sumDiff / double(points.size()), 1e-4);
+        expectMainPassShadow(name, "lookup", "", exported, points);
     }
 }
 
@@ -278,21 +284,7 @@ TEST_F(ExportTechniques, ExportedCubeLookupRendersShadowLabsPointLightShadow) {
                      "float light0Shadow(vec3 worldPos, vec3 n) { return light0Shadow(uCube, worldPos, n); }\n",
             points, true, {{"uCube", 0}});
         glBindSampler(0, 0);
-        double maxDiff = 0.0, sumDiff = 0.0;
-        std::size_t over = 0, partial = 0;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const double d = std::abs(double(exported[i]) - double(points[i].shadowLab));
-            maxDiff = std::max(maxDiff, d);
-            sumDiff += d;
-            over += d > 1e-3;
-            partial += points[i].shadowLab > 0.0f && points[i].shadowLab < 1.0f;
-        }
-        std::printf("[ export ] %s: exported cube lookup vs ShadowLab's main pass at %zu surface pixels (%zu partly lit, "
-                    "%zu in shadow): max |dS| %.3g, mean %.3g, %zu pixels over 1e-3\n",
-                    name.c_str(), points.size(), partial, shadowed, maxDiff, sumDiff / double(points.size()), over);
-        EXPECT_GT(partial, 50u) << "soft edges are compared, not only 0 and 1";
-        EXPECT_LE(double(over), 0.005 * double(points.size())) << "pixels whose exported S differs by more than 1e-3";
-        EXPECT_LT(sumDiff / double(points.size()), 1e-4);
+        expectMainPassShadow(name, "cube lookup", ", " + std::to_string(shadowed) + " in shadow", exported, points);
     }
 }
 
@@ -380,22 +372,9 @@ TEST_F(ExportTechniques, ExportedMipsLookupRendersShadowLabsTrilinearShadow) {
         const std::vector<float> exported =
             exportedShadow(json["technique"]["lookupGlsl"], points, false, {{"uMaps2D[0]", 0}}, /*derivatives=*/true);
         glBindSampler(0, 0);
-        double maxDiff = 0.0, sumDiff = 0.0;
-        std::size_t over = 0, partial = 0;
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const double d = std::abs(double(exported[i]) - double(points[i].shadowLab));
-            maxDiff = std::max(maxDiff, d);
-            sumDiff += d;
-            over += d > 1e-3;
-            partial += points[i].shadowLab > 0.0f && points[i].shadowLab < 1.0f;
-        }
-        std::printf("[ export ] %s: exported mips lookup vs ShadowLab's main pass at %zu surface pixels (%zu partly lit, "
-                    "levels %.2f..%.2f of %d): max |dS| %.3g, mean %.3g, %zu pixels over 1e-3\n",
-                    name.c_str(), points.size(), partial, minLevel, maxLevel, levels, maxDiff,
-                    sumDiff / double(points.size()), over);
-        EXPECT_GT(partial, 50u) << "soft edges are compared, not only 0 and 1";
-        EXPECT_LE(double(over), 0.005 * double(points.size())) << "pixels whose exported S differs by more than 1e-3";
-        EXPECT_LT(sumDiff / double(points.size()), 1e-4);
+        char levelText[64];
+        std::snprintf(levelText, sizeof levelText, ", levels %.2f..%.2f of %d", minLevel, maxLevel, levels);
+        expectMainPassShadow(name, "mips lookup", levelText, exported, points);
     }
 }
 

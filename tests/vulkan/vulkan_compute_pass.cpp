@@ -9,16 +9,6 @@ namespace shadowlab::test {
 
 namespace {
 
-bool vkRunHasExtension(VkPhysicalDevice gpu, const char* name) {
-    std::uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(gpu, nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> extensions(count);
-    vkEnumerateDeviceExtensionProperties(gpu, nullptr, &count, extensions.data());
-    for (const VkExtensionProperties& e : extensions)
-        if (std::strcmp(e.extensionName, name) == 0) return true;
-    return false;
-}
-
 bool vkRunIsDepth(VkFormat format) {
     return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_X8_D24_UNORM_PACK32;
 }
@@ -42,31 +32,14 @@ VkRunResult runComputeVulkan(const VkRun& run) {
     VkRunResult result;
     VkCleanup cleanup;
     try {
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.pApplicationName = "shadowlab-vulkan-compute-check";
-        app.apiVersion = VK_API_VERSION_1_1;
-        VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        instanceInfo.pApplicationInfo = &app;
-        VkInstance instance = VK_NULL_HANDLE;
-        if (vkCreateInstance(&instanceInfo, nullptr, &instance) != VK_SUCCESS) {
+        const VkFirstDevice first = vkFirstDevice(cleanup, "shadowlab-vulkan-compute-check");
+        if (!first.gpu) {
             result.noDevice = true;
-            result.error = "vkCreateInstance failed: no Vulkan implementation";
+            result.error = first.error;
             return result;
         }
-        cleanup.steps.push_back([=] { vkDestroyInstance(instance, nullptr); });
-        std::uint32_t count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        if (count == 0) {
-            result.noDevice = true;
-            result.error = "no Vulkan physical device";
-            return result;
-        }
-        std::vector<VkPhysicalDevice> gpus(count);
-        vkEnumeratePhysicalDevices(instance, &count, gpus.data());
-        const VkPhysicalDevice gpu = gpus[0];
-        VkPhysicalDeviceProperties props;
-        vkGetPhysicalDeviceProperties(gpu, &props);
-        result.deviceName = props.deviceName;
+        const VkPhysicalDevice gpu = first.gpu;
+        result.deviceName = first.name;
         std::uint32_t familyCount = 0;
         vkGetPhysicalDeviceQueueFamilyProperties(gpu, &familyCount, nullptr);
         std::vector<VkQueueFamilyProperties> families(familyCount);
@@ -81,7 +54,7 @@ VkRunResult runComputeVulkan(const VkRun& run) {
             for (const VkRunBinding& b : d.bindings)
                 customBorders |= b.type == VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER && !vkRunStandardBorder(b.sampler.border);
         const char* customBorderName = VK_EXT_CUSTOM_BORDER_COLOR_EXTENSION_NAME;
-        if (customBorders && !vkRunHasExtension(gpu, customBorderName))
+        if (customBorders && !vkHasExtension(gpu, customBorderName))
             throw std::runtime_error(result.deviceName + " lacks " + customBorderName);
         const float priority = 1.0f;
         VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
