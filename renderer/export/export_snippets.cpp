@@ -255,13 +255,15 @@ std::string momentFormatName(const std::string& glsl, ExportFormat api) {
     return glsl;
 }
 
-// The bindings of `names` (the text keeps the branch the pass's defines leave out: the other pass's uniforms).
+// The bindings of `names` (the text keeps the branches the pass's defines leave out: the other passes' uniforms, uIn
+// declared alike in two of them, listed once).
 std::string bindingList(const std::vector<VulkanBinding>& bindings, std::initializer_list<const char*> names) {
     std::string out;
     for (const VulkanBinding& b : bindings)
-        for (const char* name : names)
-            if (b.name == name)
-                out += (out.empty() ? "" : "; ") + std::string("binding ") + std::to_string(b.binding) + " = " + b.declaration;
+        for (const char* name : names) {
+            const std::string entry = "binding " + std::to_string(b.binding) + " = " + b.declaration;
+            if (b.name == name && out.find(entry) == std::string::npos) out += (out.empty() ? "" : "; ") + entry;
+        }
     return out;
 }
 

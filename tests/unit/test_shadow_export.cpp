@@ -496,6 +496,8 @@ TEST(ShadowExportTechniques, MomentMipsAreExportedAsAPassAndTheFootprintLookup) 
             EXPECT_EQ(count(glsl, "#define MIPS"), mips ? 1u : 0u) << "the mips pass is moments.comp.glsl's MIPS";
             EXPECT_EQ(count(glsl, "10 mip levels (filter.momentMips)"), mips ? 1u : 0u) << "512 down to 1: 10 levels";
             EXPECT_EQ(count(glsl, "#define MOMENT_MIPS"), mips ? 1u : 0u) << "the lookup reads the footprint's level";
+            if (api == ExportFormat::Vulkan)  // each descriptor listed once (uIn is declared in two branches)
+                EXPECT_EQ(count(glsl, "binding 1 = readonly image2D uIn"), mips ? 2u : 1u) << "blur, mips";
             EXPECT_EQ(count(glsl, "float light0Shadow(int view, vec3 worldPos, vec3 n, vec3 positionDx, vec3 positionDy)"),
                       mips ? 1u : 0u);
         }
