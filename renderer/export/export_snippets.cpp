@@ -5,6 +5,7 @@
 #include "settings/settings_fields.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
+#include "shading/filters/moment_filter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -254,13 +255,15 @@ std::string momentFormatName(const std::string& glsl, ExportFormat api) {
     return glsl;
 }
 
-// The bindings of `names` (the text keeps the branch the pass's defines leave out: the other pass's uniforms).
+// The bindings of `names` (the text keeps the branches the pass's defines leave out: the other passes' uniforms, uIn
+// declared alike in two of them, listed once).
 std::string bindingList(const std::vector<VulkanBinding>& bindings, std::initializer_list<const char*> names) {
     std::string out;
     for (const VulkanBinding& b : bindings)
-        for (const char* name : names)
-            if (b.name == name)
-                out += (out.empty() ? "" : "; ") + std::string("binding ") + std::to_string(b.binding) + " = " + b.declaration;
+        for (const char* name : names) {
+            const std::string entry = "binding " + std::to_string(b.binding) + " = " + b.declaration;
+            if (b.name == name && out.find(entry) == std::string::npos) out += (out.empty() ? "" : "; ") + entry;
+        }
     return out;
 }
 
@@ -271,20 +274,33 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
     const MomentsPassShaders shaders = momentsPassShaders(e, vulkan);
     const std::string p = "light" + std::to_string(e.lightIndex);
     const glm::vec4& b = e.momentBorder;
+    const bool mips = e.filter.momentMips;
+    const int levels = momentLevels(e.shadow.resolution, mips);
     std::ostringstream o;
     o << "\n// ---- Moments pass (filter.kind " << filterTechnique(e.filter.kind).name
-      << "): two compute passes after the shadow pass, per view ----\n"
+      << "): " << (mips ? "three" : "two") << " compute passes after the shadow pass, per view ----\n"
       << "// Storage: a moments image beside the depth map, the same size and layers, " << momentFormatName(e.momentFormat, api)
-      << " (filter.momentBits " << e.filter.momentBits << "). The lookup samples it with LINEAR min/mag filtering, no\n"
-      << "// comparison, address mode " << addressName(e.sampler.addressMode, api) << ", border colour = the border depth's moments ("
+      << " (filter.momentBits " << e.filter.momentBits << ")"
+      << (mips ? ", " + std::to_string(levels) + " mip levels (filter.momentMips)" : std::string())
+      << ". The lookup samples it with "
+      << (!mips ? "LINEAR min/mag"
+          : vulkan ? "LINEAR min/mag, mipmapMode LINEAR, maxLod " + std::to_string(levels - 1)
+                   : "LINEAR_MIPMAP_LINEAR min, LINEAR mag")
+      << " filtering, no\n// comparison, address mode " << addressName(e.sampler.addressMode, api) << ", border colour = the border depth's moments ("
       << shortestFloatText(b.x) << ", " << shortestFloatText(b.y) << ", " << shortestFloatText(b.z) << ", " << shortestFloatText(b.w)
       << "). The comparison sampler above is not read by this lookup.\n";
     for (const std::string& clamp : e.techniqueClamps) o << "// Clamped: " << clamp << ".\n";
     for (const std::string& left : e.notExported) o << "// Not exported: " << left << ".\n";
     o << "// 1. Convert (" << p << "MomentsConvert): uDepth = the depth map as a plain 2D array (a cube map's faces as its\n"
       << "//    layers), uLayer = the view's layer, uOut = the moments image's layer (rgba image binding 0); dispatch\n"
-      << "//    ceil(" << e.shadow.resolution << " / 8) x ceil(" << e.shadow.resolution << " / 8) groups.\n"
-      << "// 2. Blur (" << p << "MomentsBlur), a view whose width is above 1 texel: uIn (binding 1) = its moments layer, uOut\n"
+      << "//    ceil(" << e.shadow.resolution << " / 8) x ceil(" << e.shadow.resolution << " / 8) groups.\n";
+    if (mips)
+        o << "// 2. Mips (" << p << "MomentsMips), before the blur (from the unblurred moments): for each level l = 1.."
+          << levels - 1 << ": uIn (binding 1) = level l - 1 of the view's layer,\n//    uOut (binding 0) = level l, uSize = max("
+          << e.shadow.resolution << " >> l, 1); dispatch ceil(uSize / 8) x ceil(uSize / 8) groups; barrier. Each texel is\n"
+          << "//    the mean of the 2x2 below it that hold a caster (glGenerateMipmap would average in the cleared texels).\n";
+    o << "// " << (mips ? "3" : "2") << ". Blur (" << p << "MomentsBlur"
+      << (mips ? ", level 0 only" : "") << "), a view whose width is above 1 texel: uIn (binding 1) = its moments layer, uOut\n"
       << "//    (binding 0) = a scratch image of the same format and size, uDirection = (1, 0); barrier; then uIn = the scratch,\n"
       << "//    uOut = the layer, uDirection = (0, 1); barrier. uRadius = R and uWeights[0..R] per view ("
       << (e.filter.blurUnit == BlurUnit::World ? "filter.blurWidth " + number(e.filter.blurWidth) + " world units in each view's texels"
@@ -298,14 +314,18 @@ std::string momentsBlock(const ShadowExport& e, ExportFormat api) {
         for (std::size_t i = r; r > 0 && i < weights.size(); ++i) o << (i > r ? ", " : "") << shortestFloatText(weights[i]);
         if (r > 0) o << "}\n";
     }
-    if (vulkan)
+    if (vulkan) {
         o << "// Vulkan descriptors (set 0). Convert: " << bindingList(shaders.convertBindings, {"uOut", "uDepth", "uLayer"})
-          << ".\n// Blur: " << bindingList(shaders.blurBindings, {"uOut", "uIn", "uDirection", "uRadius", "uWeights"}) << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
+          << ".\n// Blur: " << bindingList(shaders.blurBindings, {"uOut", "uIn", "uDirection", "uRadius", "uWeights"});
+        if (mips) o << ".\n// Mips: " << bindingList(shaders.mipsBindings, {"uOut", "uIn", "uSize"});
+        o << ". A std140 block holds its one value at offset 0 (uWeights: a 16-byte\n"
           << "// stride per float, uDirection an ivec2).\n";
+    }
     if (api == ExportFormat::D3D12 || api == ExportFormat::D3D11)
         o << "// GLSL compute shaders (ShadowLab's): translate to HLSL (imageLoad / imageStore -> RWTexture2D reads / writes).\n";
     o << "static const char* " << p << "MomentsConvert = R\"glsl(\n" << shaders.convert << ")glsl\";\n"
       << "static const char* " << p << "MomentsBlur = R\"glsl(\n" << shaders.blur << ")glsl\";\n";
+    if (mips) o << "static const char* " << p << "MomentsMips = R\"glsl(\n" << shaders.mips << ")glsl\";\n";
     return o.str();
 }
 
@@ -578,7 +598,10 @@ nlohmann::json jsonOf(const ShadowExport& e) {
                                     {"notExported", e.notExported},
                                     {"blur", blur},
                                     {"convertGlsl", shaders.convert},
-                                    {"blurGlsl", shaders.blur}};
+                                    {"blurGlsl", shaders.blur},
+                                    {"levels", momentLevels(e.shadow.resolution, e.filter.momentMips)},
+                                    {"minFilter", e.filter.momentMips ? "linear-mipmap-linear" : "linear"}};
+            if (e.filter.momentMips) technique["moments"]["mipsGlsl"] = shaders.mips;
         }
         j["technique"] = technique;
     }

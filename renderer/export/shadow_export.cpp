@@ -107,11 +107,13 @@ ShadowExport makeShadowExport(const Settings& settings, std::size_t lightIndex, 
         e.momentFormat = momentImageFormat(technique, settings.filter.momentBits);
         e.momentBorder = m->encode(settings.sampler.borderDepth, e.techniqueUniforms);  // as MomentsPass's sampler
         if (m->clamps) e.techniqueClamps = m->clamps(settings.filter);
-        if (settings.filter.momentMips)
+        // ShadowLab blurs a point light's cube as one surface, across its faces' edges
+        // (shaders/moments_cube_blur.comp.glsl); the exported blur is the 2D one, face by face.
+        if (l.type == LightType::Point && e.views.front().blurTexels > 1.0)
             e.notExported.push_back(
-                "filter.momentMips = true: no mips pass and a single-level (bilinear) lookup are written, because the "
-                "main pass's trilinear read takes its level from the pixel's screen derivatives; the exported shadow "
-                "is ShadowLab's with filter.momentMips = false");
+                "the blur across the cube faces' edges (ShadowLab blurs a point light's six faces as one surface, "
+                "shaders/moments_cube_blur.comp.glsl; the blur below is face by face, so the faces disagree near "
+                "their edges)");
     } else if (const OwnLookup* own = technique.ownLookup) {
         e.ownLookup = true;
         e.techniqueUniforms = own->uniforms(settings.filter);

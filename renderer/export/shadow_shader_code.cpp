@@ -4,12 +4,14 @@
 #include "gl/shader_text.h"
 #include "shading/filter_taps.h"
 #include "shading/filters/filter_technique.h"
+#include "shading/filters/moments_mirror.h"
 #include "shading/variant_key.h"
 
-#include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <cctype>
 #include <map>
+#include <regex>
 #include <sstream>
 
 namespace shadowlab {
@@ -88,11 +90,6 @@ struct Words {
     }
 };
 
-std::string upperCase(std::string s) {
-    for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 void tapTable(std::ostream& o, const Words& w, const std::string& P, const ShadowExport& e, bool mirrorY) {
     const std::vector<FilterTap> taps = filterTaps(e.filter);
     std::vector<std::string> values;
@@ -106,6 +103,24 @@ void tapTable(std::ostream& o, const Words& w, const std::string& P, const Shado
 
 std::string clampToFar(const ShadowExport& e, const std::string& x) {
     return e.reversedZ ? "max(" + x + ", 0.0)" : "min(" + x + ", 1.0)";
+}
+
+// The renderer's GLSL file `file` (shaders/...) as a snippet prints it: the files it includes first, each once, every
+// file inside a guard named after it (SHADOWLAB_SHADOW_VIEW_SELECT_GLSL), so two lights' code that print the same
+// file compile it once.
+void printRendererFile(std::ostream& o, const std::string& file) {
+    static const std::regex include(R"re(^\s*#include\s+"([^"]+)"\s*$)re");
+    std::string guard = "SHADOWLAB_" + upperCase(file);
+    for (char& c : guard)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    std::istringstream lines(embeddedShaderSources().at(file));
+    std::string body;
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch m;
+        if (std::regex_match(line, m, include)) printRendererFile(o, m[1]);
+        else body += line + "\n";
+    }
+    o << "#ifndef " << guard << "\n#define " << guard << "\n" << body << "#endif\n";
 }
 
 // A cascaded light: which cascade holds a receiver and how the next one blends in, by ShadowLab's own selection
@@ -128,12 +143,13 @@ std::string cascadeSelection(const ShadowExport& e, const Words& w, const std::s
         return w.v4 + "(" + lit(x[0]) + ", " + lit(x[1]) + ", " + lit(x[2]) + ", " + lit(x[3]) + ")";
     };
     std::ostringstream g;  // GLSL
-    if (viewSelectIncluded)  // the technique's lookup above holds it already
+    if (viewSelectIncluded) {  // the technique's lookup above holds it already
         g << "\n// ---- The cascade selection (selectCascade: shaders/shadow/view_select.glsl, above) ----\n";
-    else
-        g << "\n// ---- The cascade selection: ShadowLab's shaders/shadow/view_select.glsl as it is ----\n"
-          << "#ifndef SHADOWLAB_VIEW_SELECT\n#define SHADOWLAB_VIEW_SELECT\n"
-          << embeddedShaderSources().at("shadow/view_select.glsl") << "#endif\n\n";
+    } else {
+        g << "\n// ---- The cascade selection: ShadowLab's shaders/shadow/view_select.glsl as it is ----\n";
+        printRendererFile(g, "shadow/view_select.glsl");
+        g << "\n";
+    }
     g << "const int " << P << "CASCADES = " << e.cascadeCount << ";\n"
       << "// Where each cascade ends, and where it starts fading into the next: depths in front of the camera.\n"
       << "const vec4 " << P << "CASCADE_FAR = " << v4(far) << ";\n"
@@ -261,7 +277,9 @@ std::string code2D(const ShadowExport& e, const ShaderTarget& t) {
     return o.str();
 }
 
-// Point lights: shadowCube of shaders/shadow/lookup_cube.glsl and faceDepth of cube_face_depth.glsl.
+// Point lights: shadowCube of shaders/shadow/lookup_cube.glsl, with the renderer's cube face frame, taps and face
+// depth (shaders/shadow/cube_face_depth.glsl, printed as it is: one source of truth for the taps' directions) and a
+// LightData filled from the exported numbers. HLSL: those GLSL files as comments, to translate.
 std::string codeCube(const ShadowExport& e, const ShaderTarget& t) {
     const Words w(t.language);
     const std::string p = "light" + std::to_string(e.lightIndex);
@@ -279,33 +297,39 @@ std::string codeCube(const ShadowExport& e, const ShaderTarget& t) {
       << w.constant << " float " << P << "NEAR = " << lit(e.nearPlane) << ";\n"
       << w.constant << " float " << P << "FAR = " << lit(e.farPlane) << ";\n";
     tapTable(o, w, P, e, false);
-    o << "\nfloat " << p << "FaceDepth(" << w.v3 << " fromLight, " << w.v3 << " tapDirection) {\n"
-      << "    " << w.v3 << " a = abs(tapDirection);\n"
-      << "    " << w.v3 << " axis = a.x >= a.y && a.x >= a.z ? " << w.v3 << "(sign(tapDirection.x), 0.0, 0.0)\n"
-      << "              : a.y >= a.z                ? " << w.v3 << "(0.0, sign(tapDirection.y), 0.0)\n"
-      << "                                          : " << w.v3 << "(0.0, 0.0, sign(tapDirection.z));\n"
-      << "    float z = max(dot(fromLight, axis), " << P << "NEAR);\n";
-    if (e.reversedZ)
-        o << "    return " << P << "NEAR * (" << P << "FAR - z) / (z * (" << P << "FAR - " << P << "NEAR));  // zero-to-one, near 1, far 0\n";
-    else
-        o << "    return ((" << P << "FAR + " << P << "NEAR) / (" << P << "FAR - " << P << "NEAR) - 2.0 * " << P << "FAR * " << P
-          << "NEAR / ((" << P << "FAR - " << P << "NEAR) * z)) * 0.5 + 0.5;\n";
-    o << "}\n\nfloat " << p << "Shadow(" << w.mapParameters(true) << ", " << w.v3 << " worldPos, " << w.v3 << " n) {\n"
+    std::ostringstream g;  // the renderer's GLSL: HLSL takes it as comments
+    g << "\n// ---- ShadowLab's cube face frame, taps and face depth: shaders/shadow/cube_face_depth.glsl and what it includes, as they are ----\n";
+    printRendererFile(g, "shadow/cube_face_depth.glsl");
+    if (w.hlsl) {
+        o << "\n// The renderer's GLSL this lookup calls (translate vecN -> floatN, the structs' constructors):\n";
+        std::istringstream lines(g.str());
+        for (std::string line; std::getline(lines, line);) o << "// " << line << "\n";
+    } else {
+        o << g.str();
+    }
+    const int flags = e.reversedZ ? 1 : 0;
+    o << "\n// " << e.label << "'s numbers as the LightData the files above read (depth.w: 1 = reversed-Z).\n"
+      << "LightData " << p << "Data() {\n"
+      << "    LightData L;\n"
+      << "    L.viewProjection = " << (w.hlsl ? "(float4x4)0" : "mat4(1.0)") << ";\n"
+      << "    L.position = " << w.v4 << "(" << P << "POSITION, 0.0);\n"
+      << "    L.direction = " << w.v4 << "(0.0, 0.0, 0.0, 0.0);\n"
+      << "    L.radiance = " << w.v4 << "(1.0, 1.0, 1.0, 1.0);\n"
+      << "    L.shadow = " << w.v4 << "(0.0, 0.0, " << P << "TEXEL, " << P << "NORMAL_OFFSET);\n"
+      << "    L.depth = " << w.v4 << "(" << P << "NEAR, " << P << "FAR, " << P << "TEXEL_WORLD, " << flags << ".0);\n"
+      << "    L.views = " << w.v4 << "(0.0, 0.0, 0.0, 0.0);\n"
+      << "    return L;\n}\n";
+    o << "\nfloat " << p << "Shadow(" << w.mapParameters(true) << ", " << w.v3 << " worldPos, " << w.v3 << " n) {\n"
+      << "    LightData L = " << p << "Data();\n"
       << "    " << w.v3 << " a0 = abs(worldPos - " << P << "POSITION);\n"
       << "    " << w.v3 << " lookup = worldPos + n * (" << P << "NORMAL_OFFSET * (" << P
       << "TEXEL_WORLD * max(a0.x, max(a0.y, a0.z))));  // normal offset\n"
       << "    " << w.v3 << " v = lookup - " << P << "POSITION;\n"
-      << "    " << w.v3 << " a = abs(v);\n"
-      << "    float major = max(a.x, max(a.y, a.z));\n"
-      << "    // The face's two tangent axes: taps move across the face by texels (2 / resolution at unit distance).\n"
-      << "    " << w.v3 << " s = a.x >= a.y && a.x >= a.z ? " << w.v3 << "(0.0, 0.0, 1.0) : " << w.v3 << "(1.0, 0.0, 0.0);\n"
-      << "    " << w.v3 << " t = a.y >= a.x && a.y >= a.z ? " << w.v3 << "(0.0, 0.0, 1.0) : " << w.v3 << "(0.0, 1.0, 0.0);\n"
-      << "    float texelAtMajor = 2.0 * " << P << "TEXEL * major;\n"
+      << "    CubeFaceFrame frame = cubeFaceFrame(v, L);  // taps move across the lookup's face, texel by texel\n"
       << "    float sum = 0.0;\n"
       << "    for (int i = 0; i < " << P << "TAPS; ++i) {\n"
-      << "        " << w.v2 << " o = " << P << "TAP_OFFSETS[i] * texelAtMajor;\n"
-      << "        " << w.v3 << " d = v + o.x * s + o.y * t;\n"
-      << "        float ref = " << clampToFar(e, p + "FaceDepth(v, d)") << ";\n"
+      << "        " << w.v3 << " d = cubeFaceTap(frame, " << P << "TAP_OFFSETS[i]);\n"
+      << "        float ref = clampToFar(L, faceDepth(v, d, L));\n"
       << "        sum += " << w.compareCube("d", "ref") << ";\n"
       << "    }\n"
       << "    return sum / " << w.toFloat(P + "TAPS") << ";\n}\n";
@@ -334,9 +358,10 @@ std::vector<std::string> lookupDefines(const ShadowExport& e, gl::IncludeAliases
     key.lights.mapArrays2D = cube ? 0 : 1;
     key.lights.mapArraysCube = cube ? 1 : 0;
     key.receiverPlane = e.receiverPlane;
+    key.momentMips = e.filter.momentMips;
     std::vector<std::string> defines;
     for (const std::string& d : key.defines())
-        for (const char* read : {"MOMENT_TECHNIQUE", "OWN_LOOKUP", "FILTER_", "MAP_ARRAYS_", "RECEIVER_PLANE"})
+        for (const char* read : {"MOMENT_TECHNIQUE", "MOMENT_MIPS", "OWN_LOOKUP", "FILTER_", "MAP_ARRAYS_", "RECEIVER_PLANE"})
             if (d.rfind(read, 0) == 0) defines.push_back(d);
     if (technique.moments) aliases["alias:technique"] = technique.moments->glslFile;
     if (technique.ownLookup) aliases["alias:lookup"] = technique.ownLookup->glslFile;
@@ -352,6 +377,7 @@ std::string techniqueLookupCode(const ShadowExport& e, bool vulkan, std::vector<
     const std::string P = upperCase(p) + "_";
     const bool cube = e.lightType == LightType::Point;
     const bool spot = e.lightType == LightType::Spot;
+    const bool mips = e.momentTechnique && e.filter.momentMips;
     gl::IncludeAliases aliases;
     const std::vector<std::string> defines = lookupDefines(e, aliases);
     // uFilterScale: the depth lookups' (filter_taps.glsl); the text holds every branch lookup.glsl includes.
@@ -367,7 +393,12 @@ std::string techniqueLookupCode(const ShadowExport& e, bool vulkan, std::vector<
       << ", shaders/shadow/lookup.glsl with\n// " << (technique.moments ? std::string("shaders/") + technique.moments->glslFile
                                                   : std::string("shaders/") + technique.ownLookup->glslFile)
       << " as the main pass compiles it (#includes expanded, uTechnique = " << vec4Text(e.techniqueUniforms) << ").\n";
-    if (technique.moments)
+    if (technique.moments && mips)
+        o << "// It reads the view's blurred moments trilinearly at the level of the pixel's footprint (the moments pass and\n"
+          << "// its mips below): bind the moments image as "
+          << (cube ? "uMapsCube[0], a cube-map array" : "uMaps2D[0], a 2D array (one layer per view)")
+          << " with every level,\n// min filter linear-mipmap-linear, mag linear, clamp to border with the border depth's moments.\n";
+    else if (technique.moments)
         o << "// It reads one bilinear sample of the view's blurred moments (the moments pass below): bind the moments image\n"
           << "// as " << (cube ? "uMapsCube[0], a cube-map array" : "uMaps2D[0], a 2D array (one layer per view)")
           << ", linear filtering, clamp to border with the border depth's moments.\n";
@@ -438,12 +469,17 @@ std::string techniqueLookupCode(const ShadowExport& e, bool vulkan, std::vector<
       << "    return L;\n}\n";
     o << "\n// worldPos: the receiver's world position minus the render origin; n: its unit normal, facing the viewer's side"
       << (cube ? "" : "; view: which of the views above (0 for a single view)") << ".\n";
+    // The pixel's screen derivatives: the receiver plane's, or the moments mips' level (the pixel's footprint).
+    const bool derivatives = e.receiverPlane || mips;
     if (e.receiverPlane)
         o << "// positionDx, positionDy: dFdx(worldPos), dFdy(worldPos), taken where control flow is uniform.\n";
+    else if (mips)
+        o << "// positionDx, positionDy: dFdxFine(worldPos), dFdyFine(worldPos), taken where control flow is uniform: the\n"
+          << "// mip level read is the pixel's footprint in the map (filter.momentMips).\n";
     o << "float " << p << "Shadow(" << (cube ? "" : "int view, ") << "vec3 worldPos, vec3 n"
-      << (e.receiverPlane ? ", vec3 positionDx, vec3 positionDy" : "") << ") {\n"
+      << (derivatives ? ", vec3 positionDx, vec3 positionDy" : "") << ") {\n"
       << "    LightData L = " << p << "Data(" << (cube ? "0" : "view") << ");\n";
-    if (e.receiverPlane) o << "    gPositionDx = positionDx;\n    gPositionDy = positionDy;\n";
+    if (derivatives) o << "    gPositionDx = positionDx;\n    gPositionDy = positionDy;\n";
     if (cube)
         o << "    vec3 a = abs(worldPos - L.position.xyz);\n"
           << "    return shadowCube(L, worldPos + n * (L.shadow.w * (L.depth.z * max(a.x, max(a.y, a.z)))));\n";
@@ -464,16 +500,25 @@ MomentsPassShaders momentsPassShaders(const ShadowExport& e, bool vulkan) {
     MomentsPassShaders out;
     if (!technique.moments) return out;
     const std::string format = "MOMENT_FORMAT " + e.momentFormat;
+    // A perspective view's moments hold linear depth (shadow/linear_depth.glsl's momentDepth): its near and far
+    // planes are the light's (a spot's one view, a point light's six faces); an orthographic view ignores them.
     out.convert = bakeUniforms(gl::preprocessedSource("moments.comp.glsl", {"CONVERT", format}, {},
                                                       {{"alias:technique", technique.moments->glslFile}}),
                                {{"uTechnique", vec4Text(e.techniqueUniforms)},
                                 {"uSize", std::to_string(e.shadow.resolution)},
-                                {"uReversedZ", e.reversedZ ? "true" : "false"}});
+                                {"uReversedZ", e.reversedZ ? "true" : "false"},
+                                {"uPerspective", e.perspective ? "true" : "false"},
+                                {"uNearFar", "vec2(" + lit(e.nearPlane) + ", " + lit(e.farPlane) + ")"}});
     out.blur = bakeUniforms(gl::preprocessedSource("moments.comp.glsl", {format}),
                             {{"uSize", std::to_string(e.shadow.resolution)}});
+    // uSize per level; uEmpty: "no caster" as the storage holds it (a level skips those texels).
+    if (e.filter.momentMips)
+        out.mips = bakeUniforms(gl::preprocessedSource("moments.comp.glsl", {"MIPS", format}),
+                                {{"uEmpty", vec4Text(emptyMoments(e.filter))}});
     if (vulkan) {
         out.convert = vulkanUniforms(out.convert, 0, out.convertBindings);
         out.blur = vulkanUniforms(out.blur, 0, out.blurBindings);
+        if (!out.mips.empty()) out.mips = vulkanUniforms(out.mips, 0, out.mipsBindings);
     }
     return out;
 }

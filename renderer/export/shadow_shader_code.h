@@ -45,12 +45,13 @@ std::string shadowShaderCode(const ShadowExport& light, const ShaderTarget& targ
 // from the exported numbers and apply the normal offset as the main pass does. GLSL only.
 std::string techniqueLookupCode(const ShadowExport& light, bool vulkan, std::vector<VulkanBinding>* bindings = nullptr);
 
-// A moments technique's two compute passes: shaders/moments.comp.glsl as the moments pass compiles it, CONVERT (the
-// depth map to the technique's moments, its file included) and the blur (one direction per dispatch), uTechnique
-// baked in; for Vulkan with every uniform given a binding (listed in the bindings).
+// A moments technique's compute passes: shaders/moments.comp.glsl as the moments pass compiles it, CONVERT (the
+// depth map to the technique's moments, its file included), the blur (one direction per dispatch), uTechnique
+// baked in, and with filter.momentMips MIPS (one level from the one below per dispatch, uSize the level's size; else
+// empty); for Vulkan with every uniform given a binding (listed in the bindings).
 struct MomentsPassShaders {
-    std::string convert, blur;
-    std::vector<VulkanBinding> convertBindings, blurBindings;
+    std::string convert, blur, mips;
+    std::vector<VulkanBinding> convertBindings, blurBindings, mipsBindings;
 };
 MomentsPassShaders momentsPassShaders(const ShadowExport& light, bool vulkan);
 

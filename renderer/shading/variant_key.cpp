@@ -13,14 +13,10 @@
 
 namespace shadowlab {
 
-namespace {
-
-std::string upper(std::string s) {
+std::string upperCase(std::string s) {
     for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return s;
 }
-
-}  // namespace
 
 std::vector<std::string> MainVariantKey::defines() const {
     FilterSettings filterSettings;
@@ -64,8 +60,8 @@ std::string MainVariantKey::name() const {
     for (std::string d : defines()) {
         if (d.starts_with("FILTER_TAP_OFFSETS") || d.starts_with("FILTER_GRID_RADIUS")) continue;  // the numbers follow from the filter, said by FILTER_TAPS
         if (d.starts_with("CASCADE_TINTS")) continue;  // fixed colours, said by VIEW_CASCADES
-        if (d == "MOMENT_TECHNIQUE") d = "FILTER_" + upper(filterTechnique(filter).name) + " " + d;
-        if (d.starts_with("FILTER_TAPS")) d = "FILTER_" + upper(filterTechnique(filter).name) +
+        if (d == "MOMENT_TECHNIQUE") d = "FILTER_" + upperCase(filterTechnique(filter).name) + " " + d;
+        if (d.starts_with("FILTER_TAPS")) d = "FILTER_" + upperCase(filterTechnique(filter).name) +
                                               (filter == FilterKind::Pcf ? " PCF_KERNEL " + std::to_string(kernel) : "") +
                                               " " + d;
         joined += (joined.empty() ? "" : " ") + d;

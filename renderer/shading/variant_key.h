@@ -49,4 +49,7 @@ Settings variantInputs(const Settings& effective);
 // frame's lights, useSceneLights resolved): read from variantInputs(effective) only.
 MainVariantKey mainVariantKey(const Settings& effective);
 
+// A name as a GLSL define spells it: upper case ("vsm" -> FILTER_VSM; the export's "light0" -> LIGHT0_ constants).
+std::string upperCase(std::string s);
+
 }  // namespace shadowlab

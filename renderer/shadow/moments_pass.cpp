@@ -44,12 +44,6 @@ std::string joined(const std::vector<std::string>& items) {
 
 }  // namespace
 
-int momentLevels(int resolution, bool mips) {
-    int levels = 1;
-    while (mips && (resolution >> levels) > 0) ++levels;
-    return levels;
-}
-
 GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits) {
     const std::string name = momentImageFormat(technique, momentBits);
     for (const NamedFormat& f : kMomentFormats)

@@ -9,6 +9,7 @@
 #include "frame/frame_stats.h"
 #include "gl/gl_objects.h"
 #include "settings/settings.h"
+#include "shading/filters/moment_filter.h"  // momentLevels
 #include "shadow/shadow_map.h"
 #include "timing/pass_timer.h"
 #include "views/map_group.h"
@@ -120,8 +121,6 @@ private:
     int lastConverted_ = 0;
 };
 
-// How many mip levels a moments map of `resolution` has: every level down to 1x1 with filter.momentMips, else 1.
-int momentLevels(int resolution, bool mips);
 // The storage's GL internal format for a technique at filter.momentBits.
 GLenum momentInternalFormat(const FilterTechnique& technique, int momentBits);
 

@@ -108,5 +108,48 @@ TEST_F(CascadeBiasAndExport, ACascadedLightsExportCompilesAsGlsl) {
     }
 }
 
+// A cascaded sun and a point light exported together: both lights' code prints the renderer's view_select.glsl (the
+// cascade selection, the point light's cube_face_depth.glsl includes it), each file inside its own include guard, so
+// the two compile in one shader (a second definition of cubeFaceOf would not).
+TEST_F(CascadeBiasAndExport, ACascadedAndAPointLightsCodeCompileInOneShader) {
+    const Scene scene = loadBuiltin("textbook");
+    Settings s = cascadedTextbook();
+    LightSettings point = s.lights[0];
+    point.type = LightType::Point;
+    point.position = {2.0f, 7.0f, 3.0f};
+    point.projection.fit = ProjectionFit::Scene;
+    s.lights.push_back(point);
+    const Camera camera = cameraFor(s.camera, scene, 16.0 / 9.0);
+    const ViewCamera viewCamera = viewCameraOf(camera, 16.0 / 9.0, renderOriginOf(scene.bounds));
+    std::string error;
+    const std::optional<ShadowExportSet> set = exportForScene(s, scene, "builtin:textbook", std::nullopt, error, &viewCamera);
+    ASSERT_TRUE(set) << error;
+    ASSERT_EQ(set->lights.size(), 2u);
+    ASSERT_TRUE(set->lights[0].shadow && set->lights[0].shadow->cascaded);
+    ASSERT_TRUE(set->lights[1].shadow);
+    std::string code;
+    for (const LightExport& l : set->lights) code += shadowShaderCode(*l.shadow, shaderTargetFor(ExportFormat::GL, false));
+    const std::string fragment =
+        "#version 450\n" + code +
+        "layout(binding = 0) uniform sampler2DShadow sunMap;\nlayout(binding = 1) uniform samplerCubeShadow pointMap;\n"
+        "uniform mat4 sunMatrix;\nin vec3 worldPos;\nin vec3 normal;\nout vec4 colour;\n"
+        "void main() {\n"
+        "    CascadeChoice choice = light0Cascade(worldPos);\n"
+        "    float sun = light0Shadow(sunMap, sunMatrix, LIGHT0_CASCADE_TEXEL_WORLD[0], worldPos, normal, dFdx(worldPos), dFdy(worldPos));\n"
+        "    colour = vec4(choice.weight * sun * light1Shadow(pointMap, worldPos, normal));\n"
+        "}\n";
+    const GLuint shader = glCreateShader(GL_FRAGMENT_SHADER);
+    const char* text = fragment.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    std::string log(4096, '\0');
+    GLsizei length = 0;
+    glGetShaderInfoLog(shader, GLsizei(log.size()), &length, log.data());
+    glDeleteShader(shader);
+    EXPECT_EQ(ok, GL_TRUE) << log.substr(0, std::size_t(length)) << "\n" << fragment;
+}
+
 }  // namespace
 }  // namespace shadowlab::test

@@ -323,7 +323,11 @@ TEST(ShadowExportLights, APointLightHasSixFacesWithTheirMatricesNearAndFar) {
         EXPECT_EQ(count(gl, std::string("static const float light2Face") + n + "ViewProjection[16]"), 1u) << n << gl;
     for (const char* n : names) EXPECT_TRUE(contains(gl, std::string("// View light 2 (point) face ") + n + ": near ")) << n;
     EXPECT_TRUE(contains(gl, "GL_TEXTURE_CUBE_MAP")) << gl;
-    EXPECT_TRUE(contains(gl, "light2FaceDepth(")) << "the cube's per-face reference depth as shader code";
+    // The taps' directions and per-face reference depth are the renderer's cube_face_depth.glsl, printed once.
+    EXPECT_EQ(count(gl, "#ifndef SHADOWLAB_SHADOW_CUBE_FACE_DEPTH_GLSL"), 1u) << gl;
+    EXPECT_EQ(count(gl, "CubeFaceFrame cubeFaceFrame(vec3 fromLight, LightData L)"), 1u);
+    EXPECT_TRUE(contains(gl, "vec3 d = cubeFaceTap(frame, LIGHT2_TAP_OFFSETS[i]);"));
+    EXPECT_TRUE(contains(gl, "float ref = clampToFar(L, faceDepth(v, d, L));"));
     EXPECT_TRUE(contains(gl, "texture(map, vec4(d, ref))"));
     const std::string d3d = exportSnippet(set, ExportFormat::D3D12);
     EXPECT_TRUE(contains(d3d, "FrontCounterClockwise = FALSE")) << "D3D cube faces: clip y negated";
@@ -471,21 +475,59 @@ TEST(DepthFormatChange, NoBiasOrSameFormatChangesNothingButTheFormat) {
     EXPECT_EQ(changeDepthFormat(shadow, shadow.format, 0.75).note, "");
 }
 
-// A setting the export cannot write is named in the snippet and the JSON (filter.momentMips: the main pass's trilinear
-// read needs the pixel's screen derivatives), never dropped silently.
-TEST(ShadowExportTechniques, MomentMipsAreNamedAsNotExported) {
+// filter.momentMips is exported: the mips pass (ShadowLab's moments.comp.glsl MIPS, one level per dispatch), the
+// storage's levels and trilinear sampler, and the lookup compiled with MOMENT_MIPS (the level from the pixel's
+// footprint, so the function takes the position's screen derivatives). It used to be named under "Not exported";
+// a setting the export cannot write is still named there (notExported), none is today.
+TEST(ShadowExportTechniques, MomentMipsAreExportedAsAPassAndTheFootprintLookup) {
     Settings s;
     s.filter.kind = FilterKind::Vsm;
+    s.lights[0].shadow.resolution = 512;
     for (const bool mips : {false, true}) {
+        SCOPED_TRACE(mips ? "mips" : "no mips");
         s.filter.momentMips = mips;
         const ShadowExportSet set = exportSet(s);
         ASSERT_FALSE(set.lights.empty());
         ASSERT_TRUE(set.lights[0].shadow.has_value());
-        const std::string glsl = exportSnippet(set, ExportFormat::GL);
-        const nlohmann::json json = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json));
-        const std::string jsonText = json.dump();
-        EXPECT_EQ(count(glsl, "// Not exported: filter.momentMips"), mips ? 1u : 0u) << "mips " << mips;
-        EXPECT_EQ(count(jsonText, "filter.momentMips = true"), mips ? 1u : 0u) << "mips " << mips;
+        for (const ExportFormat api : {ExportFormat::GL, ExportFormat::Vulkan}) {
+            const std::string glsl = exportSnippet(set, api);
+            EXPECT_EQ(count(glsl, "// Not exported:"), 0u);
+            EXPECT_EQ(count(glsl, "static const char* light0MomentsMips = R\"glsl("), mips ? 1u : 0u);
+            EXPECT_EQ(count(glsl, "#define MIPS"), mips ? 1u : 0u) << "the mips pass is moments.comp.glsl's MIPS";
+            EXPECT_EQ(count(glsl, "10 mip levels (filter.momentMips)"), mips ? 1u : 0u) << "512 down to 1: 10 levels";
+            EXPECT_EQ(count(glsl, "#define MOMENT_MIPS"), mips ? 1u : 0u) << "the lookup reads the footprint's level";
+            if (api == ExportFormat::Vulkan)  // each descriptor listed once (uIn is declared in two branches)
+                EXPECT_EQ(count(glsl, "binding 1 = readonly image2D uIn"), mips ? 2u : 1u) << "blur, mips";
+            EXPECT_EQ(count(glsl, "float light0Shadow(int view, vec3 worldPos, vec3 n, vec3 positionDx, vec3 positionDy)"),
+                      mips ? 1u : 0u);
+        }
+        const nlohmann::json moments = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json))["lights"][0]["technique"]["moments"];
+        EXPECT_TRUE(moments["notExported"].empty());
+        EXPECT_EQ(moments["levels"], mips ? 10 : 1);
+        EXPECT_EQ(moments["minFilter"], mips ? "linear-mipmap-linear" : "linear");
+        EXPECT_EQ(moments.contains("mipsGlsl"), mips);
+    }
+}
+
+// ShadowLab blurs a point light's moments across its cube faces' edges (moments_cube_blur.comp.glsl); the exported
+// blur is the 2D one, face by face: the export names that under "Not exported" whenever it blurs a point light.
+TEST(ShadowExportTechniques, APointLightsBlurAcrossCubeFacesIsNamedAsNotExported) {
+    Settings s = threeLights();
+    s.filter.kind = FilterKind::Vsm;
+    for (const float blur : {1.0f, 5.0f}) {
+        SCOPED_TRACE("blur " + std::to_string(blur));
+        s.filter.blurWidth = blur;
+        const ShadowExportSet set = exportSet(s);
+        ASSERT_EQ(set.lights.size(), 3u);
+        const nlohmann::json lights = nlohmann::json::parse(exportSnippet(set, ExportFormat::Json))["lights"];
+        for (std::size_t l = 0; l < 3; ++l) {
+            const nlohmann::json& notExported = lights[l]["technique"]["moments"]["notExported"];
+            const bool named = notExported.size() == 1 &&
+                               notExported[0].get<std::string>().find("cube faces' edges") != std::string::npos;
+            EXPECT_EQ(named, l == 2 && blur > 1.0f) << "light " << l;
+        }
+        const std::string gl = exportSnippet(set, ExportFormat::GL);
+        EXPECT_EQ(count(gl, "// Not exported: the blur across the cube faces' edges"), blur > 1.0f ? 1u : 0u);
     }
 }
 

@@ -89,28 +89,13 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
     DepthPassResult result;
     VkCleanup cleanup;
     try {
-        VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-        app.pApplicationName = "shadowlab-vulkan-check";
-        app.apiVersion = VK_API_VERSION_1_1;
-        VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-        instanceInfo.pApplicationInfo = &app;
-        VkInstance instance = VK_NULL_HANDLE;
-        if (vkCreateInstance(&instanceInfo, nullptr, &instance) != VK_SUCCESS) {
+        const VkFirstDevice first = vkFirstDevice(cleanup, "shadowlab-vulkan-check");
+        if (!first.gpu) {
             result.noDevice = true;
-            result.error = "vkCreateInstance failed: no Vulkan implementation";
+            result.error = first.error;
             return result;
         }
-        cleanup.steps.push_back([=] { vkDestroyInstance(instance, nullptr); });
-        std::uint32_t count = 0;
-        vkEnumeratePhysicalDevices(instance, &count, nullptr);
-        if (count == 0) {
-            result.noDevice = true;
-            result.error = "no Vulkan physical device";
-            return result;
-        }
-        std::vector<VkPhysicalDevice> gpus(count);
-        vkEnumeratePhysicalDevices(instance, &count, gpus.data());
-        const VkPhysicalDevice gpu = gpus[0];
+        const VkPhysicalDevice gpu = first.gpu;
         VkPhysicalDeviceProperties props;
         vkGetPhysicalDeviceProperties(gpu, &props);
         result.deviceName = props.deviceName;
@@ -126,14 +111,7 @@ DepthPassResult renderDepthVulkan(const DepthPassInput& input) {
             throw std::runtime_error("depth format not renderable on " + result.deviceName);
 
         if (input.glClipDepth) {
-            std::uint32_t extensionCount = 0;
-            vkEnumerateDeviceExtensionProperties(gpu, nullptr, &extensionCount, nullptr);
-            std::vector<VkExtensionProperties> extensions(extensionCount);
-            vkEnumerateDeviceExtensionProperties(gpu, nullptr, &extensionCount, extensions.data());
-            bool found = false;
-            for (const VkExtensionProperties& e : extensions)
-                found = found || std::strcmp(e.extensionName, VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME) == 0;
-            if (!found) {
+            if (!vkHasExtension(gpu, VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME)) {
                 result.unsupported = true;
                 result.error = result.deviceName + " lacks " VK_EXT_DEPTH_CLIP_CONTROL_EXTENSION_NAME;
                 return result;

@@ -46,4 +46,42 @@ std::pair<VkBuffer, VkDeviceMemory> vkHostBuffer(VkPhysicalDevice gpu, VkDevice 
     return {buffer, memory};
 }
 
+VkFirstDevice vkFirstDevice(VkCleanup& cleanup, const char* applicationName) {
+    VkFirstDevice first;
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = applicationName;
+    app.apiVersion = VK_API_VERSION_1_1;
+    VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    instanceInfo.pApplicationInfo = &app;
+    VkInstance instance = VK_NULL_HANDLE;
+    if (vkCreateInstance(&instanceInfo, nullptr, &instance) != VK_SUCCESS) {
+        first.error = "vkCreateInstance failed: no Vulkan implementation";
+        return first;
+    }
+    cleanup.steps.push_back([=] { vkDestroyInstance(instance, nullptr); });
+    std::uint32_t count = 0;
+    vkEnumeratePhysicalDevices(instance, &count, nullptr);
+    if (count == 0) {
+        first.error = "no Vulkan physical device";
+        return first;
+    }
+    std::vector<VkPhysicalDevice> gpus(count);
+    vkEnumeratePhysicalDevices(instance, &count, gpus.data());
+    first.gpu = gpus[0];
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(first.gpu, &props);
+    first.name = props.deviceName;
+    return first;
+}
+
+bool vkHasExtension(VkPhysicalDevice gpu, const char* name) {
+    std::uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(gpu, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(gpu, nullptr, &count, extensions.data());
+    for (const VkExtensionProperties& e : extensions)
+        if (std::strcmp(e.extensionName, name) == 0) return true;
+    return false;
+}
+
 }  // namespace shadowlab::test

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -28,5 +29,17 @@ std::uint32_t vkMemoryType(VkPhysicalDevice gpu, std::uint32_t bits, VkMemoryPro
 // `data` when given; both are destroyed by `cleanup`.
 std::pair<VkBuffer, VkDeviceMemory> vkHostBuffer(VkPhysicalDevice gpu, VkDevice device, VkCleanup& cleanup,
                                                  VkDeviceSize size, VkBufferUsageFlags usage, const void* data);
+
+// A Vulkan 1.1 instance (destroyed by `cleanup`) and its first physical device; gpu VK_NULL_HANDLE with `error` set
+// when there is no implementation or no device (the caller skips its check).
+struct VkFirstDevice {
+    VkPhysicalDevice gpu = VK_NULL_HANDLE;
+    std::string name;
+    std::string error;
+};
+VkFirstDevice vkFirstDevice(VkCleanup& cleanup, const char* applicationName);
+
+// Whether `gpu` offers the device extension `name`.
+bool vkHasExtension(VkPhysicalDevice gpu, const char* name);
 
 }  // namespace shadowlab::test

@@ -11,6 +11,12 @@ std::string momentImageFormat(const FilterTechnique& technique, int momentBits) 
     return m->channels == 2 ? "rg32f" : "rgba32f";
 }
 
+int momentLevels(int resolution, bool mips) {
+    int levels = 1;
+    while (mips && (resolution >> levels) > 0) ++levels;
+    return levels;
+}
+
 FilterTechnique momentsFilter(FilterKind kind, const char* name, std::initializer_list<const char*> ownKeys,
                               const MomentTechnique& moments) {
     FilterTechnique t{kind, name, /*bilinear=*/true,

@@ -24,6 +24,10 @@ inline const TradeOffRange kBleedReductionTradeOff{"filter.bleedReduction", 0.0,
 // momentInternalFormat) and the export writes. "" for a technique without moments.
 std::string momentImageFormat(const FilterTechnique& technique, int momentBits);
 
+// How many mip levels a moments map of `resolution` has: every level down to 1x1 with filter.momentMips, else 1 (the
+// moments pass allocates them; the export writes them).
+int momentLevels(int resolution, bool mips);
+
 // Chebyshev's one-tailed upper bound of the lit share for a receiver at `z` over moments (mean, E[x^2]), variance at
 // least `minVariance` (chebyshev.glsl's chebyshevUpperBound); 1 when the receiver is not beyond the mean.
 float chebyshevUpperBound(float mean, float meanSquare, float z, float minVariance);
