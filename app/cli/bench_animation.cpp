@@ -1,10 +1,10 @@
 #include "cli/bench_animation.h"
+#include "cli/bench_input.h"
 
 #include "accuracy/cache_error.h"
 #include "accuracy/light_isolation.h"
 #include "accuracy/motion.h"
 #include "cli/command_input.h"
-#include "cli/json_output.h"
 #include "cli/measure_motion.h"
 #include "cli/mover_camera.h"
 #include "cli/settings_from_cli.h"
@@ -565,9 +565,7 @@ int runBenchAnimation(const BenchOptions& bench, const BenchAnimationOptions& o)
             doc["light"] = measuredLight;
             doc["cacheError"] = rows;
         }
-        if (!bench.json.empty()) {
-            if (error = writeJsonOutput(bench.json, doc); !error.empty()) return fail("--json " + bench.json + ": " + error);
-        }
+        if (int failed = writeBenchJson(bench.json, doc)) return failed;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

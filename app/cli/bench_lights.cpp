@@ -1,8 +1,7 @@
 #include "cli/bench_lights.h"
-#include "cli/json_output.h"
+#include "cli/bench_input.h"
 
 #include "cli/command_input.h"
-#include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/timed_frames.h"
 #include "light/scene_lights.h"
@@ -27,14 +26,10 @@ int viewsThatRan(const FrameStats& stats) {
 }  // namespace
 
 int runBenchLights(const BenchOptions& options) {
-    std::optional<Settings> requested = settingsFromCli(options.preset, options.overrides, options.scene);
-    if (!requested) return 2;
-    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
-    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*requested});
-    if (!loaded.scene) return fail(loaded.error);
-    const Scene& scene = *loaded.scene;
-    const Settings base = withEffectiveLights(*requested, scene);
+    const BenchInput input = readBenchInput(options);
+    if (input.refused) return input.refused;
+    const Scene& scene = *input.loaded.scene;
+    const Settings base = withEffectiveLights(*input.settings, scene);
     if (base.lights.empty()) return fail("--lights: the settings have no light");
     try {
         HeadlessContext context;
@@ -124,10 +119,7 @@ int runBenchLights(const BenchOptions& options) {
                                {"unshadowedMainMs", unshadowed.mainMs}, {"shadowTapsMs", taps}});
         }
         doc["mainPassByShadowedLights"] = scaling;
-        if (!options.json.empty()) {
-            if (std::string error = writeJsonOutput(options.json, doc); !error.empty())
-                return fail("--json " + options.json + ": " + error);
-        }
+        if (int failed = writeBenchJson(options.json, doc)) return failed;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

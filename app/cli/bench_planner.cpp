@@ -1,8 +1,7 @@
 #include "cli/bench_planner.h"
-#include "cli/json_output.h"
+#include "cli/bench_input.h"
 
 #include "cli/command_input.h"
-#include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/timed_frames.h"
 #include "light/scene_lights.h"
@@ -121,14 +120,10 @@ std::vector<LightSettings> plannerBenchLights(const Bounds& bounds, const LightS
 }
 
 int runBenchPlanner(const BenchOptions& options) {
-    std::optional<Settings> requested = settingsFromCli(options.preset, options.overrides, options.scene);
-    if (!requested) return 2;
-    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
-    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*requested});
-    if (!loaded.scene) return fail(loaded.error);
-    const Scene& scene = *loaded.scene;
-    const Settings effective = withEffectiveLights(*requested, scene);
+    const BenchInput input = readBenchInput(options);
+    if (input.refused) return input.refused;
+    const Scene& scene = *input.loaded.scene;
+    const Settings effective = withEffectiveLights(*input.settings, scene);
     const LightSettings model = effective.lights.empty() ? LightSettings{} : effective.lights.front();
     Settings mix = effective;
     mix.lights = plannerBenchLights(scene.bounds, model);
@@ -138,7 +133,7 @@ int runBenchPlanner(const BenchOptions& options) {
         RenderTarget target;
         if (std::string e = target.resize(options.width, options.height); !e.empty()) return fail(e);
         const double aspect = double(options.width) / options.height;
-        const Camera camera = cameraFor(requested->camera, scene, aspect);
+        const Camera camera = cameraFor(input.settings->camera, scene, aspect);
         const GlInfo& info = renderer.glInfo();
         // One frame uploads the scene: the casters' bounding spheres are the renderer's own.
         FrameStats first = renderer.render(scene, mix, camera, target);
@@ -234,10 +229,7 @@ int runBenchPlanner(const BenchOptions& options) {
         doc["cascades"] = cascades;
         doc["cascadeTimingSource"] = last.timingSource;
         doc["cascadeTargetRatio"] = kCascadeTargetRatio;
-        if (!options.json.empty()) {
-            if (std::string error = writeJsonOutput(options.json, doc); !error.empty())
-                return fail("--json " + options.json + ": " + error);
-        }
+        if (int failed = writeBenchJson(options.json, doc)) return failed;
     } catch (const std::exception& e) {
         return fail(e.what());
     }

@@ -1,8 +1,8 @@
 #include "cli/bench_reference_update.h"
+#include "cli/bench_input.h"
 
 #include "cli/command_input.h"
 #include "cli/json_output.h"
-#include "cli/settings_from_cli.h"
 #include "reference/embree_scene.h"
 #include "reference/parallel_rows.h"
 #include "scene/scene_animation.h"
@@ -68,11 +68,10 @@ std::string cpuName() {
 }
 
 int runBenchReferenceUpdate(const BenchOptions& options) {
-    std::optional<Settings> settings = settingsFromCli(options.preset, options.overrides, options.scene);
-    if (!settings) return 2;
-    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*settings});
-    if (!loaded.scene) return fail(loaded.error);
+    BenchInput input = readBenchInput(options, /*checkView=*/false);  // no view: it times the BVH alone
+    if (input.refused) return input.refused;
+    std::optional<Settings>& settings = input.settings;
+    SceneLoadResult& loaded = input.loaded;
     std::string error;
     const std::optional<std::vector<int>> chosen = chosenAnimations(*loaded.scene, settings->animation.play, error);
     if (!chosen) return fail(error);

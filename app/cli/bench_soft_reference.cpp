@@ -1,11 +1,11 @@
 #include "cli/bench_soft_reference.h"
+#include "cli/bench_input.h"
 
 #include "accuracy/gbuffer_pass.h"
 #include "accuracy/light_isolation.h"
 #include "cli/bench_reference_update.h"
 #include "cli/command_input.h"
 #include "cli/json_output.h"
-#include "cli/settings_from_cli.h"
 #include "context/headless_context.h"
 #include "frame/camera.h"
 #include "frame/gpu_scene.h"
@@ -40,17 +40,14 @@ std::string describe(const char* what, const SoftVisibilityResult& r) {
 }  // namespace
 
 int runBenchSoftReference(const BenchOptions& options) {
-    std::optional<Settings> given = settingsFromCli(options.preset, options.overrides, options.scene);
-    if (!given) return 2;
-    if (std::string error = checkOutputFolder(options.json, "--json"); !error.empty()) return fail(error);
-    if (std::string error = checkViewSize(options.width, options.height); !error.empty()) return fail(error);
-    SceneLoadResult loaded = loadSceneForCommand(options.scene, {&*given});
-    if (!loaded.scene) return fail(loaded.error);
-    const Scene& scene = *loaded.scene;
-    const std::vector<std::size_t> casting = castingLights(*given, scene);
+    const BenchInput input = readBenchInput(options);
+    if (input.refused) return input.refused;
+    const Scene& scene = *input.loaded.scene;
+    const Settings& given = *input.settings;
+    const std::vector<std::size_t> casting = castingLights(given, scene);
     if (casting.empty()) return fail("bench --soft-reference: no light of " + scene.name + " casts a shadow");
     std::string error;
-    const std::optional<Settings> settings = isolateLight(*given, scene, casting.front(), error);
+    const std::optional<Settings> settings = isolateLight(given, scene, casting.front(), error);
     if (!settings) return fail("bench --soft-reference: " + error);
     const LightSettings& lightSettings = settings->lights[0];
     const SoftLight disc = softLight(lightSettings, settings->reference.softRays);

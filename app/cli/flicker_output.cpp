@@ -25,8 +25,10 @@ nlohmann::json countsToJson(const FlickerCounts& c) {
 void printFlicker(std::ostream& out, const FlickerReport& r) {
     const Motion& m = r.motion;
     out << std::setprecision(4);
+    // cli::lightLabel ("lights.N"): unqualified, LightType's namespace adds the export's lightLabel ("light N"), an
+    // ambiguous call wherever both are declared (the sanitizer trees' unity source of the app).
     out << "flicker, metrics version " << kMetricsVersion << " (" << r.width << "x" << r.height << ", "
-        << lightLabel(r.lightIndex, r.lightType) << "): " << motionName(m.kind) << " moved " << m.step << " "
+        << cli::lightLabel(r.lightIndex, r.lightType) << "): " << motionName(m.kind) << " moved " << m.step << " "
         << motionInfo(m.kind).unit << " per frame";
     if (m.kind != MotionKind::Animation)  // an animation moves casters, not the map: no step in texels
         out << " = " << r.stepTexels << " texels of the light's map ("

@@ -14,13 +14,6 @@ namespace {
 
 class BiasTunerTest : public GlTest {};
 
-Settings zeroBias(Settings s) {
-    s.lights[0].shadow.depthBias = 0.0f;
-    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
-    s.lights[0].shadow.normalOffset = 0.0f;
-    return s;
-}
-
 TEST_F(BiasTunerTest, FromZeroBiasEndsWithinTheAcneLimitWithLessLeakThanPeterPanning) {
     for (const std::string name : {"textbook", "grazing"}) {
         SCOPED_TRACE(name);

@@ -24,17 +24,16 @@ DepthProfile profileOf(const std::string& sceneName, const Settings& settings, g
     return depthProfile(probe, from, to);
 }
 
-Settings zeroBias(Settings s) {
-    s.lights[0].shadow.depthBias = 0.0f;
-    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
-    s.lights[0].shadow.normalOffset = 0.0f;
-    s.lights[0].shadow.receiverPlaneBias = false;  // the default compares each tap with the receiver's plane
+// No bias at all: zeroBias, and no receiver plane (the default compares each tap with the receiver's plane).
+Settings noBiasAtAll(Settings s) {
+    s = zeroBias(s);
+    s.lights[0].shadow.receiverPlaneBias = false;
     return s;
 }
 
 TEST_F(DepthProfileTest, ZeroBiasOnAGrazingFloorShowsAcneTheDefaultNone) {
     const glm::ivec2 from{200, 250}, to{260, 250};  // across the open floor, away from the box's shadow
-    const DepthProfile acne = profileOf("grazing", zeroBias(loadShippedPreset("default")), from, to);
+    const DepthProfile acne = profileOf("grazing", noBiasAtAll(loadShippedPreset("default")), from, to);
     ASSERT_TRUE(acne.ok) << acne.error;
     EXPECT_EQ(acne.samples.size(), 61u);
     EXPECT_EQ(acne.surfaces, 61);

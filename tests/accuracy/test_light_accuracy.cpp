@@ -269,10 +269,7 @@ class LightAccuracyTest : public GlTest {};
 
 // Directional light with too little bias (acne) and a spot light over the same view.
 Settings twoLights() {
-    Settings s = loadShippedPreset("default");
-    s.lights[0].shadow.depthBias = 0.0f;
-    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
-    s.lights[0].shadow.normalOffset = 0.0f;
+    Settings s = zeroBias(loadShippedPreset("default"));
     LightSettings spot;
     spot.type = LightType::Spot;
     spot.position = glm::vec3(2.0f, 6.0f, 3.0f);

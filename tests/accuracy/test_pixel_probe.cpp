@@ -11,6 +11,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace shadowlab::test {
 namespace {
@@ -24,13 +27,17 @@ struct Sweep {
     std::string firstDisagreement;
 };
 
+// Captures `settings`' camera over a w x h view into `probe`, drawn by `renderer`: "" or why not.
+std::string captureView(Renderer& renderer, PixelProbe& probe, const Scene& scene, const Settings& settings, int w,
+                        int h) {
+    return probe.capture(renderer, scene, settings, cameraFor(settings.camera, scene, double(w) / h), w, h);
+}
+
 // Probes every `step`-th pixel of a w x h view and checks CPU against GPU.
 Sweep sweep(const Scene& scene, const Settings& settings, int w = 160, int h = 90, int step = 3) {
     Renderer renderer;
     PixelProbe probe;
-    const Camera camera = cameraFor(settings.camera, scene, double(w) / h);
-    const std::string error = probe.capture(renderer, scene, settings, camera, w, h);
-    EXPECT_EQ(error, "");
+    EXPECT_EQ(captureView(renderer, probe, scene, settings, w, h), "");
     Sweep s;
     for (int y = 0; y < h; y += step)
         for (int x = 0; x < w; x += step) {
@@ -64,6 +71,19 @@ Settings withFilter(Settings s, FilterKind kind, int kernel = 3, int resolution 
     s.filter.kernel = kernel;
     s.lights[0].shadow.resolution = resolution;
     return s;
+}
+
+// Each moments technique at 16 and 32 bits from `base` (a 3-texel kernel; a map of `resolution16` or `resolution32`
+// texels), with the name a failure is traced under ("VSM 16").
+std::vector<std::pair<std::string, Settings>> momentsSettings(const Settings& base, int resolution16, int resolution32) {
+    std::vector<std::pair<std::string, Settings>> all;
+    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
+        for (int bits : {16, 32}) {
+            Settings s = withFilter(base, kind, 3, bits == 16 ? resolution16 : resolution32);
+            s.filter.momentBits = bits;
+            all.emplace_back(std::string(filterTechnique(kind).name) + " " + std::to_string(bits), s);
+        }
+    return all;
 }
 
 TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryFilter) {
@@ -158,8 +178,7 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForPcss) {
     Renderer renderer;
     PixelProbe probe;
     const Settings sun = withPcss(base, 2.0f);
-    const Camera camera = cameraFor(sun.camera, scene, 160.0 / 90.0);
-    ASSERT_EQ(probe.capture(renderer, scene, sun, camera, 160, 90), "");
+    ASSERT_EQ(captureView(renderer, probe, scene, sun, 160, 90), "");
     bool explained = false;
     for (int y = 0; y < 90 && !explained; ++y)
         for (int x = 0; x < 160 && !explained; ++x) {
@@ -180,18 +199,15 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechnique) {
     // (shading/filters/), equals the GPU's at every probed pixel: both precisions, a blur, a coarse map.
     const Scene scene = loadBuiltin("textbook");
     const Settings base = loadShippedPreset("default");
-    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
-        for (int bits : {16, 32}) {
-            Settings s = withFilter(base, kind, 3, bits == 16 ? 256 : 1024);
-            s.filter.momentBits = bits;
-            s.filter.blurWidth = 5.0f;
-            const Sweep sw = sweep(scene, s, 320, 180, 2);
-            SCOPED_TRACE(std::string(filterTechnique(kind).name) + " " + std::to_string(bits));
-            EXPECT_GT(sw.surfaces, 5000);
-            EXPECT_EQ(sw.disagree, 0) << sw.firstDisagreement;
-            EXPECT_GT(sw.lit, 100);
-            EXPECT_GT(sw.partial, 20);  // filtered edges: the bound is evaluated away from 0 and 1
-        }
+    for (auto [name, s] : momentsSettings(base, 256, 1024)) {
+        s.filter.blurWidth = 5.0f;
+        const Sweep sw = sweep(scene, s, 320, 180, 2);
+        SCOPED_TRACE(name);
+        EXPECT_GT(sw.surfaces, 5000);
+        EXPECT_EQ(sw.disagree, 0) << sw.firstDisagreement;
+        EXPECT_GT(sw.lit, 100);
+        EXPECT_GT(sw.partial, 20);  // filtered edges: the bound is evaluated away from 0 and 1
+    }
     // A point light (builtin:room): the cube's moments are blurred across the faces' edges and the GPU reads them
     // seamlessly; the mirror reads a texel beyond the lookup's face's edge from the neighbouring face (a corner: the
     // mean of the three around it). Pixels near a cube edge agree too.
@@ -252,8 +268,7 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechnique) {
     Renderer renderer;
     PixelProbe probe;
     Settings vsm = withFilter(base, FilterKind::Vsm);
-    const Camera camera = cameraFor(vsm.camera, scene, 160.0 / 90.0);
-    ASSERT_EQ(probe.capture(renderer, scene, vsm, camera, 160, 90), "");
+    ASSERT_EQ(captureView(renderer, probe, scene, vsm, 160, 90), "");
     bool explained = false;
     for (int y = 0; y < 90 && !explained; y += 3)
         for (int x = 0; x < 160 && !explained; x += 3) {
@@ -275,17 +290,14 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechniqueWithM
     // parity of the quads is probed (step 3); the 1024^2 map is minified here (levels 1-3), so mips are read.
     const Scene scene = loadBuiltin("textbook");
     const Settings base = loadShippedPreset("default");
-    for (FilterKind kind : {FilterKind::Vsm, FilterKind::Evsm2, FilterKind::Evsm4, FilterKind::Msm})
-        for (int bits : {16, 32}) {
-            Settings s = withFilter(base, kind, 3, 1024);
-            s.filter.momentBits = bits;
-            s.filter.momentMips = true;
-            const Sweep sw = sweep(scene, s, 240, 135, 3);
-            SCOPED_TRACE(std::string(filterTechnique(kind).name) + " " + std::to_string(bits) + " with mips");
-            EXPECT_GT(sw.surfaces, 1000);
-            EXPECT_EQ(sw.disagree, 0) << sw.firstDisagreement;
-            EXPECT_GT(sw.partial, 20);
-        }
+    for (auto [name, s] : momentsSettings(base, 1024, 1024)) {
+        s.filter.momentMips = true;
+        const Sweep sw = sweep(scene, s, 240, 135, 3);
+        SCOPED_TRACE(name + " with mips");
+        EXPECT_GT(sw.surfaces, 1000);
+        EXPECT_EQ(sw.disagree, 0) << sw.firstDisagreement;
+        EXPECT_GT(sw.partial, 20);
+    }
     // A point light's cube faces (builtin:room), VSM with mips: the GPU filters a cube map seamlessly across face
     // edges at every level, and so does the mirror (a texel beyond the edge from the neighbouring face's level; a
     // 1024^2 face's level 8 is 4x4 texels, so walls seen edge-on read across an edge): reads inside a face (more than
@@ -297,8 +309,7 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechniqueWithM
         const Scene roomScene = loadBuiltin("room");
         Renderer renderer;
         PixelProbe probe;
-        const Camera camera = cameraFor(room.camera, roomScene, 160.0 / 90.0);
-        ASSERT_EQ(probe.capture(renderer, roomScene, room, camera, 160, 90), "");
+        ASSERT_EQ(captureView(renderer, probe, roomScene, room, 160, 90), "");
         int probed = 0, inside = 0, insideDisagree = 0, edgeDisagree = 0;
         std::string first;
         for (int y = 0; y < 90; y += 3)
@@ -327,8 +338,7 @@ TEST_F(PixelProbeTest, CpuShadowFactorEqualsTheGpusForEveryMomentsTechniqueWithM
     PixelProbe probe;
     Settings vsm = withFilter(base, FilterKind::Vsm, 3, 1024);
     vsm.filter.momentMips = true;
-    const Camera camera = cameraFor(vsm.camera, scene, 160.0 / 90.0);
-    ASSERT_EQ(probe.capture(renderer, scene, vsm, camera, 160, 90), "");
+    ASSERT_EQ(captureView(renderer, probe, scene, vsm, 160, 90), "");
     double deepest = -1.0;
     for (int y = 0; y < 90; y += 5)
         for (int x = 0; x < 160; x += 5) {
@@ -357,10 +367,7 @@ TEST_F(PixelProbeTest, AcneAtZeroBiasIsExplainedTapByTap) {
     // Zero bias and no normal offset on a grazing light: each receiver meets its own surface in the map, so its taps
     // split into lit and shadowed ones — the stripes of acne. The probe must still agree with the GPU.
     const Scene scene = loadBuiltin("grazing");
-    Settings s = loadShippedPreset("default");
-    s.lights[0].shadow.depthBias = 0.0f;
-    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
-    s.lights[0].shadow.normalOffset = 0.0f;
+    const Settings s = zeroBias(loadShippedPreset("default"));
     const Sweep acne = sweep(scene, s);
     EXPECT_EQ(acne.disagree, 0) << acne.firstDisagreement;
     EXPECT_GT(acne.mixedTaps, acne.surfaces / 10) << "zero bias should split the taps of many receivers";
@@ -405,8 +412,7 @@ TEST_F(PixelProbeTest, ReportsTheBiasTermsAndTapsOfOneFloorPixel) {
     Renderer renderer;
     PixelProbe probe;
     const int w = 200, h = 200;
-    const Camera camera = cameraFor(s.camera, scene, 1.0);
-    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    ASSERT_EQ(captureView(renderer, probe, scene, s, w, h), "");
     // The first lit floor pixel from the top left: away from every caster.
     PixelProbeReport r;
     for (int y = 0; y < h && !r.ok; y += 5)
@@ -444,10 +450,7 @@ TEST_F(PixelProbeTest, ReportsTheBiasTermsAndTapsOfOneFloorPixel) {
 
 TEST_F(PixelProbeTest, CopiesTheMeasurementsVerdictAndCause) {
     const Scene scene = loadBuiltin("grazing");
-    Settings s = loadShippedPreset("default");
-    s.lights[0].shadow.depthBias = 0.0f;
-    s.lights[0].shadow.slopeScaledDepthBias = 0.0f;
-    s.lights[0].shadow.normalOffset = 0.0f;
+    Settings s = zeroBias(loadShippedPreset("default"));
     s.lights[0].shadow.receiverPlaneBias = false;  // every bias term off: the floor meets itself in the map
     const int w = 160, h = 90;
     const Camera camera = cameraFor(s.camera, scene, double(w) / h);
@@ -494,10 +497,9 @@ TEST_F(PixelProbeTest, InACascadesBlendBandItMixesBothCascadesAsTheGpuDoes) {
     const Scene scene = loadBuiltin("textbook");
     const Settings s = cascadedTextbook();
     const int w = 240, h = 135;
-    const Camera camera = cameraFor(s.camera, scene, double(w) / h);
     Renderer renderer;
     PixelProbe probe;
-    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    ASSERT_EQ(captureView(renderer, probe, scene, s, w, h), "");
     ASSERT_EQ(probe.views().size(), 3u);
     int blended = 0, differing = 0, disagree = 0;
     std::string first;
@@ -532,10 +534,9 @@ TEST_F(PixelProbeTest, ViewChoosesACascadeAndSaysTheGpuDoesNotReadItThere) {
     Settings s = cascadedTextbook();
     s.lights[0].projection.blendBand = 0.0f;
     const int w = 160, h = 90;
-    const Camera camera = cameraFor(s.camera, scene, double(w) / h);
     Renderer renderer;
     PixelProbe probe;
-    ASSERT_EQ(probe.capture(renderer, scene, s, camera, w, h), "");
+    ASSERT_EQ(captureView(renderer, probe, scene, s, w, h), "");
     std::string error;
     const std::optional<std::size_t> two = findView(probe.views(), "cascade:2", error);
     ASSERT_TRUE(two) << error;

@@ -21,6 +21,16 @@ namespace {
 
 class SweepTest : public GlTest {};
 
+// A small sweep's run: a width x height view, `frames` timed frames a point, the preset measured as a marker or not.
+SweepRunOptions smallRun(int width, int height, int frames, bool measurePreset = SweepRunOptions{}.measurePreset) {
+    SweepRunOptions options;
+    options.width = width;
+    options.height = height;
+    options.frames = frames;
+    options.measurePreset = measurePreset;
+    return options;
+}
+
 bool dominates(const SweepPointResult& a, const SweepPointResult& b) {
     return a.costMs <= b.costMs && a.accuracy.wrongPercent <= b.accuracy.wrongPercent &&
            (a.costMs < b.costMs || a.accuracy.wrongPercent < b.accuracy.wrongPercent);
@@ -96,10 +106,7 @@ TEST_F(SweepTest, ErrorFallsWithResolutionCostRisesWithKernelOneReference) {
     ASSERT_EQ(applySettingOverride(base, "filter.kind=pcf"), "");
     const SweepPlan plan = planSweep(base, {"shadow.resolution=32,128,1024", "filter.kernel=1,9"});
     ASSERT_EQ(plan.error, "");
-    SweepRunOptions options;
-    options.width = 320;
-    options.height = 180;
-    options.frames = 7;
+    const SweepRunOptions options = smallRun(320, 180, 7);
     std::size_t calls = 0;
     const SweepResult r = runSweep(scene, base, plan, options,
                                    [&](const SweepPointResult&, std::size_t done, std::size_t total) {
@@ -189,10 +196,7 @@ TEST_F(SweepTest, ALightAxisComputesTheReferenceOncePerLightAndDrawsTheBareDrawF
     // The light axis runs fastest in the plan; the sweep still computes each light's reference only once.
     const SweepPlan plan = planSweep(base, {"filter.kind=point,pcf,poisson", "light.type=directional,spot"});
     ASSERT_EQ(plan.error, "");
-    SweepRunOptions options;
-    options.width = 96;
-    options.height = 54;
-    options.frames = 1;
+    const SweepRunOptions options = smallRun(96, 54, 1);
     const SweepResult r = runSweep(scene, base, plan, options);
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.references, 2);
@@ -209,10 +213,7 @@ TEST_F(SweepTest, AMapAboveTheGpuLimitIsRefusedBeforeAnyWork) {
     const SweepPlan plan = planSweep(base, {"shadow.resolution=256,32768"});
     if (!plan.error.empty()) GTEST_SKIP() << "the key table already refuses 32768: " << plan.error;
     std::size_t calls = 0;
-    SweepRunOptions options;
-    options.width = 64;
-    options.height = 36;
-    options.frames = 1;
+    const SweepRunOptions options = smallRun(64, 36, 1);
     const SweepResult r = runSweep(scene, base, plan, options, [&](const SweepPointResult&, std::size_t, std::size_t) {
         ++calls;
     });
@@ -229,11 +230,7 @@ TEST_F(SweepTest, AFailingPointIsKeptWithItsReasonAndTheOthersAreMeasured) {
     const Settings base = loadShippedPreset("default");
     const SweepPlan plan = planSweep(base, {"lights.0.castsShadows=false,true", "shadow.resolution=64,256"});
     ASSERT_EQ(plan.error, "");
-    SweepRunOptions options;
-    options.width = 64;
-    options.height = 36;
-    options.frames = 1;
-    options.measurePreset = false;
+    SweepRunOptions options = smallRun(64, 36, 1, false);
     std::vector<std::size_t> sizes;
     options.onResult = [&](const SweepResult& soFar) {
         sizes.push_back(soFar.points.size());
@@ -274,11 +271,7 @@ TEST_F(SweepTest, AnAxisOnTheAnimationTimePosesEachPointAtItsTime) {
     ASSERT_EQ(poseScene(scene, base.animation), "");
     const SweepPlan plan = planSweep(base, {"animation.time=0,1.5"});
     ASSERT_EQ(plan.error, "");
-    SweepRunOptions options;
-    options.width = 160;
-    options.height = 90;
-    options.frames = 1;
-    options.measurePreset = false;
+    const SweepRunOptions options = smallRun(160, 90, 1, false);
     const SweepResult r = runSweep(scene, base, plan, options);
     ASSERT_TRUE(r.ok) << r.error;
     ASSERT_EQ(r.points.size(), 2u);
@@ -312,11 +305,7 @@ TEST_F(SweepTest, TechniqueByBlurWidthCostsTheMomentsAndBlurAndShowsTheSoftError
     base.lights[0].shadow.resolution = 512;
     const SweepPlan plan = planSweep(base, {"filter.kind=pcf,vsm,evsm4,msm", "filter.blurWidth=3,9"});
     ASSERT_EQ(plan.error, "");
-    SweepRunOptions options;
-    options.width = 160;
-    options.height = 90;
-    options.frames = 2;
-    options.measurePreset = false;
+    const SweepRunOptions options = smallRun(160, 90, 2, false);
     const SweepResult r = runSweep(scene, base, plan, options);
     ASSERT_TRUE(r.ok) << r.error;
     ASSERT_EQ(r.points.size(), 8u);

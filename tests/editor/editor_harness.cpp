@@ -12,7 +12,6 @@
 #include <chrono>
 #include <memory>
 #include <optional>
-#include <thread>
 #include <utility>
 
 namespace shadowlab::editor::test {
@@ -85,6 +84,7 @@ EditorHarness::EditorHarness(const EditorOptions& options, int width, int height
     hooked.wake = [this] {
         std::lock_guard<std::mutex> lock(wakeMutex_);
         ++wakes_;
+        ++wakesPosted_;
         wakeSignal_.notify_all();
     };
     editor_ = std::make_unique<Editor>(hooked);
@@ -119,24 +119,57 @@ void EditorHarness::frame(int count) {
     }
 }
 
-bool EditorHarness::framesUntil(const std::function<bool()>& done, const std::string& what, double ceilingSeconds,
-                                int pauseMs) {
+bool EditorHarness::workerRunning() const {
+    const EditorState& s = state();
+    return s.accuracy.running || s.accuracy.liveRunning || s.sweep.running || s.loading;
+}
+
+bool EditorHarness::framesUntil(const std::function<bool()>& done, const std::string& what, double ceilingSeconds) {
     const auto start = std::chrono::steady_clock::now();
+    long wakesSeen = 0;
+    {
+        std::lock_guard<std::mutex> lock(wakeMutex_);
+        wakesSeen = wakesPosted_;
+    }
     while (!done()) {
         const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (waited > ceilingSeconds) {
             ADD_FAILURE() << "waited " << waited << " s (the ceiling) for " << what << "; it did not happen";
             return false;
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(pauseMs));
+        if (workerRunning()) {
+            std::unique_lock<std::mutex> lock(wakeMutex_);
+            wakeSignal_.wait_for(lock, std::chrono::milliseconds(kWorkerFrameMs),
+                                 [&] { return wakesPosted_ != wakesSeen; });
+            wakesSeen = wakesPosted_;
+        }
         frame();
     }
     return true;
 }
 
-void EditorHarness::waitForAccuracyJob() {
-    framesUntil([this] { return !state().accuracy.running; },
-                "the accuracy job (" + state().accuracy.stage + ") to finish");
+int EditorHarness::waitForAccuracyJob(const std::function<void(const AccuracyState&)>& eachFrame) {
+    int frames = 0;
+    framesUntil(
+        [&] {
+            const AccuracyState& a = state().accuracy;
+            if (frames > 0 && eachFrame && a.running) eachFrame(a);
+            ++frames;
+            return !a.running;
+        },
+        "the accuracy job (" + state().accuracy.stage + ") to finish");
+    frame(2);
+    return frames - 1;
+}
+
+void EditorHarness::waitForAutoMeasurements(long count) {
+    const AccuracyState& a = state().accuracy;
+    framesUntil(
+        [&] {
+            advanceClock(1.0 / 60.0);
+            return a.measurements >= count && !a.running && !a.liveRunning;
+        },
+        "Auto's full measurement " + std::to_string(count));
     frame(2);
 }
 

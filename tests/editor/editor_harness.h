@@ -28,6 +28,10 @@ EditorOptions testOptions(const std::filesystem::path& folder);
 // How long a test waits, in real time, for something a worker thread does (its speed depends on the machine's load,
 // which a test cannot control): a ceiling, never a duration a test expects to take.
 constexpr double kWorkerCeilingSeconds = 600.0;
+// While a worker runs (accuracy job or live count, sweep, scene load), a test draws a UI frame at most this often: on
+// llvmpipe each frame draws the viewport on the cores the worker needs, and a frame every 20 ms made a bias search
+// take 60-120 s instead of seconds. A worker's wake (its end, a sweep's point) brings the next frame at once.
+constexpr int kWorkerFrameMs = 250;
 
 class EditorHarness {
 public:
@@ -47,17 +51,24 @@ public:
     double clock() const { return clock_; }
     void advanceClock(double seconds) { clock_ += seconds; }
     long framesDrawn() const { return framesDrawn_; }
-    // Frames until `done()` holds, a frame per `pause` of real time (a host's modest rate while a worker runs).
-    // Fails the test naming `what` when the real-time ceiling passes first; returns whether `done()` holds.
+    // Frames until `done()` holds: every wait for a worker goes through it. While a worker runs, a frame per
+    // kWorkerFrameMs of real time or per wake, whichever comes first; otherwise frame after frame. Fails the test
+    // naming `what` when the real-time ceiling passes first; returns whether `done()` holds.
     bool framesUntil(const std::function<bool()>& done, const std::string& what,
-                     double ceilingSeconds = kWorkerCeilingSeconds, int pauseMs = 20);
+                     double ceilingSeconds = kWorkerCeilingSeconds);
+    // Whether a worker of the editor runs: the accuracy job or live count, a sweep, a scene load.
+    bool workerRunning() const;
     // The window host's loop (app/editor_window/edit_command.cpp) over `seconds` of the injected clock, with no
     // input: a frame when the editor is busy (1/60 s apart), when its timed wake falls due (the clock jumps there),
     // or when a worker posted a wake; while it would sleep until input, the clock jumps to the end. Returns the
     // frames drawn.
     int hostFrames(double seconds);
-    // Frames until the running accuracy job has ended (then two more: its numbers are drawn).
-    void waitForAccuracyJob();
+    // Frames until the running accuracy job has ended (then two more: its numbers are drawn); `eachFrame` sees the
+    // state after every frame built while the job still runs. Returns how many frames were built meanwhile.
+    int waitForAccuracyJob(const std::function<void(const AccuracyState&)>& eachFrame = {});
+    // Frames until Auto has made `count` full measurements and no job runs, then two more. The injected clock moves a
+    // 60 Hz frame's time each frame, so Auto's delay passes as it would for a user looking at a still view.
+    void waitForAutoMeasurements(long count);
     // Worker wakes (options.wake) since the last takeWakes; waitForWake blocks in real time until one is posted
     // (fails the test naming `what` at the ceiling).
     int takeWakes();
@@ -102,6 +113,7 @@ private:
     std::mutex wakeMutex_;
     std::condition_variable wakeSignal_;
     int wakes_ = 0;
+    long wakesPosted_ = 0;  // every wake ever posted (takeWakes does not reset it): framesUntil waits on it
     RenderTarget window_;  // the window the UI is drawn into
     void* imguiContext_ = nullptr;
     std::unique_ptr<Editor> editor_;

@@ -61,29 +61,8 @@ protected:
         harness = std::make_unique<EditorHarness>(options, width, height);
         harness->settle();
     }
-    // Frames at a host's modest rate until the running job ends; returns how many UI frames were built meanwhile.
-    // `eachFrame` sees the state after every frame built while the job still runs.
-    int waitForJob(const std::function<void(const AccuracyState&)>& eachFrame = {}) {
-        int frames = 0;
-        harness->framesUntil(
-            [&] {
-                const AccuracyState& a = harness->state().accuracy;
-                if (frames > 0 && eachFrame && a.running) eachFrame(a);
-                ++frames;
-                return !a.running;
-            },
-            "the accuracy job (" + harness->state().accuracy.stage + ") to finish");
-        harness->frame(2);
-        return frames - 1;
-    }
     // Auto's delay on the editor's clock: the view counts as still once the clock has moved this far.
     void letTheViewBeStill() { harness->advanceClock(AccuracyState::kAutoDelaySeconds); }
-    // Frames until Auto has made `count` full measurements and no job runs.
-    void framesUntilMeasured(long count) {
-        const AccuracyState& a = harness->state().accuracy;
-        harness->framesUntil([&] { return a.measurements >= count && !a.running && !a.liveRunning; },
-                             "Auto's full measurement " + std::to_string(count));
-    }
     std::filesystem::path folder;
     std::unique_ptr<EditorHarness> harness;
 };
@@ -97,7 +76,7 @@ TEST_F(EditorAccuracy, MeasureGivesNumbersWhileTheUiKeepsDrawing) {
     EXPECT_FALSE(a.report.has_value());
     h.click("accuracy.measure");
     const long framesBefore = h.state().renderedFrames + h.state().idleFrames;
-    const int framesDuring = waitForJob();
+    const int framesDuring = harness->waitForAccuracyJob();
     EXPECT_GT(h.state().renderedFrames + h.state().idleFrames, framesBefore);
     EXPECT_GE(framesDuring, 1) << "the UI thread must keep building frames while the worker measures";
     ASSERT_TRUE(a.report.has_value()) << a.error;
@@ -128,7 +107,7 @@ TEST_F(EditorAccuracy, AnEditOrACameraMoveMakesTheNumbersStale) {
     EditorHarness& h = *harness;
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.report.has_value());
     ASSERT_EQ(a.stale, "");
     h.drag("shadow.depthBias", 60.0f, 0.0f);
@@ -139,7 +118,7 @@ TEST_F(EditorAccuracy, AnEditOrACameraMoveMakesTheNumbersStale) {
     EXPECT_NE(a.stale.find("the camera moved"), std::string::npos) << a.stale;
     // The view mode is not part of what was measured.
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     EXPECT_EQ(a.stale, "");
     h.click("view");
     h.click("view=shadow");
@@ -161,7 +140,7 @@ TEST_F(EditorAccuracy, AutoMeasuresOnceTheViewIsStillAndNeverTwiceForTheSameView
     h.advanceClock(AccuracyState::kAutoDelaySeconds);
     h.frame();
     ASSERT_TRUE(a.running) << "the view was still for Auto's delay, and no measurement started";
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_EQ(a.measurements, 1);
     EXPECT_EQ(a.stale, "");
 
@@ -177,7 +156,7 @@ TEST_F(EditorAccuracy, AutoMeasuresOnceTheViewIsStillAndNeverTwiceForTheSameView
     h.advanceClock(kHalf);
     h.frame();
     EXPECT_TRUE(a.running) << "Auto's delay after the edit: the full measure starts";
-    framesUntilMeasured(2);
+    harness->waitForAutoMeasurements(2);
     EXPECT_EQ(a.measurements, 2);
     EXPECT_EQ(a.stale, "");
     // Still: never again for the same view and settings, however long it stays so.
@@ -196,7 +175,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.auto");
     letTheViewBeStill();
-    framesUntilMeasured(1);
+    harness->waitForAutoMeasurements(1);
     ASSERT_EQ(a.measurements, 1);
     ASSERT_TRUE(a.report.has_value());
     ASSERT_FALSE(a.report->live);
@@ -218,7 +197,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
         h.frame();  // the slider's edit happened in the UI, after this frame's accuracy bookkeeping
         // Frames until the numbers describe exactly this view (the slider at its left end may still read 0: the
         // full measure's view).
-        h.framesUntil([&] { return a.stale.empty(); }, "a live count of the slider's step " + std::to_string(step), kWorkerCeilingSeconds, 10);
+        h.framesUntil([&] { return a.stale.empty(); }, "a live count of the slider's step " + std::to_string(step));
         ASSERT_EQ(a.stale, "") << "no live count during the drag, step " << step;
         const float slope = findSettingsField("shadow.slopeScaledDepthBias")->get(h.state().settings).get<float>();
         if (slope != 0.0f) EXPECT_TRUE(a.report->live) << "step " << step;
@@ -249,7 +228,7 @@ TEST_F(EditorAccuracy, AutoUpdatesTheNumbersLiveWhileASliderIsDragged) {
     // Auto's full measure runs once the view has been still for its delay.
     auto waitForMeasurements = [&](long n) {
         letTheViewBeStill();
-        framesUntilMeasured(n);
+        harness->waitForAutoMeasurements(n);
     };
     waitForMeasurements(2);
     ASSERT_EQ(a.measurements, 2);
@@ -288,14 +267,14 @@ TEST_F(EditorAccuracy, SuggestBiasFromZeroBiasReachesTheAcneLimitAndAppliesItToT
     ASSERT_FALSE(h.state().preset.dirty(h.state().settings));
 
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.report.has_value());
     EXPECT_GT(a.report->acnePercent, 1.0) << "zero bias should show acne";
 
     h.click("accuracy.suggest");
     std::size_t liveSteps = 0;  // the path table fills while the search runs
     float liveProgress = 0.0f;
-    const int frames = waitForJob([&](const AccuracyState& s) {
+    const int frames = harness->waitForAccuracyJob([&](const AccuracyState& s) {
         liveSteps = std::max(liveSteps, s.steps.size());
         liveProgress = std::max(liveProgress, s.progress);
     });
@@ -357,10 +336,7 @@ TEST_F(EditorAccuracy, SuggestWithAMomentsTechniqueSearchesItsTradeOffAndApplies
     h.click("accuracy.search=technique");
     ASSERT_EQ(a.search, TuneSearch::TradeOff);
     h.click("accuracy.suggest");
-    // A frame every quarter second while it runs: on llvmpipe each UI frame draws the viewport, and at waitForJob's
-    // 50 frames a second the UI thread took more CPU than the search.
-    h.framesUntil([&] { return !a.running; }, "the technique search", kWorkerCeilingSeconds, 250);
-    h.frame(2);
+    h.waitForAccuracyJob();
     ASSERT_TRUE(a.tune.has_value()) << a.error;
     ASSERT_TRUE(a.tune->ok) << a.tune->error;
     EXPECT_EQ(a.searched, TuneSearch::TradeOff);
@@ -410,7 +386,7 @@ TEST_F(EditorAccuracy, OverlayViewShowsAcneInRed) {
     EXPECT_EQ(h.state().settings.view, ViewMode::Lit) << "the overlay is not a renderer setting";
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.report.has_value());
     EXPECT_GT(a.report->acnePercent, 1.0);
     ASSERT_NE(a.overlayTexture.id(), 0u);
@@ -450,7 +426,7 @@ TEST_F(EditorAccuracy, OverlayViewRunsNoPassForACameraMoveButFollowsAnEdit) {
     h.click("view");
     h.click("view=accuracy overlay");
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_NE(a.overlayTexture.id(), 0u);
     // The overlay hides the main view: orbiting only makes the numbers stale, no pass renders a picture nobody sees.
     const long rendered = h.state().renderedFrames;
@@ -485,14 +461,14 @@ TEST_F(EditorAccuracy, CancelStopsABiasSearchAndKeepsTheSettings) {
     ASSERT_TRUE(gate.waitUntilHeld()) << "the search never measured its first candidate";
     ASSERT_TRUE(a.running);
     h.click("accuracy.cancel");
-    waitForJob();
+    harness->waitForAccuracyJob();
     EXPECT_FALSE(a.running);
     EXPECT_EQ(a.error, "cancelled");
     EXPECT_TRUE(h.state().settings == before) << "a cancelled search applies nothing";
     EXPECT_FALSE(h.state().preset.dirty(h.state().settings));
     // The worker takes the next job.
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.report.has_value());
     EXPECT_TRUE(a.report->ok);
 }
@@ -503,13 +479,13 @@ TEST_F(EditorAccuracy, ASceneSwitchWhileMeasuringIsSafeAndMakesTheNumbersStale) 
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.measure");
     h.editor().requestScene("builtin:grazing");
-    waitForJob();
+    harness->waitForAccuracyJob();
     h.settle();
     ASSERT_EQ(h.state().sceneSpec, "builtin:grazing");
     ASSERT_TRUE(a.report.has_value()) << a.error;
     EXPECT_NE(a.stale.find("another scene"), std::string::npos) << a.stale;
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     EXPECT_EQ(a.stale, "");
 }
 
@@ -527,7 +503,7 @@ TEST_F(EditorAccuracy, ClosingTheEditorDuringASearchCancelsItAndEndsTheWorker) {
     open();
     EXPECT_TRUE(harness->state().stats.ok);
     harness->click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(harness->state().accuracy.report.has_value());
     EXPECT_TRUE(harness->state().accuracy.report->ok);
 }
@@ -550,7 +526,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     ASSERT_EQ(h.state().settings.lights[0].shadow.cullMode, CullMode::Back);
     const AccuracyState& a = h.state().accuracy;
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.report.has_value()) << a.error;
     EXPECT_GT(a.report->leakPercent, 50.0);
     EXPECT_EQ(a.report->mainCause(), MismatchCause::CasterCulled);
@@ -575,7 +551,7 @@ TEST_F(EditorAccuracy, RoofCausesTabNamesTheCulledCasterAndSuggestBiasAppliesACu
     h.saveWindow("accuracy-roof-by-cause");
 
     h.click("accuracy.suggest");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.tune.has_value()) << a.error;
     ASSERT_TRUE(a.tune->reachedLimit);
     EXPECT_NE(h.state().settings.lights[0].shadow.cullMode, CullMode::Back) << "the applied settings carry the new cull mode";
@@ -592,7 +568,7 @@ TEST_F(EditorAccuracy, CoarseMapWarningShowsInTheNumbersTab) {
     ASSERT_TRUE(h.state().edit("shadow.resolution", 16));
     h.frame(2);
     h.click("accuracy.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     const AccuracyState& a = h.state().accuracy;
     ASSERT_TRUE(a.report.has_value()) << a.error;
     EXPECT_NE(a.report->coarseMapWarning, "");
@@ -617,7 +593,7 @@ TEST_F(EditorAccuracy, FlickerTabPlaysAMotionAndShowsItsFigures) {
     h.state().accuracy.flickerMotion.step = 0.4;
     h.state().accuracy.flickerMotion.frames = 3;
     h.click("accuracy.flicker.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.flicker.has_value()) << a.error;
     EXPECT_TRUE(a.flicker->ok);
     EXPECT_EQ(a.flicker->pairs.size(), 2u);
@@ -635,7 +611,7 @@ TEST_F(EditorAccuracy, FlickerTabPlaysAMotionAndShowsItsFigures) {
     h.state().accuracy.flickerMotion.step = 0.02;
     h.state().accuracy.flickerMotion.frames = 4;
     h.click("accuracy.flicker.measure");
-    waitForJob();
+    harness->waitForAccuracyJob();
     ASSERT_TRUE(a.flicker.has_value()) << a.error;
     EXPECT_EQ(a.flicker->maxFlickerPercent, 0.0);
     for (const FlickerPair& p : a.flicker->pairs) EXPECT_EQ(p.shadowViewsRendered, 0u);

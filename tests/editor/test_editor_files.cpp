@@ -130,7 +130,7 @@ TEST_F(EditorFiles, ABigSceneLoadsOnAThreadWhileFramesKeepComing) {
             if (h.state().loading) EXPECT_TRUE(h.reveal("scene.progress"));
             return false;
         },
-        "the helmet's load to be adopted", kWorkerCeilingSeconds, 5));
+        "the helmet's load to be adopted"));
     EXPECT_GT(framesBeforeAdopted, 0);
     h.settle();
     EXPECT_GT(h.state().stats.sceneTriangles, 90000u);

@@ -10,18 +10,6 @@ namespace shadowlab::editor::test {
 
 namespace {
 
-// Frames until Auto has made `count` full measurements. The injected clock moves a frame's time each frame, so
-// Auto's delay passes as it would for a user looking at a still view.
-void framesUntilMeasured(EditorHarness& h, long count) {
-    h.framesUntil(
-        [&] {
-            h.advanceClock(1.0 / 60.0);
-            return h.state().accuracy.measurements >= count;
-        },
-        "Auto's measurement " + std::to_string(count));
-    h.frame(2);
-}
-
 std::string statusText(EditorHarness& h) {
     const Message* m = h.state().statusMessage();
     return m ? m->text : std::string();
@@ -41,7 +29,7 @@ TEST(EditorStatusIssue19, SavedPresetStaysOnTheStatusLineWhileAutoMeasuresUntilT
     EditorHarness h(options, 1280, 720);
     h.settle();
     h.click("accuracy.auto");
-    framesUntilMeasured(h, 1);
+    h.waitForAutoMeasurements(1);
 
     h.click("shadow.resolution=1K");
     h.click("preset.save");
@@ -49,7 +37,7 @@ TEST(EditorStatusIssue19, SavedPresetStaysOnTheStatusLineWhileAutoMeasuresUntilT
     const std::string saved = "saved preset " + path;
     ASSERT_EQ(statusText(h), saved);
     // Auto measures the saved settings once the view is still: logged, but the status line keeps the answer.
-    framesUntilMeasured(h, 2);
+    h.waitForAutoMeasurements(2);
     ASSERT_NE(h.state().lastMessage(), nullptr);
     EXPECT_EQ(h.state().lastMessage()->text.rfind("accuracy of light 0", 0), 0u) << h.state().lastMessage()->text;
     EXPECT_TRUE(h.state().lastMessage()->automatic);
@@ -57,7 +45,7 @@ TEST(EditorStatusIssue19, SavedPresetStaysOnTheStatusLineWhileAutoMeasuresUntilT
 
     // The next user action lets the news through.
     h.click("shadow.resolution=2K");
-    framesUntilMeasured(h, 3);
+    h.waitForAutoMeasurements(3);
     EXPECT_EQ(statusText(h).rfind("accuracy of light 0", 0), 0u) << statusText(h);
 }
 

@@ -24,8 +24,7 @@ TEST(EditorSoftLight, TheLightsSizeAndTheRayCountGiveSoftNumbers) {
 
     h.click("accuracy.measure");
     const AccuracyState& a = h.state().accuracy;
-    h.framesUntil([&] { return !a.running; }, "the soft measurement");
-    h.frame(2);
+    h.waitForAccuracyJob();
     ASSERT_TRUE(a.report.has_value()) << a.error;
     ASSERT_TRUE(a.report->ok) << a.report->error;
     ASSERT_TRUE(a.reportKey.has_value());

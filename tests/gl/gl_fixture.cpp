@@ -92,4 +92,12 @@ Settings loadShippedPreset(const std::string& name) {
     return *result.settings;
 }
 
+Settings zeroBias(Settings settings) {
+    ShadowMapSettings& shadow = settings.lights[0].shadow;
+    shadow.depthBias = 0.0f;
+    shadow.slopeScaledDepthBias = 0.0f;
+    shadow.normalOffset = 0.0f;
+    return settings;
+}
+
 }  // namespace shadowlab::test

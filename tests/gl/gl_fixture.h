@@ -63,5 +63,7 @@ Scene loadBuiltin(const std::string& name);
 // footprint is visible, so shadows can be checked at hand-computed floor positions.
 Settings topDownShadowView(Settings settings);
 Settings loadShippedPreset(const std::string& name);
+// `settings` with the first light's depth, slope-scaled and normal-offset bias at 0 (acne where the light grazes).
+Settings zeroBias(Settings settings);
 
 }  // namespace shadowlab::test
