@@ -12,6 +12,7 @@
 #include "light/scene_lights.h"
 #include "scene/scene_source.h"
 #include "settings/atomic_file.h"
+#include "settings/user_config.h"
 
 #include <cerrno>
 #include <cmath>
@@ -26,13 +27,8 @@ namespace {
 
 // The folder for --frames-out, created when missing; "" or why not.
 std::string prepareFolder(const std::string& path) {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::exists(path, ec) && !fs::is_directory(path, ec))
-        return "--frames-out " + path + ": exists and is not a folder";
-    fs::create_directories(path, ec);
-    if (ec) return "--frames-out " + path + ": cannot create the folder (" + ec.message() + ")";
-    return "";
+    const std::string error = ensureFolder(path);
+    return error.empty() ? "" : "--frames-out: " + error;
 }
 
 }  // namespace

@@ -45,6 +45,9 @@ fs::path userScreenshotsDir() {
 std::string ensureFolder(const fs::path& folder) {
     std::error_code ec;
     const fs::file_status status = fs::status(folder, ec);
+    // A folder on the way that may not be searched: the path's type is unknown, not "a file" (the real cause).
+    if (ec && status.type() != fs::file_type::not_found)
+        return "cannot reach folder '" + folder.string() + "': " + ec.message();
     if (status.type() != fs::file_type::not_found) {
         if (fs::is_directory(status)) return {};
         std::string message = "'";  // appended, not "'" + ...: g++ 12 warns falsely there (-Wrestrict)

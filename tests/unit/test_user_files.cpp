@@ -5,6 +5,7 @@
 #include "settings/recent_files.h"
 #include "settings/shipped_data.h"
 #include "settings/user_config.h"
+#include "../support/as_unprivileged_user.h"
 
 #include <gtest/gtest.h>
 
@@ -110,6 +111,25 @@ TEST(UserConfig, EnsureFolderCreatesParentsAndRefusesAFile) {
     writeText(dir.path / "file", "x");
     EXPECT_NE(ensureFolder(dir.path / "file").find("not a folder"), std::string::npos);
     EXPECT_NE(ensureFolder(dir.path / "file" / "sub").find("cannot create folder"), std::string::npos);
+}
+
+// A folder under one that may not be searched: its type cannot be read, which is not "a file" (the real cause is
+// the permission). Checked as user nobody, so it holds when the tests run as root (CI, a fresh Debian root).
+TEST(UserConfig, EnsureFolderUnderAnUnsearchableFolderNamesThePermission) {
+    TempDir dir;
+    const fs::path closed = dir.path / "closed";
+    fs::create_directories(closed / "inside");
+    fs::permissions(closed, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);  // no search
+    std::string error;
+    {
+        const test::AsUnprivilegedUser user;
+        EXPECT_EQ(user.error(), "");
+        error = ensureFolder(closed / "inside");
+    }
+    fs::permissions(closed, fs::perms::owner_all);
+    EXPECT_EQ(error.find("not a folder"), std::string::npos) << error;
+    EXPECT_NE(error.find("Permission denied"), std::string::npos) << error;
+    EXPECT_NE(error.find((closed / "inside").string()), std::string::npos) << error;
 }
 
 TEST(RecentFiles, MostRecentFirstWithoutDuplicatesAndAtMostTen) {
